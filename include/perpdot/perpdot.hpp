@@ -1,0 +1,12 @@
+// Everything in perpdot's public API.
+#pragma once
+
+#include "perpdot/body.hpp"
+#include "perpdot/debug_draw.hpp"
+#include "perpdot/error.hpp"
+#include "perpdot/ids.hpp"
+#include "perpdot/joints.hpp"
+#include "perpdot/math.hpp"
+#include "perpdot/scene.hpp"
+#include "perpdot/shapes.hpp"
+#include "perpdot/world.hpp"

@@ -1,0 +1,86 @@
+// Collision shapes in a body's local frame, their materials, and their mass properties.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "perpdot/math.hpp"
+
+namespace perpdot {
+
+inline constexpr int maxPolygonVertices = 8;
+
+enum class ShapeType : uint8_t { Circle, Polygon, Segment, Chain };
+
+struct Circle {
+    Vec2 center;
+    float radius = 0.5f;
+    friend bool operator==(const Circle&, const Circle&) = default;
+};
+
+// A convex polygon, counter-clockwise, optionally rounded by `radius`. Build it with
+// makePolygon() or makeBox(), which validate and normalise the winding.
+struct Polygon {
+    std::array<Vec2, maxPolygonVertices> vertices{};
+    int count = 0;
+    float radius = 0.0f;
+    friend bool operator==(const Polygon&, const Polygon&) = default;
+};
+
+// Massless line segment (static geometry).
+struct Segment {
+    Vec2 v1;
+    Vec2 v2;
+    friend bool operator==(const Segment&, const Segment&) = default;
+};
+
+// Massless chain of segments whose inner corners do not catch sliding shapes.
+struct Chain {
+    std::vector<Vec2> vertices;
+    bool loop = false;
+    friend bool operator==(const Chain&, const Chain&) = default;
+};
+
+// Throws perpdot::Error unless `points` is 3..8 distinct points forming a strictly convex polygon.
+// Either winding is accepted; the result is counter-clockwise.
+Polygon makePolygon(std::span<const Vec2> points, float radius = 0.0f);
+// Box with half extents (hx, hy), centred at `center` and turned by `angle` in the body frame.
+Polygon makeBox(float hx, float hy, Vec2 center = {}, float angle = 0.0f);
+
+// Collision filtering as in Box2D: two shapes collide when each one's category is in the other's
+// mask, unless they share a non-zero group (positive: always collide, negative: never).
+struct Filter {
+    uint16_t category = 0x0001;
+    uint16_t mask = 0xFFFF;
+    int16_t group = 0;
+    friend bool operator==(const Filter&, const Filter&) = default;
+};
+
+bool shouldCollide(const Filter& a, const Filter& b);
+
+struct ShapeDef {
+    float density = 1.0f;       // kg/m²
+    float friction = 0.6f;      // Coulomb μ; mixed as sqrt(μA μB)
+    float restitution = 0.0f;   // e; mixed as max(eA, eB)
+    bool sensor = false;        // reports overlaps, takes no collision response
+    Filter filter;
+    void* userData = nullptr;
+};
+
+// Mass m, centre of mass (body frame) and scalar moment of inertia I about that centre.
+struct MassData {
+    float mass = 0.0f;
+    Vec2 center;
+    float rotationalInertia = 0.0f;
+};
+
+// Area integrals: m = ρ∫dA, c = ∫r dA / A, I = ρ∫|r - c|² dA.
+MassData computeMass(const Circle& circle, float density);
+MassData computeMass(const Polygon& polygon, float density);  // includes the rounding radius
+
+// Parallel-axis sum: parts about their own centres -> whole about the combined centre.
+MassData combineMass(std::span<const MassData> parts);
+
+}  // namespace perpdot

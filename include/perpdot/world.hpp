@@ -1,0 +1,156 @@
+// The World owns bodies, shapes, joints and contacts and advances them with step().
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "perpdot/body.hpp"
+#include "perpdot/ids.hpp"
+#include "perpdot/joints.hpp"
+#include "perpdot/math.hpp"
+#include "perpdot/shapes.hpp"
+
+namespace perpdot {
+
+struct WorldDef {
+    Vec2 gravity{0.0f, -10.0f};
+    int substeps = 4;                  // solver substeps per step (soft step)
+    float contactHertz = 30.0f;        // contact stiffness, capped at a quarter of the substep rate
+    float contactDampingRatio = 10.0f;
+    float jointHertz = 60.0f;          // stiffness of rigid joint rows
+    float jointDampingRatio = 2.0f;
+    float contactPushMaxVelocity = 3.0f;  // m/s, cap on the speed that resolves overlap
+    float restitutionThreshold = 1.0f;    // m/s, slower approaches do not bounce
+    float maxLinearSpeed = 400.0f;        // m/s, per-step clamp against blow-ups
+    bool enableSleep = true;
+    bool enableWarmStarting = true;
+};
+
+struct ContactPoint {
+    Vec2 point;               // world, midway between the surfaces
+    float separation = 0.0f;  // negative when overlapping
+    float normalImpulse = 0.0f;
+    float tangentImpulse = 0.0f;
+    uint32_t id = 0;          // feature id that carries warm starting between steps
+};
+
+struct ContactData {
+    ShapeId shapeA, shapeB;
+    Vec2 normal;  // from A to B
+    int pointCount = 0;
+    ContactPoint points[2];
+};
+
+class World {
+public:
+    explicit World(const WorldDef& def = {});
+    ~World();
+    World(World&&) noexcept;
+    World& operator=(World&&) noexcept;
+    World(const World&) = delete;
+    World& operator=(const World&) = delete;
+
+    // Advance by `timeStep` seconds. Never throws; allocates nothing once contacts are cached.
+    void step(float timeStep);
+
+    // --- bodies ---
+    BodyId createBody(const BodyDef& def);
+    void destroyBody(BodyId body);  // also destroys its shapes, joints and contacts
+    bool isValid(BodyId body) const;
+    std::vector<BodyId> bodies() const;  // in creation order of live bodies
+    int bodyCount() const;
+
+    BodyType bodyType(BodyId body) const;
+    Vec2 position(BodyId body) const;      // body origin
+    float angle(BodyId body) const;        // accumulated, not wrapped
+    Transform transform(BodyId body) const;
+    Vec2 worldCenter(BodyId body) const;   // centre of mass, world
+    Vec2 localCenter(BodyId body) const;   // centre of mass, body frame
+    Vec2 linearVelocity(BodyId body) const;
+    float angularVelocity(BodyId body) const;
+    float mass(BodyId body) const;
+    float rotationalInertia(BodyId body) const;  // about the centre of mass
+    Vec2 pointVelocity(BodyId body, Vec2 worldPoint) const;  // v + ω perp(P - CM)
+    bool isAwake(BodyId body) const;
+    float gravityScale(BodyId body) const;
+    void* userData(BodyId body) const;
+
+    void setTransform(BodyId body, Vec2 position, float angle);
+    void setLinearVelocity(BodyId body, Vec2 v);
+    void setAngularVelocity(BodyId body, float omega);
+    void setAwake(BodyId body, bool awake);
+    void setGravityScale(BodyId body, float scale);
+    void setLinearDamping(BodyId body, float damping);
+    void setAngularDamping(BodyId body, float damping);
+
+    // --- forces and impulses (wake the body) ---
+    void applyForce(BodyId body, Vec2 force, Vec2 worldPoint);  // F and τ = perpDot(P - CM, F)
+    void applyForceToCenter(BodyId body, Vec2 force);
+    void applyTorque(BodyId body, float torque);
+    void applyLinearImpulse(BodyId body, Vec2 impulse, Vec2 worldPoint);  // Δv = J/m, Δω = perpDot(r, J)/I
+    void applyLinearImpulseToCenter(BodyId body, Vec2 impulse);
+    void applyAngularImpulse(BodyId body, float impulse);
+
+    // --- shapes ---
+    ShapeId createShape(BodyId body, const ShapeDef& def, const Circle& circle);
+    ShapeId createShape(BodyId body, const ShapeDef& def, const Polygon& polygon);
+    ShapeId createShape(BodyId body, const ShapeDef& def, const Segment& segment);
+    ShapeId createShape(BodyId body, const ShapeDef& def, const Chain& chain);
+    void destroyShape(ShapeId shape);
+    bool isValid(ShapeId shape) const;
+    std::vector<ShapeId> shapes(BodyId body) const;
+    BodyId shapeBody(ShapeId shape) const;
+    ShapeType shapeType(ShapeId shape) const;
+    const Circle& circle(ShapeId shape) const;    // Error if the shape is not a circle
+    const Polygon& polygon(ShapeId shape) const;
+    const Segment& segment(ShapeId shape) const;
+    const Chain& chain(ShapeId shape) const;
+    float friction(ShapeId shape) const;
+    float restitution(ShapeId shape) const;
+    float density(ShapeId shape) const;
+    bool isSensor(ShapeId shape) const;
+    Filter filter(ShapeId shape) const;
+    AABB aabb(ShapeId shape) const;  // tight world bounds
+    void setFriction(ShapeId shape, float friction);
+    void setRestitution(ShapeId shape, float restitution);
+    void setDensity(ShapeId shape, float density);  // recomputes the body's mass
+
+    // --- joints ---
+    JointId createJoint(const RevoluteJointDef& def);
+    JointId createJoint(const PrismaticJointDef& def);
+    JointId createJoint(const DistanceJointDef& def);
+    JointId createJoint(const WeldJointDef& def);
+    JointId createJoint(const WheelJointDef& def);
+    JointId createJoint(const MotorJointDef& def);
+    JointId createJoint(const MouseJointDef& def);
+    void destroyJoint(JointId joint);
+    bool isValid(JointId joint) const;
+    std::vector<JointId> joints() const;
+    JointType jointType(JointId joint) const;
+    BodyId jointBodyA(JointId joint) const;
+    BodyId jointBodyB(JointId joint) const;
+    Vec2 jointAnchorA(JointId joint) const;  // world
+    Vec2 jointAnchorB(JointId joint) const;  // world
+    Vec2 jointReactionForce(JointId joint) const;   // on B, N, from the last step
+    float jointReactionTorque(JointId joint) const; // on B, N·m, from the last step
+    void setMouseTarget(JointId joint, Vec2 target);
+    void setMotorSpeed(JointId joint, float speed);  // revolute, prismatic, wheel
+
+    // --- contacts ---
+    int contactCount() const;  // touching contacts
+    std::vector<ContactData> contacts() const;  // touching contacts, for drawing and inspection
+
+    // --- settings ---
+    const WorldDef& settings() const;
+    void setGravity(Vec2 gravity);
+    void setSubsteps(int substeps);
+
+    struct Impl;  // internal; src/core and src/collide see it
+
+private:
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace perpdot

@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Installs every system package perpdot needs to build, test and run its demos,
+# from Debian 12's archive only. Safe to re-run: apt-get skips what is present.
+set -euo pipefail
+packages=(
+  build-essential cmake git pkg-config clang
+  libbox2d-dev            # collision: b2DynamicTree, b2Collide*, and b2World for cross-checks
+  nlohmann-json3-dev      # scene files
+  libgtest-dev libgmock-dev libbenchmark-dev
+  libsdl2-dev libsdl2-image-dev libimgui-dev   # demo viewer and headless PNG frames
+  gnuplot-nox             # cross-check plots
+  xvfb xauth              # windowed viewer test
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "install-deps: installing ${missing[*]}"
+  SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  $SUDO apt-get update
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y --no-install-recommends "${missing[@]}"
+fi
