@@ -1,5 +1,6 @@
 // The engine-neutral scene of ../shared/scene-format.md (`perpdot-scene/1`): what the JSON says,
 // nothing more. Both perpdot's World and Box2D's b2World are built from it.
+// Every member has an initializer so that designated initializers may skip any of them.
 #pragma once
 
 #include <functional>
@@ -20,27 +21,27 @@ struct SceneShape {
     Kind kind = Kind::Circle;
     // geometry; which fields matter depends on kind
     float radius = 0.5f;           // circle radius; polygon rounding (default 0 for polygons)
-    Vec2 center;                   // circle, box
+    Vec2 center{};                 // circle, box
     Vec2 halfExtents{0.5f, 0.5f};  // box
     float angle = 0.0f;            // box
-    std::vector<Vec2> vertices;    // polygon, chain
-    Vec2 v1, v2;                   // segment
+    std::vector<Vec2> vertices{};  // polygon, chain
+    Vec2 v1{}, v2{};               // segment
     bool loop = false;             // chain
     // material
     float density = 1.0f;
     float friction = 0.6f;
     float restitution = 0.0f;
     bool sensor = false;
-    Filter filter;
+    Filter filter{};
     friend bool operator==(const SceneShape&, const SceneShape&) = default;
 };
 
 struct SceneBody {
-    std::string name;
+    std::string name{};
     BodyType type = BodyType::Dynamic;
-    Vec2 position;
+    Vec2 position{};
     float angle = 0.0f;
-    Vec2 linearVelocity;
+    Vec2 linearVelocity{};
     float angularVelocity = 0.0f;
     float linearDamping = 0.0f;
     float angularDamping = 0.0f;
@@ -48,13 +49,13 @@ struct SceneBody {
     bool fixedRotation = false;
     bool bullet = false;
     bool allowSleep = true;
-    std::vector<SceneShape> shapes;
+    std::vector<SceneShape> shapes{};
     friend bool operator==(const SceneBody&, const SceneBody&) = default;
 };
 
 struct SceneJoint {
     JointType type = JointType::Revolute;
-    std::string bodyA, bodyB;
+    std::string bodyA{}, bodyB{};
     std::optional<Vec2> anchor;        // world anchor (A's, and B's unless anchorB is given)
     std::optional<Vec2> anchorB;       // distance joint: B's world anchor
     std::optional<Vec2> localAnchorA;  // alternative to `anchor`
@@ -73,7 +74,7 @@ struct SceneJoint {
     float hertz = 0.0f;
     float dampingRatio = 0.0f;
     Vec2 axis{1.0f, 0.0f};                       // prismatic, wheel (world)
-    Vec2 linearOffset;                           // motor
+    Vec2 linearOffset{};                         // motor
     float angularOffset = 0.0f;
     float maxForce = 1.0f;
     float maxTorque = 1.0f;
@@ -83,8 +84,8 @@ struct SceneJoint {
 struct SceneAction {
     enum class Kind { Force, Impulse, Torque, AngularImpulse };
     Kind kind = Kind::Force;
-    std::string body;
-    Vec2 value;                 // force / impulse
+    std::string body{};
+    Vec2 value{};               // force / impulse
     float scalar = 0.0f;        // torque / angular impulse
     std::optional<Vec2> point;  // world; default: centre of mass
     int firstStep = 0;
@@ -100,16 +101,16 @@ struct SceneSolver {
 };
 
 struct Scene {
-    std::string name;
-    std::string description;
+    std::string name{};
+    std::string description{};
     Vec2 gravity{0.0f, -10.0f};
     float timestep = 1.0f / 60.0f;
     int steps = 600;
-    SceneSolver solver;
+    SceneSolver solver{};
     bool enableSleep = true;  // not in the file format; benchmarks turn it off
-    std::vector<SceneBody> bodies;
-    std::vector<SceneJoint> joints;
-    std::vector<SceneAction> actions;
+    std::vector<SceneBody> bodies{};
+    std::vector<SceneJoint> joints{};
+    std::vector<SceneAction> actions{};
     friend bool operator==(const Scene&, const Scene&) = default;
 };
 
@@ -132,10 +133,10 @@ Scene findScene(const std::string& nameOrPath);
 
 // A scene built into a World; bodies[i] and joints[i] follow the scene's order.
 struct SceneWorld {
-    World world;
-    std::vector<BodyId> bodies;
-    std::vector<JointId> joints;
-    Scene scene;
+    World world{};
+    std::vector<BodyId> bodies{};
+    std::vector<JointId> joints{};
+    Scene scene{};
 
     // Apply the scene's actions whose range contains `step` (before stepping it).
     void applyActions(int step);

@@ -1,0 +1,16 @@
+// The built-in scenes come from several files; each contributes one list, and
+// builtin_registry.cpp joins them. To add a group: declare it here, define it in its own
+// file, and add one line to builtinScenes(). Each entry's make() need not set the scene's
+// name and description: the registry copies them from the entry.
+#pragma once
+
+#include <vector>
+
+#include "perpdot/scene.hpp"
+
+namespace perpdot {
+
+std::vector<BuiltinScene> coreScenes();   // core_scenes.cpp: single bodies, stacks, friction, restitution
+std::vector<BuiltinScene> benchScenes();  // bench_scenes.cpp: the large scenes of the benchmarks
+
+}  // namespace perpdot

@@ -1,0 +1,65 @@
+#include "scene/scene_builders.hpp"
+
+#include <utility>
+
+#include "scene/scene_limits.hpp"
+
+namespace perpdot {
+
+SceneShape boxShape(float hx, float hy, Vec2 center, float angle) {
+    SceneShape s;
+    s.kind = SceneShape::Kind::Box;
+    s.halfExtents = {hx, hy};
+    s.center = center;
+    s.angle = angle;
+    return s;
+}
+
+SceneShape circleShape(float radius, Vec2 center) {
+    SceneShape s;
+    s.kind = SceneShape::Kind::Circle;
+    s.radius = radius;
+    s.center = center;
+    return s;
+}
+
+SceneShape segmentShape(Vec2 v1, Vec2 v2) {
+    SceneShape s;
+    s.kind = SceneShape::Kind::Segment;
+    s.v1 = v1;
+    s.v2 = v2;
+    return s;
+}
+
+SceneShape polygonShape(std::vector<Vec2> vertices, float radius) {
+    SceneShape s;
+    s.kind = SceneShape::Kind::Polygon;
+    s.vertices = std::move(vertices);
+    s.radius = radius;
+    return s;
+}
+
+SceneBody& addBody(Scene& scene, SceneBody body) {
+    if (body.name.empty()) body.name = defaultBodyName(scene.bodies.size());
+    scene.bodies.push_back(std::move(body));
+    return scene.bodies.back();
+}
+
+SceneBody& addGround(Scene& scene, float halfWidth, float top) {
+    return addBody(scene, {.name = "ground", .type = BodyType::Static, .position = {0.0f, top - 1.0f},
+                           .shapes = {boxShape(halfWidth, 1.0f)}});
+}
+
+void addPyramid(Scene& scene, int baseCount, float h, float leftX, float baseY, bool allowSleep) {
+    SceneBody box{.allowSleep = allowSleep, .shapes = {boxShape(h, h)}};
+    for (int row = 0; row < baseCount; ++row) {
+        // row i holds baseCount - i boxes, shifted right by i half-boxes
+        const float y = baseY + (2.0f * row + 1.0f) * h;
+        for (int column = row; column < baseCount; ++column) {
+            box.position = {leftX + (row + 1.0f) * h + 2.0f * (column - row) * h, y};
+            addBody(scene, box);
+        }
+    }
+}
+
+}  // namespace perpdot

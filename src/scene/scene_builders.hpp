@@ -1,0 +1,26 @@
+// Small helpers for writing scenes in C++ (built-in scenes, tests, demos).
+#pragma once
+
+#include <vector>
+
+#include "perpdot/scene.hpp"
+
+namespace perpdot {
+
+SceneShape boxShape(float hx, float hy, Vec2 center = {}, float angle = 0.0f);
+SceneShape circleShape(float radius, Vec2 center = {});
+SceneShape segmentShape(Vec2 v1, Vec2 v2);
+SceneShape polygonShape(std::vector<Vec2> vertices, float radius = 0.0f);
+
+// Appends `body` (named "body<index>" if it has no name) and returns it.
+SceneBody& addBody(Scene& scene, SceneBody body);
+
+// A static box body whose top face is the line y = top, from x = -halfWidth to +halfWidth.
+SceneBody& addGround(Scene& scene, float halfWidth, float top = 0.0f);
+
+// A pyramid of square boxes (half extent h) with `baseCount` boxes in its bottom row resting on
+// y = baseY, the bottom row starting at x = leftX; each row is offset by half a box
+// (Box2D v3's benchmark layout). Bodies are dynamic, density 1, default friction.
+void addPyramid(Scene& scene, int baseCount, float h, float leftX, float baseY, bool allowSleep = true);
+
+}  // namespace perpdot
