@@ -12,5 +12,6 @@ namespace perpdot {
 
 std::vector<BuiltinScene> coreScenes();   // core_scenes.cpp: single bodies, stacks, friction, restitution
 std::vector<BuiltinScene> benchScenes();  // bench_scenes.cpp: the large scenes of the benchmarks
+std::vector<BuiltinScene> demoScenes();   // builtin_demo_scenes.cpp: showcases for the viewer (card house, dominoes, ...)
 
 }  // namespace perpdot
