@@ -1,0 +1,204 @@
+// Box2D 2.4.1 behind collide::CollisionSystem: b2Shape geometry, b2DynamicTree, b2Collide*.
+#include "collide/collision.hpp"
+
+#include <box2d/b2_circle_shape.h>
+#include <box2d/b2_collision.h>
+#include <box2d/b2_dynamic_tree.h>
+#include <box2d/b2_edge_shape.h>
+#include <box2d/b2_polygon_shape.h>
+
+#include <cstdint>
+#include <variant>
+#include <vector>
+
+namespace perpdot::collide {
+
+namespace {
+
+b2Vec2 toB2(Vec2 v) { return {v.x, v.y}; }
+Vec2 fromB2(const b2Vec2& v) { return {v.x, v.y}; }
+b2Transform toB2(const Transform& xf) {
+    b2Transform t;
+    t.p = toB2(xf.p);
+    t.q.c = xf.q.c;
+    t.q.s = xf.q.s;
+    return t;
+}
+
+// A chain is kept as its one-sided child edges, each knowing its neighbours (ghost vertices),
+// which is what keeps sliding shapes from catching on inner corners.
+using ChainEdges = std::vector<b2EdgeShape>;
+using Geometry = std::variant<std::monostate, b2CircleShape, b2PolygonShape, b2EdgeShape, ChainEdges>;
+
+const b2Shape& childShape(const Geometry& g, int child) {
+    if (auto* chain = std::get_if<ChainEdges>(&g)) return (*chain)[child];
+    if (auto* c = std::get_if<b2CircleShape>(&g)) return *c;
+    if (auto* p = std::get_if<b2PolygonShape>(&g)) return *p;
+    return std::get<b2EdgeShape>(g);
+}
+
+// Box2D's dispatch order: circle < polygon < edge.
+int rank(ShapeType t) {
+    switch (t) {
+        case ShapeType::Circle: return 0;
+        case ShapeType::Polygon: return 1;
+        case ShapeType::Segment:
+        case ShapeType::Chain: return 2;
+    }
+    return 0;
+}
+
+}  // namespace
+
+struct CollisionSystem::Impl {
+    std::vector<Geometry> geometry;  // by shape index
+    b2DynamicTree tree;
+
+    Geometry& slot(int shape) {
+        if (static_cast<size_t>(shape) >= geometry.size()) geometry.resize(shape + 1);
+        return geometry[shape];
+    }
+};
+
+CollisionSystem::CollisionSystem() : impl_(std::make_unique<Impl>()) {}
+CollisionSystem::~CollisionSystem() = default;
+
+void CollisionSystem::setGeometry(int shape, const Circle& circle) {
+    b2CircleShape c;
+    c.m_p = toB2(circle.center);
+    c.m_radius = circle.radius;
+    impl_->slot(shape) = c;
+}
+
+void CollisionSystem::setGeometry(int shape, const Polygon& polygon) {
+    b2Vec2 points[b2_maxPolygonVertices];
+    for (int i = 0; i < polygon.count; ++i) points[i] = toB2(polygon.vertices[i]);
+    b2PolygonShape p;
+    p.Set(points, polygon.count);
+    p.m_radius = polygonRadius + polygon.radius;
+    impl_->slot(shape) = p;
+}
+
+void CollisionSystem::setGeometry(int shape, const Segment& segment) {
+    b2EdgeShape e;
+    e.SetTwoSided(toB2(segment.v1), toB2(segment.v2));
+    impl_->slot(shape) = e;
+}
+
+void CollisionSystem::setGeometry(int shape, const Chain& chain) {
+    const std::vector<Vec2>& v = chain.vertices;
+    const int n = static_cast<int>(v.size());
+    const int edgeCount = chain.loop ? n : n - 1;
+    // Ghost vertices: the neighbours on a loop, straight extensions at the ends of an open chain.
+    auto vertex = [&](int i) -> Vec2 {
+        if (chain.loop) return v[(i % n + n) % n];
+        if (i < 0) return v[0] + (v[0] - v[1]);
+        if (i >= n) return v[n - 1] + (v[n - 1] - v[n - 2]);
+        return v[i];
+    };
+    ChainEdges edges(edgeCount);
+    for (int i = 0; i < edgeCount; ++i)
+        edges[i].SetOneSided(toB2(vertex(i - 1)), toB2(vertex(i)), toB2(vertex(i + 1)), toB2(vertex(i + 2)));
+    impl_->slot(shape) = std::move(edges);
+}
+
+void CollisionSystem::clearGeometry(int shape) { impl_->slot(shape) = std::monostate{}; }
+
+int CollisionSystem::childCount(int shape) const {
+    const Geometry& g = impl_->geometry[shape];
+    if (auto* chain = std::get_if<ChainEdges>(&g)) return static_cast<int>(chain->size());
+    return 1;
+}
+
+AABB CollisionSystem::computeAABB(int shape, int child, const Transform& xf) const {
+    b2AABB box;
+    childShape(impl_->geometry[shape], child).ComputeAABB(&box, toB2(xf), 0);
+    return {fromB2(box.lowerBound), fromB2(box.upperBound)};
+}
+
+bool CollisionSystem::canCollide(ShapeType a, ShapeType b) { return rank(a) < 2 || rank(b) < 2; }
+bool CollisionSystem::mustSwap(ShapeType a, ShapeType b) { return rank(a) < rank(b); }
+
+int CollisionSystem::createProxy(const AABB& aabb, ChildKey key) {
+    b2AABB box{toB2(aabb.lower), toB2(aabb.upper)};
+    // userData packs the child key: shape in the high 32 bits, child in the low.
+    const uint64_t packed = (static_cast<uint64_t>(static_cast<uint32_t>(key.shape)) << 32) | static_cast<uint32_t>(key.child);
+    return impl_->tree.CreateProxy(box, reinterpret_cast<void*>(static_cast<uintptr_t>(packed)));
+}
+
+void CollisionSystem::destroyProxy(int proxy) { impl_->tree.DestroyProxy(proxy); }
+
+bool CollisionSystem::moveProxy(int proxy, const AABB& aabb, Vec2 displacement) {
+    b2AABB box{toB2(aabb.lower), toB2(aabb.upper)};
+    return impl_->tree.MoveProxy(proxy, box, toB2(displacement));
+}
+
+AABB CollisionSystem::fatAABB(int proxy) const {
+    const b2AABB& box = impl_->tree.GetFatAABB(proxy);
+    return {fromB2(box.lowerBound), fromB2(box.upperBound)};
+}
+
+bool CollisionSystem::wasMoved(int proxy) const { return impl_->tree.WasMoved(proxy); }
+void CollisionSystem::clearMoved(int proxy) { impl_->tree.ClearMoved(proxy); }
+
+ChildKey CollisionSystem::proxyKey(int proxy) const {
+    const auto packed = static_cast<uint64_t>(reinterpret_cast<uintptr_t>(impl_->tree.GetUserData(proxy)));
+    return {static_cast<int>(packed >> 32), static_cast<int>(packed & 0xFFFFFFFFu)};
+}
+
+void CollisionSystem::queryImpl(const AABB& aabb, void* context, bool (*visit)(void*, int)) const {
+    struct Callback {
+        void* context;
+        bool (*visit)(void*, int);
+        bool QueryCallback(int32 proxy) { return visit(context, proxy); }
+    } callback{context, visit};
+    impl_->tree.Query(&callback, b2AABB{toB2(aabb.lower), toB2(aabb.upper)});
+}
+
+void CollisionSystem::shiftOrigin(Vec2 newOrigin) { impl_->tree.ShiftOrigin(toB2(newOrigin)); }
+
+Manifold CollisionSystem::collide(ChildKey a, const Transform& xfA, ChildKey b, const Transform& xfB) const {
+    const Geometry& ga = impl_->geometry[a.shape];
+    const Geometry& gb = impl_->geometry[b.shape];
+    const b2Shape& shapeA = childShape(ga, a.child);
+    const b2Shape& shapeB = childShape(gb, b.child);
+    const b2Transform ta = toB2(xfA), tb = toB2(xfB);
+
+    b2Manifold m;
+    m.pointCount = 0;
+    const auto* circleB = shapeB.m_type == b2Shape::e_circle ? static_cast<const b2CircleShape*>(&shapeB) : nullptr;
+    switch (shapeA.m_type) {
+        case b2Shape::e_circle:
+            b2CollideCircles(&m, static_cast<const b2CircleShape*>(&shapeA), ta, circleB, tb);
+            break;
+        case b2Shape::e_polygon:
+            if (circleB)
+                b2CollidePolygonAndCircle(&m, static_cast<const b2PolygonShape*>(&shapeA), ta, circleB, tb);
+            else
+                b2CollidePolygons(&m, static_cast<const b2PolygonShape*>(&shapeA), ta, static_cast<const b2PolygonShape*>(&shapeB), tb);
+            break;
+        case b2Shape::e_edge:
+            if (circleB)
+                b2CollideEdgeAndCircle(&m, static_cast<const b2EdgeShape*>(&shapeA), ta, circleB, tb);
+            else
+                b2CollideEdgeAndPolygon(&m, static_cast<const b2EdgeShape*>(&shapeA), ta, static_cast<const b2PolygonShape*>(&shapeB), tb);
+            break;
+        default:
+            break;
+    }
+
+    Manifold out;
+    out.pointCount = m.pointCount;
+    if (m.pointCount == 0) return out;
+    b2WorldManifold wm;
+    wm.Initialize(&m, ta, shapeA.m_radius, tb, shapeB.m_radius);
+    out.normal = fromB2(wm.normal);
+    for (int i = 0; i < m.pointCount; ++i) {
+        out.points[i].point = fromB2(wm.points[i]);
+        out.points[i].separation = wm.separations[i];
+        out.points[i].id = m.points[i].id.key;
+    }
+    return out;
+}
+
+}  // namespace perpdot::collide

@@ -1,0 +1,276 @@
+// Bodies: creation, mass from shapes, state access, and forces at points (τ = perpDot(P - CM, F)).
+#include <cmath>
+#include <string>
+
+#include "core/world_impl.hpp"
+
+namespace perpdot {
+
+namespace {
+
+void requireFinite(bool ok, const char* what) {
+    if (!ok) throw Error(std::string("BodyDef.") + what + " must be finite");
+}
+
+}  // namespace
+
+World::Impl::Impl(const WorldDef& d) : def(d), joints(makeJointStore()) {
+    if (!isFinite(def.gravity)) throw Error("WorldDef.gravity must be finite");
+    if (def.substeps < 1 || def.substeps > 64) throw Error("WorldDef.substeps must be 1..64");
+}
+
+Body& World::Impl::body(BodyId id) {
+    return const_cast<Body&>(static_cast<const Impl*>(this)->body(id));
+}
+
+const Body& World::Impl::body(BodyId id) const {
+    if (id.index < 0 || static_cast<size_t>(id.index) >= bodies.size() || !bodies[id.index].alive ||
+        bodies[id.index].generation != id.generation)
+        throw Error("stale or invalid BodyId (index " + std::to_string(id.index) + ", generation " +
+                    std::to_string(id.generation) + ")");
+    return bodies[id.index];
+}
+
+void World::Impl::checkUnlocked(const char* what) const {
+    if (locked) throw Error(std::string(what) + ": the world cannot be changed during step()");
+}
+
+// m, c and I from the shapes' area integrals, combined with the parallel-axis theorem.
+void World::Impl::updateMass(int index) {
+    Body& b = bodies[index];
+    const Vec2 oldCenter = b.center;
+    b.mass = b.invMass = b.inertia = b.invInertia = 0.0f;
+    b.localCenter = {};
+    if (b.type == BodyType::Dynamic) {
+        std::vector<MassData> parts;
+        for (int s : b.shapes) {
+            const ShapeData& shape = shapes[s];
+            if (shape.density <= 0.0f) continue;
+            if (auto* c = std::get_if<Circle>(&shape.geometry)) parts.push_back(computeMass(*c, shape.density));
+            if (auto* p = std::get_if<Polygon>(&shape.geometry)) parts.push_back(computeMass(*p, shape.density));
+        }
+        const MassData total = combineMass(parts);
+        // A dynamic body always has positive mass, as in Box2D.
+        b.mass = total.mass > 0.0f ? total.mass : 1.0f;
+        b.invMass = 1.0f / b.mass;
+        b.localCenter = total.center;
+        if (total.rotationalInertia > 0.0f && !b.fixedRotation) {
+            b.inertia = total.rotationalInertia;
+            b.invInertia = 1.0f / b.inertia;
+        }
+    }
+    b.center = transformPoint(b.xf, b.localCenter);
+    // Keep the velocity of the material points: v_newCM = v + ω perp(Δc).
+    b.v += b.w * perp(b.center - oldCenter);
+}
+
+void World::Impl::wake(int index) {
+    // Bodies that fell asleep together form a ring through islandNext; waking one wakes them all.
+    int i = index;
+    do {
+        Body& b = bodies[i];
+        const int next = b.islandNext;
+        b.islandNext = -1;
+        if (b.type != BodyType::Static) {
+            b.awake = true;
+            b.sleepTime = 0.0f;
+        }
+        i = next;
+    } while (i >= 0 && i != index);
+}
+
+BodyId World::createBody(const BodyDef& def) {
+    Impl& w = *impl_;
+    w.checkUnlocked("createBody");
+    requireFinite(isFinite(def.position), "position");
+    requireFinite(std::isfinite(def.angle), "angle");
+    requireFinite(isFinite(def.linearVelocity), "linearVelocity");
+    requireFinite(std::isfinite(def.angularVelocity), "angularVelocity");
+    requireFinite(std::isfinite(def.gravityScale), "gravityScale");
+    if (!(def.linearDamping >= 0.0f && std::isfinite(def.linearDamping))) throw Error("BodyDef.linearDamping must be finite and >= 0");
+    if (!(def.angularDamping >= 0.0f && std::isfinite(def.angularDamping))) throw Error("BodyDef.angularDamping must be finite and >= 0");
+
+    int index;
+    if (!w.freeBodies.empty()) {
+        index = w.freeBodies.back();
+        w.freeBodies.pop_back();
+    } else {
+        index = static_cast<int>(w.bodies.size());
+        w.bodies.emplace_back();
+    }
+    Body& b = w.bodies[index];
+    const uint32_t generation = b.generation;
+    b = Body{};
+    b.generation = generation;
+    b.alive = true;
+    b.type = def.type;
+    b.angle = def.angle;
+    b.xf = {def.position, Rot::fromAngle(def.angle)};
+    b.center = def.position;
+    if (def.type != BodyType::Static) {
+        b.v = def.linearVelocity;
+        b.w = def.angularVelocity;
+    }
+    b.linearDamping = def.linearDamping;
+    b.angularDamping = def.angularDamping;
+    b.gravityScale = def.gravityScale;
+    b.fixedRotation = def.fixedRotation;
+    b.bullet = def.bullet;
+    b.allowSleep = def.allowSleep;
+    b.awake = def.type != BodyType::Static && (def.awake || !def.allowSleep);
+    b.userData = def.userData;
+    w.updateMass(index);
+    return w.bodyId(index);
+}
+
+void World::destroyBody(BodyId id) {
+    Impl& w = *impl_;
+    w.checkUnlocked("destroyBody");
+    Body& b = w.body(id);
+    destroyJointsOf(w, id.index);
+    w.wake(id.index);  // its island mates lose a support
+    w.destroyContactsOf(id.index, -1);
+    for (int s : b.shapes) {
+        w.destroyProxies(s);
+        w.collision.clearGeometry(s);
+        w.shapes[s].alive = false;
+        ++w.shapes[s].generation;
+        w.freeShapes.push_back(s);
+    }
+    b.shapes.clear();
+    b.alive = false;
+    ++b.generation;
+    w.freeBodies.push_back(id.index);
+}
+
+bool World::isValid(BodyId id) const {
+    return id.index >= 0 && static_cast<size_t>(id.index) < impl_->bodies.size() && impl_->bodies[id.index].alive &&
+           impl_->bodies[id.index].generation == id.generation;
+}
+
+std::vector<BodyId> World::bodies() const {
+    std::vector<BodyId> ids;
+    for (int i = 0; i < static_cast<int>(impl_->bodies.size()); ++i)
+        if (impl_->bodies[i].alive) ids.push_back(impl_->bodyId(i));
+    return ids;
+}
+
+int World::bodyCount() const { return static_cast<int>(impl_->bodies.size() - impl_->freeBodies.size()); }
+
+BodyType World::bodyType(BodyId id) const { return impl_->body(id).type; }
+Vec2 World::position(BodyId id) const { return impl_->body(id).xf.p; }
+float World::angle(BodyId id) const { return impl_->body(id).angle; }
+Transform World::transform(BodyId id) const { return impl_->body(id).xf; }
+Vec2 World::worldCenter(BodyId id) const { return impl_->body(id).center; }
+Vec2 World::localCenter(BodyId id) const { return impl_->body(id).localCenter; }
+Vec2 World::linearVelocity(BodyId id) const { return impl_->body(id).v; }
+float World::angularVelocity(BodyId id) const { return impl_->body(id).w; }
+float World::mass(BodyId id) const { return impl_->body(id).mass; }
+float World::rotationalInertia(BodyId id) const { return impl_->body(id).inertia; }
+bool World::isAwake(BodyId id) const { return impl_->body(id).awake; }
+float World::gravityScale(BodyId id) const { return impl_->body(id).gravityScale; }
+void* World::userData(BodyId id) const { return impl_->body(id).userData; }
+
+Vec2 World::pointVelocity(BodyId id, Vec2 worldPoint) const {
+    const Body& b = impl_->body(id);
+    return perpdot::pointVelocity(b.v, b.w, worldPoint - b.center);
+}
+
+void World::setTransform(BodyId id, Vec2 position, float angle) {
+    Impl& w = *impl_;
+    w.checkUnlocked("setTransform");
+    if (!isFinite(position) || !std::isfinite(angle)) throw Error("setTransform: position and angle must be finite");
+    Body& b = w.body(id);
+    b.xf = {position, Rot::fromAngle(angle)};
+    b.angle = angle;
+    b.center = transformPoint(b.xf, b.localCenter);
+    w.synchronizeProxies(id.index, {});
+    w.wake(id.index);
+}
+
+void World::setLinearVelocity(BodyId id, Vec2 v) {
+    if (!isFinite(v)) throw Error("setLinearVelocity: velocity must be finite");
+    Body& b = impl_->body(id);
+    if (b.type == BodyType::Static) return;
+    b.v = v;
+    if (dot(v, v) > 0.0f) impl_->wake(id.index);
+}
+
+void World::setAngularVelocity(BodyId id, float omega) {
+    if (!std::isfinite(omega)) throw Error("setAngularVelocity: ω must be finite");
+    Body& b = impl_->body(id);
+    if (b.type == BodyType::Static || b.fixedRotation) return;
+    b.w = omega;
+    if (omega != 0.0f) impl_->wake(id.index);
+}
+
+void World::setAwake(BodyId id, bool awake) {
+    Body& b = impl_->body(id);
+    if (awake) {
+        impl_->wake(id.index);
+    } else if (b.type != BodyType::Static) {
+        b.awake = false;
+        b.v = {};
+        b.w = 0.0f;
+        b.sleepTime = 0.0f;
+    }
+}
+
+void World::setGravityScale(BodyId id, float scale) {
+    if (!std::isfinite(scale)) throw Error("setGravityScale: scale must be finite");
+    impl_->body(id).gravityScale = scale;
+}
+
+void World::setLinearDamping(BodyId id, float damping) {
+    if (!(damping >= 0.0f && std::isfinite(damping))) throw Error("setLinearDamping: damping must be finite and >= 0");
+    impl_->body(id).linearDamping = damping;
+}
+
+void World::setAngularDamping(BodyId id, float damping) {
+    if (!(damping >= 0.0f && std::isfinite(damping))) throw Error("setAngularDamping: damping must be finite and >= 0");
+    impl_->body(id).angularDamping = damping;
+}
+
+// Forces accumulate until the next step: F, and τ = perpDot(P - CM, F) about the centre of mass.
+void World::applyForce(BodyId id, Vec2 force, Vec2 worldPoint) {
+    if (!isFinite(force) || !isFinite(worldPoint)) throw Error("applyForce: force and point must be finite");
+    Body& b = impl_->body(id);
+    if (b.type != BodyType::Dynamic) return;
+    impl_->wake(id.index);
+    b.force += force;
+    b.torque += perpDot(worldPoint - b.center, force);
+}
+
+void World::applyForceToCenter(BodyId id, Vec2 force) { applyForce(id, force, impl_->body(id).center); }
+
+void World::applyTorque(BodyId id, float torque) {
+    if (!std::isfinite(torque)) throw Error("applyTorque: torque must be finite");
+    Body& b = impl_->body(id);
+    if (b.type != BodyType::Dynamic) return;
+    impl_->wake(id.index);
+    b.torque += torque;
+}
+
+// An impulse J at P changes momentum at once: Δv = J/m, Δω = perpDot(P - CM, J)/I.
+void World::applyLinearImpulse(BodyId id, Vec2 impulse, Vec2 worldPoint) {
+    if (!isFinite(impulse) || !isFinite(worldPoint)) throw Error("applyLinearImpulse: impulse and point must be finite");
+    Body& b = impl_->body(id);
+    if (b.type != BodyType::Dynamic) return;
+    impl_->wake(id.index);
+    b.v += b.invMass * impulse;
+    b.w += b.invInertia * perpDot(worldPoint - b.center, impulse);
+}
+
+void World::applyLinearImpulseToCenter(BodyId id, Vec2 impulse) {
+    applyLinearImpulse(id, impulse, impl_->body(id).center);
+}
+
+void World::applyAngularImpulse(BodyId id, float impulse) {
+    if (!std::isfinite(impulse)) throw Error("applyAngularImpulse: impulse must be finite");
+    Body& b = impl_->body(id);
+    if (b.type != BodyType::Dynamic) return;
+    impl_->wake(id.index);
+    b.w += b.invInertia * impulse;
+}
+
+}  // namespace perpdot

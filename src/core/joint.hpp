@@ -1,0 +1,31 @@
+// How the joint store plugs into the World and its solver loop.
+#pragma once
+
+#include <memory>
+
+#include "core/step_context.hpp"
+#include "perpdot/world.hpp"
+
+namespace perpdot {
+
+struct JointStore;
+struct JointStoreDeleter {
+    void operator()(JointStore* store) const;
+};
+using JointStorePtr = std::unique_ptr<JointStore, JointStoreDeleter>;
+JointStorePtr makeJointStore();
+
+// Solver stages, called by World::Impl::solve like the contact stages.
+void prepareJoints(World::Impl& world, const StepContext& ctx);
+void warmStartJoints(World::Impl& world, const StepContext& ctx);
+void solveJoints(World::Impl& world, const StepContext& ctx, bool useBias);
+void storeJointImpulses(World::Impl& world, const StepContext& ctx);
+
+// False when a joint between the two bodies has collideConnected == false.
+bool jointAllowsCollision(const World::Impl& world, int bodyA, int bodyB);
+// Destroys every joint attached to the body (called before the body goes).
+void destroyJointsOf(World::Impl& world, int body);
+// Calls visit(bodyA, bodyB) for every joint, for islands.
+void forEachJointPair(const World::Impl& world, void (*visit)(void* context, int bodyA, int bodyB), void* context);
+
+}  // namespace perpdot

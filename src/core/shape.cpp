@@ -1,0 +1,214 @@
+// Shapes: validation, attachment to bodies (mass follows), and their broadphase proxies.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/world_impl.hpp"
+
+namespace perpdot {
+
+namespace {
+
+void validate(const ShapeDef& def) {
+    if (!(std::isfinite(def.density) && def.density >= 0.0f)) throw Error("ShapeDef.density must be finite and >= 0");
+    if (!(std::isfinite(def.friction) && def.friction >= 0.0f)) throw Error("ShapeDef.friction must be finite and >= 0");
+    if (!(std::isfinite(def.restitution) && def.restitution >= 0.0f)) throw Error("ShapeDef.restitution must be finite and >= 0");
+}
+
+void validate(const Circle& c) {
+    if (!isFinite(c.center)) throw Error("circle center must be finite");
+    if (!(std::isfinite(c.radius) && c.radius > 0.0f)) throw Error("circle radius must be finite and > 0");
+}
+
+void validate(const Polygon& p) {
+    // Re-run the construction checks: a hand-filled Polygon gets the same scrutiny as makePolygon's.
+    makePolygon(std::span(p.vertices.data(), static_cast<size_t>(std::clamp(p.count, 0, maxPolygonVertices + 1))), p.radius);
+}
+
+void validate(const Segment& s) {
+    if (!isFinite(s.v1) || !isFinite(s.v2)) throw Error("segment vertices must be finite");
+    if (distance(s.v1, s.v2) < collide::linearSlop) throw Error("segment is shorter than the linear slop (0.005 m)");
+}
+
+void validate(const Chain& c) {
+    const size_t minimum = c.loop ? 3 : 2;
+    if (c.vertices.size() < minimum) throw Error("chain needs at least " + std::to_string(minimum) + " vertices");
+    for (size_t i = 0; i < c.vertices.size(); ++i) {
+        if (!isFinite(c.vertices[i])) throw Error("chain vertex " + std::to_string(i) + " is not finite");
+        if (i > 0 && distance(c.vertices[i - 1], c.vertices[i]) < collide::linearSlop)
+            throw Error("chain vertices " + std::to_string(i - 1) + " and " + std::to_string(i) + " are too close");
+    }
+}
+
+template <class Geometry>
+ShapeId create(World::Impl& w, BodyId bodyId, const ShapeDef& def, const Geometry& geometry) {
+    w.checkUnlocked("createShape");
+    w.body(bodyId);
+    validate(def);
+    validate(geometry);
+    const int index = w.addShape(bodyId, def);
+    w.shapes[index].geometry = geometry;
+    w.collision.setGeometry(index, geometry);
+    w.createProxies(index);
+    if constexpr (std::is_same_v<Geometry, Circle> || std::is_same_v<Geometry, Polygon>) w.updateMass(bodyId.index);
+    return w.shapeId(index);
+}
+
+}  // namespace
+
+ShapeData& World::Impl::shape(ShapeId id) {
+    return const_cast<ShapeData&>(static_cast<const Impl*>(this)->shape(id));
+}
+
+const ShapeData& World::Impl::shape(ShapeId id) const {
+    if (id.index < 0 || static_cast<size_t>(id.index) >= shapes.size() || !shapes[id.index].alive ||
+        shapes[id.index].generation != id.generation)
+        throw Error("stale or invalid ShapeId (index " + std::to_string(id.index) + ", generation " +
+                    std::to_string(id.generation) + ")");
+    return shapes[id.index];
+}
+
+int World::Impl::addShape(BodyId bodyId, const ShapeDef& def) {
+    int index;
+    if (!freeShapes.empty()) {
+        index = freeShapes.back();
+        freeShapes.pop_back();
+    } else {
+        index = static_cast<int>(shapes.size());
+        shapes.emplace_back();
+    }
+    ShapeData& s = shapes[index];
+    const uint32_t generation = s.generation;
+    s = ShapeData{};
+    s.generation = generation;
+    s.alive = true;
+    s.body = bodyId.index;
+    s.density = def.density;
+    s.friction = def.friction;
+    s.restitution = def.restitution;
+    s.sensor = def.sensor;
+    s.filter = def.filter;
+    s.userData = def.userData;
+    bodies[bodyId.index].shapes.push_back(index);
+    return index;
+}
+
+void World::Impl::createProxies(int index) {
+    ShapeData& s = shapes[index];
+    s.type = static_cast<ShapeType>(s.geometry.index());
+    const Transform& xf = bodies[s.body].xf;
+    const int children = collision.childCount(index);
+    s.proxies.resize(children);
+    for (int child = 0; child < children; ++child) {
+        s.proxies[child] = collision.createProxy(collision.computeAABB(index, child, xf), {index, child});
+        movedProxies.push_back(s.proxies[child]);
+    }
+}
+
+void World::Impl::destroyProxies(int index) {
+    for (int proxy : shapes[index].proxies) {
+        // A proxy id is reused by the tree: forget it in the move buffer before it goes.
+        movedProxies.erase(std::remove(movedProxies.begin(), movedProxies.end(), proxy), movedProxies.end());
+        collision.destroyProxy(proxy);
+    }
+    shapes[index].proxies.clear();
+}
+
+// Re-fit the body's proxies to its new transform; proxies that left their fat AABB are queried
+// for new pairs next step.
+void World::Impl::synchronizeProxies(int index, Vec2 displacement) {
+    const Body& b = bodies[index];
+    for (int s : b.shapes) {
+        const std::vector<int>& proxies = shapes[s].proxies;
+        for (int child = 0; child < static_cast<int>(proxies.size()); ++child) {
+            if (collision.moveProxy(proxies[child], collision.computeAABB(s, child, b.xf), displacement))
+                movedProxies.push_back(proxies[child]);
+        }
+    }
+}
+
+ShapeId World::createShape(BodyId body, const ShapeDef& def, const Circle& circle) { return create(*impl_, body, def, circle); }
+ShapeId World::createShape(BodyId body, const ShapeDef& def, const Polygon& polygon) { return create(*impl_, body, def, polygon); }
+ShapeId World::createShape(BodyId body, const ShapeDef& def, const Segment& segment) { return create(*impl_, body, def, segment); }
+ShapeId World::createShape(BodyId body, const ShapeDef& def, const Chain& chain) { return create(*impl_, body, def, chain); }
+
+void World::destroyShape(ShapeId id) {
+    Impl& w = *impl_;
+    w.checkUnlocked("destroyShape");
+    ShapeData& s = w.shape(id);
+    const int bodyIndex = s.body;
+    w.destroyContactsOf(bodyIndex, id.index);
+    w.destroyProxies(id.index);
+    w.collision.clearGeometry(id.index);
+    std::vector<int>& owned = w.bodies[bodyIndex].shapes;
+    owned.erase(std::find(owned.begin(), owned.end(), id.index));
+    s.alive = false;
+    ++s.generation;
+    w.freeShapes.push_back(id.index);
+    w.updateMass(bodyIndex);
+    w.wake(bodyIndex);
+}
+
+bool World::isValid(ShapeId id) const {
+    return id.index >= 0 && static_cast<size_t>(id.index) < impl_->shapes.size() && impl_->shapes[id.index].alive &&
+           impl_->shapes[id.index].generation == id.generation;
+}
+
+std::vector<ShapeId> World::shapes(BodyId body) const {
+    std::vector<ShapeId> ids;
+    for (int s : impl_->body(body).shapes) ids.push_back(impl_->shapeId(s));
+    return ids;
+}
+
+BodyId World::shapeBody(ShapeId id) const { return impl_->bodyId(impl_->shape(id).body); }
+ShapeType World::shapeType(ShapeId id) const { return impl_->shape(id).type; }
+
+namespace {
+template <class Geometry>
+const Geometry& geometryOf(const ShapeData& s, const char* name) {
+    if (auto* g = std::get_if<Geometry>(&s.geometry)) return *g;
+    throw Error(std::string("shape is not a ") + name);
+}
+}  // namespace
+
+const Circle& World::circle(ShapeId id) const { return geometryOf<Circle>(impl_->shape(id), "circle"); }
+const Polygon& World::polygon(ShapeId id) const { return geometryOf<Polygon>(impl_->shape(id), "polygon"); }
+const Segment& World::segment(ShapeId id) const { return geometryOf<Segment>(impl_->shape(id), "segment"); }
+const Chain& World::chain(ShapeId id) const { return geometryOf<Chain>(impl_->shape(id), "chain"); }
+float World::friction(ShapeId id) const { return impl_->shape(id).friction; }
+float World::restitution(ShapeId id) const { return impl_->shape(id).restitution; }
+float World::density(ShapeId id) const { return impl_->shape(id).density; }
+bool World::isSensor(ShapeId id) const { return impl_->shape(id).sensor; }
+Filter World::filter(ShapeId id) const { return impl_->shape(id).filter; }
+
+AABB World::aabb(ShapeId id) const {
+    const ShapeData& s = impl_->shape(id);
+    const Transform& xf = impl_->bodies[s.body].xf;
+    AABB box = impl_->collision.computeAABB(id.index, 0, xf);
+    for (int child = 1; child < static_cast<int>(s.proxies.size()); ++child) {
+        const AABB c = impl_->collision.computeAABB(id.index, child, xf);
+        box.lower = {std::min(box.lower.x, c.lower.x), std::min(box.lower.y, c.lower.y)};
+        box.upper = {std::max(box.upper.x, c.upper.x), std::max(box.upper.y, c.upper.y)};
+    }
+    return box;
+}
+
+// Material changes reach existing contacts, whose mixed values are refreshed each narrowphase.
+void World::setFriction(ShapeId id, float friction) {
+    if (!(std::isfinite(friction) && friction >= 0.0f)) throw Error("setFriction: friction must be finite and >= 0");
+    impl_->shape(id).friction = friction;
+}
+
+void World::setRestitution(ShapeId id, float restitution) {
+    if (!(std::isfinite(restitution) && restitution >= 0.0f)) throw Error("setRestitution: restitution must be finite and >= 0");
+    impl_->shape(id).restitution = restitution;
+}
+
+void World::setDensity(ShapeId id, float density) {
+    if (!(std::isfinite(density) && density >= 0.0f)) throw Error("setDensity: density must be finite and >= 0");
+    ShapeData& s = impl_->shape(id);
+    s.density = density;
+    impl_->updateMass(s.body);
+}
+
+}  // namespace perpdot

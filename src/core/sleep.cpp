@@ -1,0 +1,90 @@
+// Sleeping: bodies joined by touching contacts or joints form islands (union-find); an island
+// whose every body has been slower than the tolerances for timeToSleep falls asleep as a whole.
+#include <algorithm>
+#include <limits>
+
+#include "core/world_impl.hpp"
+
+namespace perpdot {
+
+namespace {
+
+// Box2D 2.4's tolerances.
+constexpr float linearSleepTolerance = 0.01f;             // m/s
+constexpr float angularSleepTolerance = 2.0f / 180.0f * pi;  // rad/s
+constexpr float timeToSleep = 0.5f;                       // s
+
+int findRoot(std::vector<int>& parent, int i) {
+    while (parent[i] != i) {
+        parent[i] = parent[parent[i]];
+        i = parent[i];
+    }
+    return i;
+}
+
+void unite(std::vector<int>& parent, int a, int b) {
+    a = findRoot(parent, a);
+    b = findRoot(parent, b);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+}
+
+}  // namespace
+
+void World::Impl::updateSleep(float h) {
+    if (!def.enableSleep) return;
+    const size_t n = bodies.size();
+    islandParent.resize(n);
+    bool anySleepy = false;
+    for (int i : awakeBodies) {
+        Body& b = bodies[i];
+        islandParent[i] = i;
+        if (!b.allowSleep || b.w * b.w > angularSleepTolerance * angularSleepTolerance ||
+            dot(b.v, b.v) > linearSleepTolerance * linearSleepTolerance) {
+            b.sleepTime = 0.0f;
+        } else {
+            b.sleepTime += h;
+            anySleepy = anySleepy || b.sleepTime >= timeToSleep;
+        }
+    }
+    if (!anySleepy) return;
+
+    auto joinable = [&](int body) { return bodies[body].type == BodyType::Dynamic && bodies[body].awake; };
+    for (const Contact& c : contacts)
+        if (c.alive && c.touching && joinable(c.bodyA) && joinable(c.bodyB)) unite(islandParent, c.bodyA, c.bodyB);
+    forEachJointPair(
+        *this,
+        [](void* context, int a, int b) {
+            World::Impl& w = *static_cast<World::Impl*>(context);
+            auto ok = [&](int i) { return w.bodies[i].type == BodyType::Dynamic && w.bodies[i].awake; };
+            if (ok(a) && ok(b)) unite(w.islandParent, a, b);
+        },
+        this);
+
+    // The island sleeps when its least sleepy body has been still long enough. islandMinSleep and
+    // islandHead reuse the parent array's index space.
+    islandMinSleep.assign(n, std::numeric_limits<float>::max());
+    islandHead.assign(n, -1);
+    for (int i : awakeBodies) {
+        const int root = findRoot(islandParent, i);
+        islandMinSleep[root] = std::min(islandMinSleep[root], bodies[i].sleepTime);
+    }
+    for (int i : awakeBodies) {
+        const int root = findRoot(islandParent, i);
+        if (islandMinSleep[root] < timeToSleep) continue;
+        Body& b = bodies[i];
+        b.awake = false;
+        b.v = {};
+        b.w = 0.0f;
+        // Thread the island into a ring so that waking any member wakes all.
+        if (islandHead[root] < 0) {
+            islandHead[root] = i;
+            b.islandNext = i;
+        } else {
+            Body& head = bodies[islandHead[root]];
+            b.islandNext = head.islandNext;
+            head.islandNext = i;
+        }
+    }
+}
+
+}  // namespace perpdot

@@ -1,0 +1,164 @@
+// World::step: broadphase, narrowphase, then the soft-step solver.
+//
+// The rows run `substeps` times per step: forces, warm start, solve with soft bias, x += hs v,
+// relax without bias; then one restitution pass, and the impulses are kept for the next step.
+//
+// Forces are integrated semi-implicitly (v first, then x). A body with no touching contact and
+// no joint is integrated once per step in Box2D 2.4's order — v += h (g·gravityScale + F/m),
+// ω += h τ/I, then damping v /= (1 + h c) — so free flight agrees with Box2D to rounding.
+// A constrained body takes the same forces in substep-sized pieces, as Box2D v3's soft step
+// does, which is what keeps tall stacks and heavy loads standing.
+#include <algorithm>
+#include <cmath>
+
+#include "core/world_impl.hpp"
+
+namespace perpdot {
+
+void World::step(float timeStep) {
+    Impl& w = *impl_;
+    if (!(timeStep > 0.0f) || !std::isfinite(timeStep) || w.locked) return;
+    w.locked = true;
+    w.updatePairs();
+    w.updateContacts();
+    w.solve(timeStep);
+    w.updateSleep(timeStep);
+    w.locked = false;
+}
+
+namespace {
+
+bool isConstrained(const World::Impl& w, const Body& b) {
+    if (b.jointCount > 0) return true;
+    for (int edge = b.contactHead; edge >= 0; edge = w.contacts[edge >> 1].edges[edge & 1].next)
+        if (w.contacts[edge >> 1].touching) return true;
+    return false;
+}
+
+// Gather awake bodies into the solver arrays and integrate forces: whole step for free bodies,
+// substep pieces (SubstepForces) for constrained ones.
+void integrateVelocities(World::Impl& w, const StepContext& ctx) {
+    w.states.resize(1);
+    w.states[0] = BodyState{};
+    w.substepForces.resize(1);
+    w.substepForces[0] = SubstepForces{};
+    w.awakeBodies.clear();
+    for (int i = 0; i < static_cast<int>(w.bodies.size()); ++i) {
+        Body& b = w.bodies[i];
+        b.solverIndex = 0;
+        if (!b.alive || b.type == BodyType::Static || !b.awake) continue;
+        b.solverIndex = static_cast<int>(w.states.size());
+        w.awakeBodies.push_back(i);
+        Vec2 v = b.v;
+        float omega = b.w;
+        SubstepForces f;
+        if (b.type == BodyType::Dynamic) {
+            const Vec2 force = (b.gravityScale * b.mass) * w.def.gravity + b.force;
+            if (isConstrained(w, b)) {
+                f.dv = (ctx.hs * b.invMass) * force;
+                f.dw = ctx.hs * b.invInertia * b.torque;
+                f.linearDamping = 1.0f / (1.0f + ctx.hs * b.linearDamping);
+                f.angularDamping = 1.0f / (1.0f + ctx.hs * b.angularDamping);
+            } else {
+                v += (ctx.h * b.invMass) * force;
+                omega += ctx.h * b.invInertia * b.torque;
+                // dv/dt = -c v, integrated implicitly: v /= (1 + h c).
+                v *= 1.0f / (1.0f + ctx.h * b.linearDamping);
+                omega *= 1.0f / (1.0f + ctx.h * b.angularDamping);
+            }
+        }
+        w.states.push_back({v, omega, {}, {}});
+        w.substepForces.push_back(f);
+    }
+    w.stepRotation.assign(w.states.size(), 0.0f);
+}
+
+void applySubstepForces(World::Impl& w) {
+    for (size_t i = 1; i < w.states.size(); ++i) {
+        BodyState& s = w.states[i];
+        const SubstepForces& f = w.substepForces[i];
+        s.v = f.dv + f.linearDamping * s.v;
+        s.w = f.dw + f.angularDamping * s.w;
+    }
+}
+
+// x += hs v, θ += hs ω for one substep, with speeds clamped against blow-ups.
+void integratePositions(World::Impl& w, const StepContext& ctx) {
+    const float maxLinearSpeed = w.def.maxLinearSpeed;
+    const float maxAngularSpeed = 0.25f * pi * ctx.invHs;
+    for (size_t i = 1; i < w.states.size(); ++i) {
+        BodyState& s = w.states[i];
+        if (dot(s.v, s.v) > maxLinearSpeed * maxLinearSpeed) s.v *= maxLinearSpeed / length(s.v);
+        if (s.w * s.w > maxAngularSpeed * maxAngularSpeed) s.w *= maxAngularSpeed / std::fabs(s.w);
+        s.dp += ctx.hs * s.v;
+        w.stepRotation[i] += ctx.hs * s.w;
+        s.dq = integrateRotation(s.dq, ctx.hs * s.w);
+    }
+}
+
+// Write the solver state back: c = c0 + Δp, θ = θ0 + Δθ, origin = c - R(θ) localCenter.
+void finalizeBodies(World::Impl& w) {
+    for (size_t k = 0; k < w.awakeBodies.size(); ++k) {
+        const int index = w.awakeBodies[k];
+        Body& b = w.bodies[index];
+        const BodyState& s = w.states[k + 1];
+        const float dAngle = w.stepRotation[k + 1];
+        if (!isFinite(s.v) || !std::isfinite(s.w) || !isFinite(s.dp) || !std::isfinite(dAngle)) {
+            // A body that went non-finite is frozen where it was instead of spreading NaN.
+            b.v = {};
+            b.w = 0.0f;
+            continue;
+        }
+        b.v = s.v;
+        b.w = s.w;
+        b.center = b.center + s.dp;
+        b.angle = b.angle + dAngle;
+        b.xf.q = Rot::fromAngle(b.angle);
+        b.xf.p = b.center - rotate(b.xf.q, b.localCenter);
+        w.synchronizeProxies(index, s.dp);
+    }
+    for (Body& b : w.bodies) {
+        b.force = {};
+        b.torque = 0.0f;
+    }
+}
+
+}  // namespace
+
+void World::Impl::solve(float h) {
+    StepContext ctx;
+    ctx.h = h;
+    ctx.invH = 1.0f / h;
+    ctx.substeps = def.substeps;
+    ctx.hs = h / static_cast<float>(def.substeps);
+    ctx.invHs = 1.0f / ctx.hs;
+    ctx.states = &states;
+    // Contact stiffness is capped at a quarter of the substep rate; static contacts are twice as stiff.
+    const float contactHertz = std::min(def.contactHertz, 0.25f * ctx.invHs);
+    ctx.contactSoftness = makeSoftness(contactHertz, def.contactDampingRatio, ctx.hs);
+    ctx.staticSoftness = makeSoftness(2.0f * contactHertz, def.contactDampingRatio, ctx.hs);
+    ctx.jointSoftness = makeSoftness(std::min(def.jointHertz, 0.25f * ctx.invHs), def.jointDampingRatio, ctx.hs);
+    ctx.restitutionThreshold = def.restitutionThreshold;
+    ctx.maxBiasVelocity = def.contactPushMaxVelocity;
+    ctx.enableWarmStarting = def.enableWarmStarting;
+
+    integrateVelocities(*this, ctx);
+    prepareJoints(*this, ctx);
+    prepareContacts(*this, ctx);
+    for (int i = 0; i < ctx.substeps; ++i) {
+        applySubstepForces(*this);
+        warmStartJoints(*this, ctx);
+        warmStartContacts(*this, ctx);
+        solveJoints(*this, ctx, true);
+        solveContacts(*this, ctx, true);
+        integratePositions(*this, ctx);
+        solveJoints(*this, ctx, false);
+        solveContacts(*this, ctx, false);
+    }
+    applyRestitution(*this, ctx);
+    storeJointImpulses(*this, ctx);
+    storeContactImpulses(*this);
+    finalizeBodies(*this);
+}
+
+}  // namespace perpdot

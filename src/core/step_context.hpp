@@ -1,0 +1,52 @@
+// What the solver stages of one World::step share: the substep, the softness of each kind of row,
+// and the velocity/position-delta state of every awake body in one contiguous array.
+#pragma once
+
+#include <vector>
+
+#include "core/softness.hpp"
+#include "perpdot/math.hpp"
+
+namespace perpdot {
+
+// Per-substep state of a solver body. Slot 0 is the shared static body: it never moves, so
+// rows against static bodies need no branches.
+struct BodyState {
+    Vec2 v;       // linear velocity of the centre of mass
+    float w = 0;  // angular velocity ω
+    Vec2 dp;      // centre-of-mass displacement since the step began
+    Rot dq;       // rotation since the step began
+};
+
+// Velocity change a constrained body receives at the start of every substep:
+// v = dv + linearDamping·v, ω = dw + angularDamping·ω (a free body gets dv = 0, damping = 1).
+struct SubstepForces {
+    Vec2 dv;
+    float dw = 0;
+    float linearDamping = 1;
+    float angularDamping = 1;
+};
+
+// Rotation after turning by ω·h: q + h ω perp(q), renormalised (exact to first order).
+inline Rot integrateRotation(Rot q, float angle) {
+    const Rot r{q.c - angle * q.s, q.s + angle * q.c};
+    const float invLength = 1.0f / std::sqrt(r.c * r.c + r.s * r.s);
+    return {invLength * r.c, invLength * r.s};
+}
+
+struct StepContext {
+    float h = 0;       // the whole step
+    float invH = 0;
+    float hs = 0;      // one substep
+    float invHs = 0;
+    int substeps = 1;
+    std::vector<BodyState>* states = nullptr;
+    Softness contactSoftness;  // dynamic against dynamic
+    Softness staticSoftness;   // dynamic against static or kinematic: twice as stiff
+    Softness jointSoftness;
+    float restitutionThreshold = 1.0f;
+    float maxBiasVelocity = 3.0f;
+    bool enableWarmStarting = true;
+};
+
+}  // namespace perpdot

@@ -1,0 +1,46 @@
+// World construction, settings, and read-only views of the contact cache.
+#include "core/world_impl.hpp"
+
+namespace perpdot {
+
+World::World(const WorldDef& def) : impl_(std::make_unique<Impl>(def)) {}
+World::~World() = default;
+World::World(World&&) noexcept = default;
+World& World::operator=(World&&) noexcept = default;
+
+const WorldDef& World::settings() const { return impl_->def; }
+
+void World::setGravity(Vec2 gravity) {
+    if (!isFinite(gravity)) throw Error("setGravity: gravity must be finite");
+    impl_->def.gravity = gravity;
+}
+
+void World::setSubsteps(int substeps) {
+    if (substeps < 1 || substeps > 64) throw Error("setSubsteps: substeps must be 1..64");
+    impl_->def.substeps = substeps;
+}
+
+int World::contactCount() const {
+    int count = 0;
+    for (const Contact& c : impl_->contacts) count += c.alive && c.touching;
+    return count;
+}
+
+std::vector<ContactData> World::contacts() const {
+    std::vector<ContactData> out;
+    for (const Contact& c : impl_->contacts) {
+        if (!c.alive || !c.touching) continue;
+        ContactData& d = out.emplace_back();
+        d.shapeA = impl_->shapeId(c.a.shape);
+        d.shapeB = impl_->shapeId(c.b.shape);
+        d.normal = c.normal;
+        d.pointCount = c.pointCount;
+        for (int i = 0; i < c.pointCount; ++i) {
+            const ContactPointState& p = c.points[i];
+            d.points[i] = {p.point, p.separation, p.normalImpulse, p.tangentImpulse, p.id};
+        }
+    }
+    return out;
+}
+
+}  // namespace perpdot

@@ -1,0 +1,165 @@
+// The World's internals: pools of bodies, shapes and contacts addressed by generational ids,
+// the collision system, and the per-step solver arrays.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <variant>
+#include <vector>
+
+#include "collide/collision.hpp"
+#include "core/joint.hpp"
+#include "core/step_context.hpp"
+#include "perpdot/error.hpp"
+#include "perpdot/world.hpp"
+
+namespace perpdot {
+
+struct Body {
+    uint32_t generation = 0;
+    bool alive = false;
+    BodyType type = BodyType::Static;
+    Transform xf;          // origin frame
+    float angle = 0;       // accumulated θ; xf.q = Rot(θ)
+    Vec2 localCenter;      // centre of mass, body frame
+    Vec2 center;           // centre of mass, world
+    Vec2 v;                // velocity of the centre of mass
+    float w = 0;           // angular velocity ω
+    Vec2 force;            // accumulated this step
+    float torque = 0;
+    float mass = 0, invMass = 0;
+    float inertia = 0, invInertia = 0;  // scalar I about the centre of mass
+    float linearDamping = 0, angularDamping = 0, gravityScale = 1;
+    bool fixedRotation = false, bullet = false, allowSleep = true, awake = true;
+    float sleepTime = 0;
+    void* userData = nullptr;
+    std::vector<int> shapes;
+    int contactHead = -1;  // first edge (contact*2 + side) of this body's contact list
+    int solverIndex = 0;   // slot in StepContext::states during a step; 0 = static
+    int jointCount = 0;    // joints attached (maintained by the joint store)
+    int islandNext = -1;   // next body of the island it fell asleep with
+};
+
+struct ShapeData {
+    uint32_t generation = 0;
+    bool alive = false;
+    int body = -1;
+    ShapeType type = ShapeType::Circle;
+    std::variant<Circle, Polygon, Segment, Chain> geometry;
+    float density = 1, friction = 0.6f, restitution = 0;
+    bool sensor = false;
+    Filter filter;
+    void* userData = nullptr;
+    std::vector<int> proxies;  // broadphase proxy of each child
+};
+
+struct ContactPointState {
+    Vec2 point;             // world, at the last narrowphase
+    Vec2 anchorA, anchorB;  // from each body's centre of mass to the point
+    float separation = 0;
+    float normalImpulse = 0, tangentImpulse = 0, maxNormalImpulse = 0;
+    uint32_t id = 0;
+};
+
+struct ContactEdge {
+    int prev = -1, next = -1;  // edge keys (contact*2 + side) in the body's list
+};
+
+struct Contact {
+    bool alive = false;
+    bool touching = false;
+    uint64_t pairKey = 0;
+    int proxyA = -1, proxyB = -1;
+    collide::ChildKey a, b;
+    int bodyA = -1, bodyB = -1;
+    float friction = 0, restitution = 0;
+    Vec2 normal;
+    int pointCount = 0;
+    ContactPointState points[2];
+    ContactEdge edges[2];  // in bodyA's list (side 0) and bodyB's (side 1)
+};
+
+struct ContactConstraintPoint {
+    Vec2 anchorA, anchorB;     // fixed for the step: rA, rB
+    float baseSeparation = 0;  // separation minus (rB - rA)·n, so s = base + (ΔpB + rB' - ΔpA - rA')·n
+    float relativeVelocity = 0;  // v_rel·n before solving, for restitution
+    float normalImpulse = 0, tangentImpulse = 0, maxNormalImpulse = 0;
+    float normalMass = 0, tangentMass = 0;  // 1 / effectiveMass of each row
+};
+
+struct ContactConstraint {
+    int indexA = 0, indexB = 0;  // solver slots
+    int contact = -1;
+    float invMassA = 0, invIA = 0, invMassB = 0, invIB = 0;
+    Vec2 normal;
+    float friction = 0, restitution = 0;
+    Softness softness;
+    int pointCount = 0;
+    ContactConstraintPoint points[2];
+};
+
+struct World::Impl {
+    WorldDef def;
+    std::vector<Body> bodies;
+    std::vector<int> freeBodies;
+    std::vector<ShapeData> shapes;
+    std::vector<int> freeShapes;
+    std::vector<Contact> contacts;
+    std::vector<int> freeContacts;
+    std::unordered_map<uint64_t, int> pairs;  // broadphase pair -> contact
+    std::vector<int> movedProxies;
+    collide::CollisionSystem collision;
+    JointStorePtr joints;
+    bool locked = false;  // inside step()
+
+    // Solver arrays, rebuilt each step without reallocating.
+    std::vector<BodyState> states;
+    std::vector<int> awakeBodies;       // body index of states[i + 1]
+    std::vector<float> stepRotation;    // Δθ of states[i], summed over substeps
+    std::vector<SubstepForces> substepForces;  // of states[i]
+    std::vector<ContactConstraint> constraints;
+    std::vector<int> islandParent;      // union-find scratch for sleeping, by body index
+    std::vector<float> islandMinSleep;
+    std::vector<int> islandHead;
+
+    Impl(const WorldDef& d);
+
+    // Checked access: a stale or foreign id throws perpdot::Error.
+    Body& body(BodyId id);
+    const Body& body(BodyId id) const;
+    ShapeData& shape(ShapeId id);
+    const ShapeData& shape(ShapeId id) const;
+    void checkUnlocked(const char* what) const;
+
+    BodyId bodyId(int index) const { return {index, bodies[index].generation}; }
+    ShapeId shapeId(int index) const { return {index, shapes[index].generation}; }
+
+    // Bodies (body.cpp)
+    void updateMass(int body);
+    void wake(int body);  // wakes the body and the island it slept with
+
+    // Shapes and broadphase (shape.cpp, contact_cache.cpp)
+    int addShape(BodyId body, const ShapeDef& def);
+    void createProxies(int shape);
+    void destroyProxies(int shape);
+    void synchronizeProxies(int body, Vec2 displacement);
+    void updatePairs();
+    void addPair(int proxyA, int proxyB);
+    void updateContacts();
+    void destroyContact(int contact);
+    void destroyContactsOf(int body, int shape);  // shape = -1: all of the body's contacts
+
+    // The step (solver.cpp, contact_solver.cpp, sleep.cpp)
+    void solve(float h);
+    void updateSleep(float h);
+};
+
+// Contact solver stages (contact_solver.cpp).
+void prepareContacts(World::Impl& world, const StepContext& ctx);
+void warmStartContacts(World::Impl& world, const StepContext& ctx);
+void solveContacts(World::Impl& world, const StepContext& ctx, bool useBias);
+void applyRestitution(World::Impl& world, const StepContext& ctx);
+void storeContactImpulses(World::Impl& world);
+
+}  // namespace perpdot
