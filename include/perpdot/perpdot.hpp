@@ -9,4 +9,5 @@
 #include "perpdot/math.hpp"
 #include "perpdot/scene.hpp"
 #include "perpdot/shapes.hpp"
+#include "perpdot/state_hash.hpp"
 #include "perpdot/world.hpp"

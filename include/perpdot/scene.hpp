@@ -56,10 +56,10 @@ struct SceneBody {
 struct SceneJoint {
     JointType type = JointType::Revolute;
     std::string bodyA{}, bodyB{};
-    std::optional<Vec2> anchor;        // world anchor (A's, and B's unless anchorB is given)
-    std::optional<Vec2> anchorB;       // distance joint: B's world anchor
-    std::optional<Vec2> localAnchorA;  // alternative to `anchor`
-    std::optional<Vec2> localAnchorB;
+    std::optional<Vec2> anchor{};        // world anchor (A's, and B's unless anchorB is given)
+    std::optional<Vec2> anchorB{};       // distance joint: B's world anchor
+    std::optional<Vec2> localAnchorA{};  // alternative to `anchor`
+    std::optional<Vec2> localAnchorB{};
     bool collideConnected = false;
     bool enableLimit = false;
     float lowerAngle = 0.0f, upperAngle = 0.0f;  // revolute
@@ -68,7 +68,7 @@ struct SceneJoint {
     float motorSpeed = 0.0f;
     float maxMotorTorque = 0.0f;
     float maxMotorForce = 0.0f;
-    std::optional<float> length;                 // distance; default: current distance
+    std::optional<float> length{};                 // distance; default: current distance
     float minLength = 0.0f;
     float maxLength = 1.0e30f;
     float hertz = 0.0f;
@@ -87,14 +87,14 @@ struct SceneAction {
     std::string body{};
     Vec2 value{};               // force / impulse
     float scalar = 0.0f;        // torque / angular impulse
-    std::optional<Vec2> point;  // world; default: centre of mass
+    std::optional<Vec2> point{};  // world; default: centre of mass
     int firstStep = 0;
     int lastStep = 0;
     friend bool operator==(const SceneAction&, const SceneAction&) = default;
 };
 
 struct SceneSolver {
-    std::optional<int> substeps;  // perpdot; default WorldDef::substeps
+    std::optional<int> substeps{};  // perpdot; default WorldDef::substeps
     int velocityIterations = 8;   // Box2D, in cross-checks and benchmarks
     int positionIterations = 3;
     friend bool operator==(const SceneSolver&, const SceneSolver&) = default;

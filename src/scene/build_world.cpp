@@ -1,0 +1,172 @@
+// A Scene built into perpdot's World, and the scene's scripted actions applied step by step.
+#include <string>
+#include <unordered_map>
+
+#include "perpdot/error.hpp"
+#include "perpdot/scene.hpp"
+
+namespace perpdot {
+namespace {
+
+BodyDef bodyDef(const SceneBody& b) {
+    return {.type = b.type,
+            .position = b.position,
+            .angle = b.angle,
+            .linearVelocity = b.linearVelocity,
+            .angularVelocity = b.angularVelocity,
+            .linearDamping = b.linearDamping,
+            .angularDamping = b.angularDamping,
+            .gravityScale = b.gravityScale,
+            .fixedRotation = b.fixedRotation,
+            .bullet = b.bullet,
+            .allowSleep = b.allowSleep};
+}
+
+ShapeId createShape(World& world, BodyId body, const SceneShape& s) {
+    const ShapeDef def{.density = s.density, .friction = s.friction, .restitution = s.restitution,
+                       .sensor = s.sensor, .filter = s.filter};
+    switch (s.kind) {
+        case SceneShape::Kind::Circle: return world.createShape(body, def, Circle{s.center, s.radius});
+        case SceneShape::Kind::Box:
+            return world.createShape(body, def, makeBox(s.halfExtents.x, s.halfExtents.y, s.center, s.angle));
+        case SceneShape::Kind::Polygon: return world.createShape(body, def, makePolygon(s.vertices, s.radius));
+        case SceneShape::Kind::Segment: return world.createShape(body, def, Segment{s.v1, s.v2});
+        case SceneShape::Kind::Chain: break;
+    }
+    return world.createShape(body, def, Chain{s.vertices, s.loop});
+}
+
+// The joint's bodies, their local anchors and reference angle, resolved from the scene's world data.
+struct JointFrame {
+    BodyId bodyA{}, bodyB{};
+    Transform frameA{}, frameB{};
+    Vec2 localAnchorA{}, localAnchorB{};
+    float referenceAngle = 0.0f;  // θB - θA at creation: the joint's zero angle
+};
+
+JointFrame jointFrame(const SceneJoint& j, const SceneWorld& built, const std::unordered_map<std::string, size_t>& index) {
+    const auto body = [&](const std::string& name) -> size_t {
+        const auto it = index.find(name);
+        if (it == index.end()) throw Error("no body named \"" + name + "\"");
+        return it->second;
+    };
+    const size_t a = body(j.bodyA), b = body(j.bodyB);
+    JointFrame f{.bodyA = built.bodies[a], .bodyB = built.bodies[b]};
+    f.frameA = built.world.transform(f.bodyA);
+    f.frameB = built.world.transform(f.bodyB);
+    if (j.anchor) {
+        f.localAnchorA = invTransformPoint(f.frameA, *j.anchor);
+        f.localAnchorB = invTransformPoint(f.frameB, j.anchorB.value_or(*j.anchor));
+    } else {
+        f.localAnchorA = j.localAnchorA.value_or(Vec2{});
+        f.localAnchorB = j.localAnchorB.value_or(Vec2{});
+    }
+    f.referenceAngle = built.scene.bodies[b].angle - built.scene.bodies[a].angle;
+    return f;
+}
+
+JointId createJoint(World& world, const SceneJoint& j, const JointFrame& f) {
+    const Vec2 localAxisA = invRotate(f.frameA.q, normalize(j.axis));
+    switch (j.type) {
+        case JointType::Revolute:
+            return world.createJoint(RevoluteJointDef{
+                .bodyA = f.bodyA, .bodyB = f.bodyB, .localAnchorA = f.localAnchorA, .localAnchorB = f.localAnchorB,
+                .referenceAngle = f.referenceAngle, .enableLimit = j.enableLimit, .lowerAngle = j.lowerAngle,
+                .upperAngle = j.upperAngle, .enableMotor = j.enableMotor, .motorSpeed = j.motorSpeed,
+                .maxMotorTorque = j.maxMotorTorque, .collideConnected = j.collideConnected});
+        case JointType::Prismatic:
+            return world.createJoint(PrismaticJointDef{
+                .bodyA = f.bodyA, .bodyB = f.bodyB, .localAnchorA = f.localAnchorA, .localAnchorB = f.localAnchorB,
+                .localAxisA = localAxisA, .referenceAngle = f.referenceAngle, .enableLimit = j.enableLimit,
+                .lower = j.lower, .upper = j.upper, .enableMotor = j.enableMotor, .motorSpeed = j.motorSpeed,
+                .maxMotorForce = j.maxMotorForce, .collideConnected = j.collideConnected});
+        case JointType::Distance: {
+            const Vec2 worldA = transformPoint(f.frameA, f.localAnchorA), worldB = transformPoint(f.frameB, f.localAnchorB);
+            return world.createJoint(DistanceJointDef{
+                .bodyA = f.bodyA, .bodyB = f.bodyB, .localAnchorA = f.localAnchorA, .localAnchorB = f.localAnchorB,
+                .length = j.length.value_or(distance(worldA, worldB)), .minLength = j.minLength,
+                .maxLength = j.maxLength, .hertz = j.hertz, .dampingRatio = j.dampingRatio,
+                .collideConnected = j.collideConnected});
+        }
+        case JointType::Weld:
+            return world.createJoint(WeldJointDef{
+                .bodyA = f.bodyA, .bodyB = f.bodyB, .localAnchorA = f.localAnchorA, .localAnchorB = f.localAnchorB,
+                .referenceAngle = f.referenceAngle, .hertz = j.hertz, .dampingRatio = j.dampingRatio,
+                .collideConnected = j.collideConnected});
+        case JointType::Wheel:
+            return world.createJoint(WheelJointDef{
+                .bodyA = f.bodyA, .bodyB = f.bodyB, .localAnchorA = f.localAnchorA, .localAnchorB = f.localAnchorB,
+                .localAxisA = localAxisA, .hertz = j.hertz, .dampingRatio = j.dampingRatio,
+                .enableMotor = j.enableMotor, .motorSpeed = j.motorSpeed, .maxMotorTorque = j.maxMotorTorque,
+                .collideConnected = j.collideConnected});
+        case JointType::Motor:
+            return world.createJoint(MotorJointDef{
+                .bodyA = f.bodyA, .bodyB = f.bodyB, .linearOffset = j.linearOffset,
+                .angularOffset = j.angularOffset, .maxForce = j.maxForce, .maxTorque = j.maxTorque,
+                .collideConnected = j.collideConnected});
+        case JointType::Mouse: break;
+    }
+    throw Error("mouse joints cannot be part of a scene");
+}
+
+std::string element(const char* list, size_t i) { return std::string(list) + "[" + std::to_string(i) + "]"; }
+
+}  // namespace
+
+SceneWorld buildWorld(const Scene& scene) {
+    WorldDef def{.gravity = scene.gravity, .enableSleep = scene.enableSleep};
+    if (scene.solver.substeps) def.substeps = *scene.solver.substeps;
+    SceneWorld built{.world = World(def), .scene = scene};
+
+    std::unordered_map<std::string, size_t> index;
+    for (size_t i = 0; i < scene.bodies.size(); ++i) {
+        const SceneBody& b = scene.bodies[i];
+        std::string path = element("bodies", i);
+        try {
+            if (!index.emplace(b.name, i).second) throw Error("duplicate body name \"" + b.name + "\"");
+            built.bodies.push_back(built.world.createBody(bodyDef(b)));
+            for (size_t k = 0; k < b.shapes.size(); ++k) {
+                path = element("bodies", i) + "." + element("shapes", k);
+                createShape(built.world, built.bodies.back(), b.shapes[k]);
+            }
+        } catch (const Error& e) {
+            throw Error(path + ": " + e.what());
+        }
+    }
+    for (size_t i = 0; i < scene.joints.size(); ++i) {
+        try {
+            const SceneJoint& j = scene.joints[i];
+            built.joints.push_back(createJoint(built.world, j, jointFrame(j, built, index)));
+        } catch (const Error& e) {
+            throw Error(element("joints", i) + ": " + e.what());
+        }
+    }
+    for (size_t i = 0; i < scene.actions.size(); ++i)
+        if (!index.contains(scene.actions[i].body))
+            throw Error(element("actions", i) + ".body: no body named \"" + scene.actions[i].body + "\"");
+    return built;
+}
+
+void SceneWorld::applyActions(int step) {
+    for (const SceneAction& a : scene.actions) {
+        if (step < a.firstStep || step > a.lastStep) continue;
+        size_t i = 0;
+        while (scene.bodies[i].name != a.body) ++i;  // buildWorld checked that the body exists
+        const BodyId body = bodies[i];
+        const Vec2 point = a.point.value_or(world.worldCenter(body));
+        switch (a.kind) {
+            case SceneAction::Kind::Force: world.applyForce(body, a.value, point); break;
+            case SceneAction::Kind::Impulse: world.applyLinearImpulse(body, a.value, point); break;
+            case SceneAction::Kind::Torque: world.applyTorque(body, a.scalar); break;
+            case SceneAction::Kind::AngularImpulse: world.applyAngularImpulse(body, a.scalar); break;
+        }
+    }
+}
+
+void SceneWorld::step() {
+    applyActions(stepIndex);
+    world.step(scene.timestep);
+    ++stepIndex;
+}
+
+}  // namespace perpdot
