@@ -1,0 +1,48 @@
+// step() allocates nothing in steady state: the solver arrays, contact cache and broadphase
+// reuse their storage once the contacts exist. Counted by replacing global operator new.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+#include "perpdot/perpdot.hpp"
+
+namespace {
+std::atomic<long> allocationCount{0};
+}  // namespace
+
+void* operator new(std::size_t size) {
+    ++allocationCount;
+    if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+    throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+namespace perpdot {
+namespace {
+
+TEST(Allocation, SteppingARestingPyramidAllocatesNothing) {
+    World world(WorldDef{.enableSleep = false});
+    const BodyId ground = world.createBody({.position = {0.0f, -0.5f}});
+    world.createShape(ground, {}, makeBox(20.0f, 0.5f));
+    constexpr int rows = 10;
+    for (int row = 0; row < rows; ++row) {
+        for (int i = 0; i < rows - row; ++i) {
+            const float x = static_cast<float>(i) - 0.5f * static_cast<float>(rows - row - 1);
+            const BodyId box = world.createBody({.type = BodyType::Dynamic, .position = {x, 0.5f + static_cast<float>(row)}});
+            world.createShape(box, {}, makeBox(0.5f, 0.5f));
+        }
+    }
+    // Let every contact form and the pyramid settle, so no new pair appears later.
+    for (int i = 0; i < 120; ++i) world.step(1.0f / 60.0f);
+    ASSERT_GT(world.contactCount(), rows * rows / 2);
+
+    const long before = allocationCount.load();
+    for (int i = 0; i < 120; ++i) world.step(1.0f / 60.0f);
+    EXPECT_EQ(allocationCount.load() - before, 0);
+}
+
+}  // namespace
+}  // namespace perpdot
