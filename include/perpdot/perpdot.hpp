@@ -2,6 +2,7 @@
 #pragma once
 
 #include "perpdot/body.hpp"
+#include "perpdot/crosscheck.hpp"
 #include "perpdot/debug_draw.hpp"
 #include "perpdot/error.hpp"
 #include "perpdot/ids.hpp"

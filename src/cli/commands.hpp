@@ -23,5 +23,9 @@ struct UsageError {
 int listCommand(Args args);
 int runCommand(Args args);
 int exportCommand(Args args);
+int crosscheckCommand(Args args);  // cmd_crosscheck.cpp
+int recordCommand(Args args);      // cmd_golden.cpp
+int compareCommand(Args args);     // cmd_golden.cpp
+int benchCommand(Args args);       // cmd_bench.cpp
 
 }  // namespace perpdot::cli

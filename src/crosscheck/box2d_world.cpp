@@ -1,0 +1,306 @@
+// Scene -> b2World. Each scene field maps onto the b2*Def field of the same meaning; the few
+// places where Box2D 2.4 has no equivalent say so where they are handled.
+#include "crosscheck/box2d_world.hpp"
+
+#include <algorithm>
+#include <unordered_map>
+
+#include "crosscheck/stepper.hpp"
+#include "perpdot/error.hpp"
+#include "perpdot/shapes.hpp"
+
+namespace perpdot::crosscheck {
+namespace {
+
+b2Vec2 toB2(Vec2 v) { return {v.x, v.y}; }
+
+b2BodyType toB2(BodyType type) {
+    switch (type) {
+    case BodyType::Static: return b2_staticBody;
+    case BodyType::Kinematic: return b2_kinematicBody;
+    case BodyType::Dynamic: return b2_dynamicBody;
+    }
+    return b2_staticBody;
+}
+
+b2BodyDef bodyDef(const SceneBody& b) {
+    b2BodyDef def;
+    def.type = toB2(b.type);
+    def.position = toB2(b.position);
+    def.angle = b.angle;
+    def.linearVelocity = toB2(b.linearVelocity);  // of the centre of mass in both engines
+    def.angularVelocity = b.angularVelocity;
+    def.linearDamping = b.linearDamping;
+    def.angularDamping = b.angularDamping;
+    def.gravityScale = b.gravityScale;
+    def.fixedRotation = b.fixedRotation;
+    def.bullet = b.bullet;
+    def.allowSleep = b.allowSleep;
+    def.awake = true;
+    return def;
+}
+
+b2FixtureDef fixtureDef(const SceneShape& s, const b2Shape* shape) {
+    b2FixtureDef def;
+    def.shape = shape;
+    def.density = s.density;
+    def.friction = s.friction;        // mixed sqrt(μA μB) by both engines
+    def.restitution = s.restitution;  // mixed max(eA, eB) by both engines
+    def.restitutionThreshold = 1.0f;  // m/s, perpdot's WorldDef::restitutionThreshold
+    def.isSensor = s.sensor;
+    def.filter.categoryBits = s.filter.category;
+    def.filter.maskBits = s.filter.mask;
+    def.filter.groupIndex = s.filter.group;
+    return def;
+}
+
+// Open chains: Box2D 2.4 wants ghost vertices; continue the end segments straight on, so a shape
+// sliding off an end meets no phantom corner.
+void createChain(b2ChainShape& chain, const std::vector<b2Vec2>& v, bool loop) {
+    if (loop) {
+        chain.CreateLoop(v.data(), int32(v.size()));
+        return;
+    }
+    const b2Vec2 prev = v[0] + (v[0] - v[1]);
+    const b2Vec2 next = v.back() + (v.back() - v[v.size() - 2]);
+    chain.CreateChain(v.data(), int32(v.size()), prev, next);
+}
+
+void createFixture(b2Body* body, const SceneShape& s) {
+    switch (s.kind) {
+    case SceneShape::Kind::Circle: {
+        b2CircleShape circle;
+        circle.m_p = toB2(s.center);
+        circle.m_radius = s.radius;
+        const b2FixtureDef def = fixtureDef(s, &circle);
+        body->CreateFixture(&def);
+        return;
+    }
+    case SceneShape::Kind::Box: {
+        b2PolygonShape box;
+        box.SetAsBox(s.halfExtents.x, s.halfExtents.y, toB2(s.center), s.angle);
+        const b2FixtureDef def = fixtureDef(s, &box);
+        body->CreateFixture(&def);
+        return;
+    }
+    case SceneShape::Kind::Polygon: {
+        // perpdot's validation and winding, so both engines get the same counter-clockwise vertices.
+        const Polygon polygon = makePolygon(s.vertices, s.radius);
+        b2Vec2 v[b2_maxPolygonVertices];
+        for (int i = 0; i < polygon.count; ++i) v[i] = toB2(polygon.vertices[size_t(i)]);
+        b2PolygonShape shape;
+        shape.Set(v, polygon.count);
+        // Box2D 2.4 has no rounded polygons: the rounding joins the skin radius for collision,
+        // and the mass (which Box2D computes from the core polygon only) is set by roundedMass().
+        shape.m_radius += polygon.radius;
+        const b2FixtureDef def = fixtureDef(s, &shape);
+        body->CreateFixture(&def);
+        return;
+    }
+    case SceneShape::Kind::Segment: {
+        b2EdgeShape edge;
+        edge.SetTwoSided(toB2(s.v1), toB2(s.v2));
+        const b2FixtureDef def = fixtureDef(s, &edge);
+        body->CreateFixture(&def);
+        return;
+    }
+    case SceneShape::Kind::Chain: {
+        std::vector<b2Vec2> v;
+        for (Vec2 p : s.vertices) v.push_back(toB2(p));
+        b2ChainShape chain;
+        createChain(chain, v, s.loop);
+        const b2FixtureDef def = fixtureDef(s, &chain);
+        body->CreateFixture(&def);
+        return;
+    }
+    }
+}
+
+// Rounded polygons: Box2D 2.4 leaves the rounding out of the mass, perpdot includes it. Give the
+// Box2D body perpdot's mass properties (area integrals of the rounded shapes) so the comparison
+// measures the dynamics, not the mass model. Only bodies with a rounded polygon are touched.
+void roundedMass(b2Body* body, const SceneBody& b) {
+    const bool rounded = std::any_of(b.shapes.begin(), b.shapes.end(), [](const SceneShape& s) {
+        return s.kind == SceneShape::Kind::Polygon && s.radius > 0.0f && !s.sensor;
+    });
+    if (!rounded || b.type != BodyType::Dynamic) return;
+    std::vector<MassData> parts;
+    for (const SceneShape& s : b.shapes) {
+        if (s.sensor || s.density <= 0.0f) continue;
+        switch (s.kind) {
+        case SceneShape::Kind::Circle: parts.push_back(computeMass(Circle{s.center, s.radius}, s.density)); break;
+        case SceneShape::Kind::Box:
+            parts.push_back(computeMass(makeBox(s.halfExtents.x, s.halfExtents.y, s.center, s.angle), s.density));
+            break;
+        case SceneShape::Kind::Polygon: parts.push_back(computeMass(makePolygon(s.vertices, s.radius), s.density)); break;
+        case SceneShape::Kind::Segment:
+        case SceneShape::Kind::Chain: break;
+        }
+    }
+    const MassData m = combineMass(parts);
+    b2MassData data;
+    data.mass = m.mass;
+    data.center = toB2(m.center);
+    data.I = m.rotationalInertia + m.mass * dot(m.center, m.center);  // Box2D wants it about the origin
+    body->SetMassData(&data);
+}
+
+class NameIndex {
+public:
+    explicit NameIndex(const Scene& scene) {
+        for (size_t i = 0; i < scene.bodies.size(); ++i) index_[bodyName(scene, i)] = i;
+    }
+    size_t operator()(const std::string& name, const std::string& where) const {
+        const auto it = index_.find(name);
+        if (it == index_.end()) throw Error(where + ": no body named '" + name + "'");
+        return it->second;
+    }
+
+private:
+    std::unordered_map<std::string, size_t> index_;
+};
+
+// Anchors as scene-format.md defines them: a world `anchor` (B's may be given apart as
+// `anchor_b`), otherwise local anchors, otherwise the bodies' origins.
+struct Anchors {
+    b2Vec2 localA, localB;
+};
+Anchors anchors(const SceneJoint& j, const b2Body* a, const b2Body* b) {
+    if (j.anchor) {
+        const Vec2 worldB = j.anchorB.value_or(*j.anchor);
+        return {a->GetLocalPoint(toB2(*j.anchor)), b->GetLocalPoint(toB2(worldB))};
+    }
+    return {toB2(j.localAnchorA.value_or(Vec2{})), toB2(j.localAnchorB.value_or(Vec2{}))};
+}
+
+b2Vec2 localAxis(const b2Body* a, Vec2 worldAxis) { return a->GetLocalVector(toB2(normalize(worldAxis))); }
+
+b2Joint* createJoint(b2World& world, const SceneJoint& j, b2Body* a, b2Body* b) {
+    const Anchors anchor = anchors(j, a, b);
+    const float referenceAngle = b->GetAngle() - a->GetAngle();
+    switch (j.type) {
+    case JointType::Revolute: {
+        b2RevoluteJointDef def;
+        def.bodyA = a, def.bodyB = b, def.collideConnected = j.collideConnected;
+        def.localAnchorA = anchor.localA, def.localAnchorB = anchor.localB;
+        def.referenceAngle = referenceAngle;
+        def.enableLimit = j.enableLimit, def.lowerAngle = j.lowerAngle, def.upperAngle = j.upperAngle;
+        def.enableMotor = j.enableMotor, def.motorSpeed = j.motorSpeed, def.maxMotorTorque = j.maxMotorTorque;
+        return world.CreateJoint(&def);
+    }
+    case JointType::Prismatic: {
+        b2PrismaticJointDef def;
+        def.bodyA = a, def.bodyB = b, def.collideConnected = j.collideConnected;
+        def.localAnchorA = anchor.localA, def.localAnchorB = anchor.localB;
+        def.localAxisA = localAxis(a, j.axis);
+        def.referenceAngle = referenceAngle;
+        def.enableLimit = j.enableLimit, def.lowerTranslation = j.lower, def.upperTranslation = j.upper;
+        def.enableMotor = j.enableMotor, def.motorSpeed = j.motorSpeed, def.maxMotorForce = j.maxMotorForce;
+        return world.CreateJoint(&def);
+    }
+    case JointType::Distance: {
+        b2DistanceJointDef def;
+        def.bodyA = a, def.bodyB = b, def.collideConnected = j.collideConnected;
+        def.localAnchorA = anchor.localA, def.localAnchorB = anchor.localB;
+        const float current = (b->GetWorldPoint(anchor.localB) - a->GetWorldPoint(anchor.localA)).Length();
+        def.length = j.length.value_or(current);
+        if (j.hertz > 0.0f) {
+            def.minLength = j.minLength, def.maxLength = j.maxLength;
+            b2LinearStiffness(def.stiffness, def.damping, j.hertz, j.dampingRatio, a, b);
+        } else {
+            // Box2D 2.4 corrects the length's drift only when min = max: that is the rigid rod.
+            def.minLength = def.maxLength = def.length;
+        }
+        return world.CreateJoint(&def);
+    }
+    case JointType::Weld: {
+        b2WeldJointDef def;
+        def.bodyA = a, def.bodyB = b, def.collideConnected = j.collideConnected;
+        def.localAnchorA = anchor.localA, def.localAnchorB = anchor.localB;
+        def.referenceAngle = referenceAngle;
+        if (j.hertz > 0.0f) b2AngularStiffness(def.stiffness, def.damping, j.hertz, j.dampingRatio, a, b);
+        return world.CreateJoint(&def);
+    }
+    case JointType::Wheel: {
+        b2WheelJointDef def;
+        def.bodyA = a, def.bodyB = b, def.collideConnected = j.collideConnected;
+        def.localAnchorA = anchor.localA, def.localAnchorB = anchor.localB;
+        def.localAxisA = localAxis(a, j.axis);
+        def.enableMotor = j.enableMotor, def.motorSpeed = j.motorSpeed, def.maxMotorTorque = j.maxMotorTorque;
+        if (j.hertz > 0.0f) {
+            b2LinearStiffness(def.stiffness, def.damping, j.hertz, j.dampingRatio, a, b);
+        } else {
+            // 0 hertz means rigid in the scene format; Box2D's wheel without a spring slides freely,
+            // so pin the suspension with a zero-width limit instead.
+            def.enableLimit = true, def.lowerTranslation = def.upperTranslation = 0.0f;
+        }
+        return world.CreateJoint(&def);
+    }
+    case JointType::Motor: {
+        b2MotorJointDef def;
+        def.bodyA = a, def.bodyB = b, def.collideConnected = j.collideConnected;
+        def.linearOffset = toB2(j.linearOffset);
+        def.angularOffset = j.angularOffset;
+        def.maxForce = j.maxForce, def.maxTorque = j.maxTorque;
+        return world.CreateJoint(&def);
+    }
+    case JointType::Mouse: break;
+    }
+    throw Error("joints: mouse joints are interactive and not part of the scene format");
+}
+
+}  // namespace
+
+Box2DScene::Box2DScene(const Scene& scene)
+    : scene_(scene), world_(std::make_unique<b2World>(toB2(scene.gravity))) {
+    world_->SetAllowSleeping(scene.enableSleep);
+    for (const SceneBody& b : scene_.bodies) {
+        const b2BodyDef def = bodyDef(b);
+        b2Body* body = world_->CreateBody(&def);
+        for (const SceneShape& s : b.shapes) createFixture(body, s);
+        roundedMass(body, b);
+        bodies_.push_back(body);
+    }
+    const NameIndex index(scene_);
+    for (size_t i = 0; i < scene_.joints.size(); ++i) {
+        const SceneJoint& j = scene_.joints[i];
+        const std::string where = "joints[" + std::to_string(i) + "]";
+        b2Body* a = bodies_[index(j.bodyA, where + ".body_a")];
+        b2Body* b = bodies_[index(j.bodyB, where + ".body_b")];
+        joints_.push_back(createJoint(*world_, j, a, b));
+    }
+    for (size_t i = 0; i < scene_.actions.size(); ++i) {
+        actionBodies_.push_back(bodies_[index(scene_.actions[i].body, "actions[" + std::to_string(i) + "].body")]);
+    }
+}
+
+void Box2DScene::applyActions(int step) {
+    for (size_t i = 0; i < scene_.actions.size(); ++i) {
+        const SceneAction& action = scene_.actions[i];
+        if (step < action.firstStep || step > action.lastStep) continue;  // as SceneWorld::applyActions
+        b2Body* body = actionBodies_[i];
+        const b2Vec2 point = action.point ? toB2(*action.point) : body->GetWorldCenter();
+        switch (action.kind) {
+        case SceneAction::Kind::Force: body->ApplyForce(toB2(action.value), point, true); break;
+        case SceneAction::Kind::Impulse: body->ApplyLinearImpulse(toB2(action.value), point, true); break;
+        case SceneAction::Kind::Torque: body->ApplyTorque(action.scalar, true); break;
+        case SceneAction::Kind::AngularImpulse: body->ApplyAngularImpulse(action.scalar, true); break;
+        }
+    }
+}
+
+void Box2DScene::step() {
+    if (!scene_.actions.empty()) applyActions(stepIndex_);
+    world_->Step(scene_.timestep, scene_.solver.velocityIterations, scene_.solver.positionIterations);
+    ++stepIndex_;
+}
+
+int Box2DScene::touchingContactCount() const {
+    int count = 0;
+    for (const b2Contact* c = world_->GetContactList(); c; c = c->GetNext()) {
+        if (c->IsTouching() && !c->GetFixtureA()->IsSensor() && !c->GetFixtureB()->IsSensor()) ++count;
+    }
+    return count;
+}
+
+}  // namespace perpdot::crosscheck
