@@ -57,6 +57,15 @@ TEST(SceneJson, BuiltinNamesAreUniqueAndFindable) {
     EXPECT_THROW(findScene("no_such_scene"), Error);
 }
 
+TEST(SceneJson, FindSceneLoadsFilesAndNamesThemAfterTheFile) {
+    const Scene s = findScene(std::string(PERPDOT_TEST_DATA) + "/unnamed_scene.json");
+    EXPECT_EQ(s.name, "unnamed_scene");
+    EXPECT_EQ(s.steps, 30);
+    ASSERT_EQ(s.bodies.size(), 3u);
+    EXPECT_EQ(s.bodies[2].name, "body2");
+    EXPECT_EQ(s.actions[0].body, "body1");
+}
+
 TEST(SceneJson, DefaultsAreApplied) {
     const Scene s = parseScene(R"({"format": "perpdot-scene/1",
         "bodies": [{"shapes": [{"type": "circle", "radius": 0.25}]}, {"name": "b", "shapes": [{"type": "polygon",
@@ -265,6 +274,11 @@ TEST(SceneJson, InvalidScenesAreRefusedWithTheirPath) {
         {"unknown solver key", sceneWith(box, R"(, "solver": {"iterations": 4})"), "solver.iterations: unknown key"},
         {"float overflow", sceneWith(box, R"(, "gravity": [0, -1e39])"), "gravity[1]: number is not finite"},
         {"double overflow", sceneWith(R"({"position": [1e400, 0]})"), "(root): number overflow parsing '1e400'"},
+        {"duplicate key", withShape(R"({"type": "circle", "radius": 1, "radius": 2})"),
+         "bodies[0].shapes[0].radius: duplicate key"},
+        {"duplicate key after arrays", sceneWith(R"({"shapes": [{"type": "chain", "vertices": [[0, 0], [1, 0]]}]},
+          {"position": [0, 1], "angle": 0, "position": [1, 1]})"), "bodies[1].position: duplicate key"},
+        {"duplicate top-level key", sceneWith(box, R"(, "steps": 5, "steps": 6)"), "steps: duplicate key"},
         {"malformed JSON", "{\n  \"format\": \"perpdot-scene/1\",\n  \"bodies\": [}\n}", "(root): parse error at line 3"},
         {"trailing garbage", R"({"format": "perpdot-scene/1"} x)", "(root): parse error at line 1"},
         {"empty text", "", "(root): parse error"},

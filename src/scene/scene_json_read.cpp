@@ -392,6 +392,52 @@ Scene readScene(const Object& o) {
     return s;
 }
 
+// nlohmann keeps the last of two equal keys; a scene file with "position" twice is a mistake, so
+// the parser's callback tracks the keys of every open object, and the JSON path for the message.
+class DuplicateKeyCheck {
+public:
+    bool operator()(int, json::parse_event_t event, json& parsed) {
+        using Event = json::parse_event_t;
+        switch (event) {
+            case Event::object_start:
+            case Event::array_start:
+                enterValue();
+                open_.push_back({event == Event::array_start});
+                break;
+            case Event::object_end:
+            case Event::array_end: open_.pop_back(); break;
+            case Event::key: {
+                Frame& object = open_.back();
+                object.key = parsed.get<std::string>();
+                if (!object.keys.insert(object.key).second) fail(path(), "duplicate key");
+                break;
+            }
+            case Event::value: enterValue(); break;
+        }
+        return true;
+    }
+
+private:
+    struct Frame {
+        bool isArray = false;
+        size_t index = 0;  // arrays: elements begun so far
+        std::string key{};  // objects: the current key
+        std::set<std::string> keys{};
+    };
+
+    void enterValue() {
+        if (!open_.empty() && open_.back().isArray) ++open_.back().index;
+    }
+
+    std::string path() const {
+        std::string result;
+        for (const Frame& f : open_) result = f.isArray ? element(result, f.index - 1) : member(result, f.key);
+        return result;
+    }
+
+    std::vector<Frame> open_;
+};
+
 }  // namespace
 
 std::string defaultBodyName(size_t index) { return "body" + std::to_string(index); }
@@ -399,7 +445,7 @@ std::string defaultBodyName(size_t index) { return "body" + std::to_string(index
 Scene parseScene(std::string_view text) {
     json document;
     try {
-        document = json::parse(text);
+        document = json::parse(text, DuplicateKeyCheck());
     } catch (const json::exception& e) {
         // nlohmann's message reads "[json.exception.parse_error.101] parse error at line 3, column 5: ...",
         // or "[json.exception.out_of_range.406] number overflow parsing '1e400'".
