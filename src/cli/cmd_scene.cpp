@@ -1,14 +1,13 @@
 // `perpdot list`, `perpdot run` and `perpdot export`: scenes from the command line.
 #include <chrono>
-#include <charconv>
 #include <cinttypes>
 #include <cstdio>
-#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/flags.hpp"
 #include "perpdot/error.hpp"
 #include "perpdot/scene.hpp"
 #include "perpdot/state_hash.hpp"
@@ -17,46 +16,23 @@
 namespace perpdot::cli {
 namespace {
 
-// The whole of `text` as an integer in [lo, hi]; "12abc", "", "-3" (when lo = 0) are usage errors.
-int parseInt(const std::string& option, const std::string& text, int lo, int hi) {
-    int value = 0;
-    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (error != std::errc() || end != text.data() + text.size() || text.empty())
-        throw UsageError{option + " expects an integer, got \"" + text + "\""};
-    if (value < lo || value > hi)
-        throw UsageError{option + " must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " + text};
-    return value;
-}
-
 struct RunOptions {
-    std::string scene;
-    std::optional<int> steps;
-    std::string csvPath;
+    std::string scene{};
+    std::optional<int> steps{};
+    std::string csvPath{};
     int every = 1;
 };
 
 RunOptions parseRunOptions(Args args) {
-    RunOptions options;
-    for (size_t i = 0; i < args.size(); ++i) {
-        const std::string& arg = args[i];
-        const auto value = [&]() -> const std::string& {
-            if (i + 1 >= args.size()) throw UsageError{arg + " needs a value"};
-            return args[++i];
-        };
-        if (arg == "--steps")
-            options.steps = parseInt(arg, value(), 0, maxSceneSteps);
-        else if (arg == "--csv")
-            options.csvPath = value();
-        else if (arg == "--every")
-            options.every = parseInt(arg, value(), 1, std::numeric_limits<int>::max());
-        else if (arg.starts_with("-"))
-            throw UsageError{"unknown option " + arg};
-        else if (options.scene.empty())
-            options.scene = arg;
-        else
-            throw UsageError{"more than one scene given (\"" + options.scene + "\" and \"" + arg + "\")"};
+    const Flags flags(args, {"--steps", "--csv", "--every"});
+    if (flags.positional().empty()) throw UsageError{"no scene given"};
+    if (flags.positional().size() > 1) throw UsageError{"more than one scene given"};
+    RunOptions options{.scene = flags.positional()[0], .csvPath = flags.text("--csv").value_or("")};
+    if (flags.text("--steps")) {
+        options.steps = flags.integer("--steps", 0, 0);
+        if (*options.steps > maxSceneSteps) throw UsageError{"--steps must be at most " + std::to_string(maxSceneSteps)};
     }
-    if (options.scene.empty()) throw UsageError{"no scene given"};
+    options.every = flags.integer("--every", 1, 1);
     return options;
 }
 
