@@ -64,7 +64,7 @@ TEST_P(CrosscheckGate, AgreesWithBox2D) {
 INSTANTIATE_TEST_SUITE_P(FreeMotion, CrosscheckGate,
                          testing::Values(Gate{"projectile", 1e-4f, 1e-3f}, Gate{"torque_free_spin", 1e-4f, 1e-3f},
                                          Gate{"damping", 1e-4f, 1e-3f}, Gate{"gravity_scale", 1e-4f, 1e-3f},
-                                         Gate{"actions", 1e-4f, 1e-3f}),
+                                         Gate{"actions", 1e-4f, 1e-3f}, Gate{"filters", 1e-4f, 1e-3f}),
                          [](const auto& info) { return std::string(info.param.scene); });
 
 // One contact: soft step (4 substeps) vs PGS + NGS. Resting agrees within 1 cm; sliding, rolling and
@@ -190,6 +190,69 @@ TEST(CrosscheckPhysics, BoxRestsOnGroundInBothEngines) {
     }
     EXPECT_EQ(r.perpdot.contactCount.back(), 1);
     EXPECT_EQ(r.box2d.contactCount.back(), 1);
+}
+
+// Masks, negative groups and sensors keep every shape of tests/crosscheck/filters.json apart: no
+// touching contact in either engine at any step, while the sensor is overlapped.
+TEST(CrosscheckPhysics, FilteredAndSensorShapesNeverTouch) {
+    const Report r = crosscheck::run(gateScene("filters"));
+    for (size_t f = 0; f < r.perpdot.contactCount.size(); ++f) {
+        ASSERT_EQ(r.perpdot.contactCount[f], 0) << f;
+        ASSERT_EQ(r.box2d.contactCount[f], 0) << f;
+    }
+}
+
+// tests/crosscheck/joints.json: each joint of the scene holds its constraint. Checked on Box2D's side,
+// which proves the Scene -> b2World conversion (anchors, axes, reference angles, spring stiffness
+// from hertz and damping ratio); perpdot's trajectory goes through the same checks once its joints land.
+void expectJointsHold(const crosscheck::Trajectory& t, float tolerance) {
+    auto body = [&](const std::string& name) {
+        for (size_t i = 0; i < t.bodies.size(); ++i)
+            if (t.bodies[i] == name) return int(i);
+        ADD_FAILURE() << "no body " << name;
+        return 0;
+    };
+    const int bob = body("bob"), tip = body("tip"), weight = body("weight"), slider = body("slider"), wheel = body("wheel"),
+              follower = body("follower");
+    const Vec2 axis = normalize({1.0f, 1.0f});
+    int upCrossings = 0, firstUp = -1, lastUp = -1;
+    for (int f = 0; f < t.frameCount(); ++f) {
+        const crosscheck::BodyState &b = t.at(f, bob), &w = t.at(f, tip), &s = t.at(f, slider), &k = t.at(f, wheel);
+        EXPECT_NEAR(distance(b.position, {0.0f, 5.0f}), 2.0f, tolerance) << "revolute, frame " << f;
+        EXPECT_NEAR(distance(b.position, w.position), 0.6f, tolerance) << "weld, frame " << f;
+        EXPECT_NEAR(w.angle, b.angle, tolerance) << "weld, frame " << f;
+        const Vec2 slide = s.position - Vec2{-4.0f, 4.0f};
+        EXPECT_NEAR(perpDot(axis, slide), 0.0f, tolerance) << "prismatic, frame " << f;
+        EXPECT_GE(dot(axis, slide), -1.0f - tolerance) << "prismatic lower limit, frame " << f;
+        EXPECT_NEAR(s.angle, pi / 4.0f, tolerance) << "prismatic, frame " << f;
+        EXPECT_NEAR(k.position.x, -8.0f, tolerance) << "wheel axis, frame " << f;
+        if (f > 0 && t.at(f - 1, weight).linearVelocity.y < 0.0f && t.at(f, weight).linearVelocity.y >= 0.0f) {
+            ++upCrossings;
+            if (firstUp < 0) firstUp = f;
+            lastUp = f;
+        }
+    }
+    const int last = t.frameCount() - 1;
+    // Gravity pulls the slider down its axis to the lower limit.
+    EXPECT_NEAR(dot(axis, t.at(last, slider).position - Vec2{-4.0f, 4.0f}), -1.0f, tolerance);
+    // The wheel turns at the motor speed and sags g/ω² = 1.6 cm on its 4 Hz suspension.
+    EXPECT_NEAR(t.at(last, wheel).angularVelocity, -5.0f, 0.05f);
+    const float omega4 = 2.0f * pi * 4.0f;
+    EXPECT_NEAR(t.at(last, wheel).position.y, 1.5f - 10.0f / (omega4 * omega4), 2e-3f);
+    // The motor joint brings the follower to the base's offset (1, 1), turned back to angle 0.
+    EXPECT_NEAR(distance(t.at(last, follower).position, {11.0f, 1.0f}), 0.0f, 0.01f);
+    EXPECT_NEAR(t.at(last, follower).angle, 0.0f, 0.01f);
+    // The 2 Hz spring (damping ratio 0.1): period 1/(2 sqrt(1 - 0.01)) = 0.5025 s, within 5%; rest at
+    // length 1.2 + g/ω² below the ceiling.
+    ASSERT_GE(upCrossings, 3);
+    const float period = float(lastUp - firstUp) / float(upCrossings - 1) * t.timestep;
+    EXPECT_NEAR(period, 0.5025f, 0.025f);
+    const float omega2 = 2.0f * pi * 2.0f;
+    EXPECT_NEAR(t.at(last, weight).position.y, 5.0f - (1.2f + 10.0f / (omega2 * omega2)) - 0.3f, 0.01f);
+}
+
+TEST(CrosscheckBox2DScene, JointsHoldTheirConstraints) {
+    expectJointsHold(crosscheck::record(gateScene("joints"), crosscheck::Engine::Box2D), 5e-3f);
 }
 
 }  // namespace
