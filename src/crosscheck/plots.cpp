@@ -1,6 +1,6 @@
 // series.csv (per-frame aggregates both engines) + a gnuplot script for two PNGs:
 // position error over time (worst bodies and the maximum over all bodies, log scale, with the
-// tolerance drawn in) and kinetic / potential / total energy over time for each engine.
+// tolerance drawn in) and, for each engine, total and kinetic energy over time in two panels.
 #include "crosscheck/plots.hpp"
 
 #include <fcntl.h>
@@ -79,13 +79,15 @@ void writeScript(const Report& report, const std::vector<size_t>& worst, const s
         gp << ", \\\n     '' using 2:(clip($" << 4 + i << ")) skip 1 with lines title " << quoted(report.bodies[worst[i]].name);
     }
     gp << "\n\nunset arrow 1\nunset logscale y\n"
-          "set output 'energy.png'\n"
-       << "set title " << quoted(report.scene + ": energy (kinetic + potential, dynamic bodies)") << "\n"
-       << "set ylabel 'energy (J)'\n"
-       << "plot 'series.csv' using 2:" << energyColumn + 2 << " skip 1 with lines linewidth 2 linecolor rgb '#1f77b4' title 'perpdot total', \\\n"
-       << "     '' using 2:" << energyColumn << " skip 1 with lines dashtype 2 linecolor rgb '#1f77b4' title 'perpdot kinetic', \\\n"
-       << "     '' using 2:" << energyColumn + 5 << " skip 1 with lines linewidth 2 linecolor rgb '#d62728' title 'box2d total', \\\n"
-       << "     '' using 2:" << energyColumn + 3 << " skip 1 with lines dashtype 2 linecolor rgb '#d62728' title 'box2d kinetic'\n";
+          "set output 'energy.png'\nunset title\n"
+          "set multiplot layout 2,1 title " << quoted(report.scene + ": energy of the dynamic bodies (potential = -m s g . x, s = gravity scale)") << "\n"
+       << "set ylabel 'kinetic + potential (J)'\nunset xlabel\n"
+       << "plot 'series.csv' using 2:" << energyColumn + 2 << " skip 1 with lines linewidth 2 linecolor rgb '#1f77b4' title 'perpdot', \\\n"
+       << "     '' using 2:" << energyColumn + 5 << " skip 1 with lines linewidth 2 dashtype 2 linecolor rgb '#d62728' title 'box2d'\n"
+       << "set ylabel 'kinetic (J)'\nset xlabel 'time (s)'\n"
+       << "plot 'series.csv' using 2:" << energyColumn << " skip 1 with lines linewidth 2 linecolor rgb '#1f77b4' title 'perpdot', \\\n"
+       << "     '' using 2:" << energyColumn + 3 << " skip 1 with lines linewidth 2 dashtype 2 linecolor rgb '#d62728' title 'box2d'\n"
+       << "unset multiplot\n";
 }
 
 // Runs `gnuplot SCRIPT` with DIR as working directory; "" on success, otherwise why not.
