@@ -110,9 +110,10 @@ TEST(CrosscheckPhysics, TorqueFreeSpinConservesMomentaAndEnergy) {
 }
 
 // Coulomb friction μ g decelerates the block to rest after v²/(2 μ g) = 3.125 m. Box2D 2.4 moves each
-// step with the end-of-step velocity (semi-implicit Euler: h Σ v_k, 3.083 m); perpdot applies the
-// friction impulse over 4 substeps and moves with their mean velocity, 3/8 of a step's Δv = μ g h
-// closer to the start velocity: the engines differ by (3/8) μ g h t_stop = 0.031 m.
+// step with the end-of-step velocity (semi-implicit Euler: h Σ v_k, 3.083 m). perpdot gives a body in
+// contact its gravity, and so the contact impulses, in 4 substeps and moves it with each substep's
+// velocity: Σ (h/4)(v + k Δv/4) = h (v + (5/8) Δv) against Box2D's h (v + Δv), so for a steady
+// acceleration a the engines drift apart by (3/8) a h per unit time: (3/8) μ g h t_stop = 0.031 m.
 TEST(CrosscheckPhysics, SlidingBlockStopsWhereCoulombFrictionSays) {
     const Scene scene = gateScene("box_slide");
     const Report r = crosscheck::run(scene, options(1e-2f, 1e-2f, true));
@@ -146,7 +147,8 @@ TEST(CrosscheckPhysics, BounceReboundsWithRestitutionAndComesToRest) {
     }
 }
 
-// Rolling without slipping down a slope of angle α: s = ½ (2/3) g sin α t² along the slope.
+// Rolling without slipping down a slope of angle α: s = ½ (2/3) g sin α t² along the slope, and the
+// engines differ by the (3/8) a h t of the sliding block above.
 TEST(CrosscheckPhysics, DiscRollsWithTwoThirdsOfGSinAlpha) {
     const Scene scene = gateScene("disc_slope");
     const Report r = crosscheck::run(scene, options(1e-2f, 1e-2f, true));
@@ -158,6 +160,10 @@ TEST(CrosscheckPhysics, DiscRollsWithTwoThirdsOfGSinAlpha) {
         EXPECT_NEAR(travelled, s, 0.03f * s);
         EXPECT_NEAR(end.angularVelocity * 0.5f, -length(end.linearVelocity), 0.02f * length(end.linearVelocity));
     }
+    const float a = (2.0f / 3.0f) * 10.0f * std::sin(alpha);
+    const float perpdotTravel = distance(r.perpdotTrajectory.at(r.steps, 0).position, scene.bodies[1].position);
+    const float box2dTravel = distance(r.box2dTrajectory.at(r.steps, 0).position, scene.bodies[1].position);
+    EXPECT_NEAR(box2dTravel - perpdotTravel, 0.375f * a * scene.timestep * t, 5e-3f);
 }
 
 // A stack set up at Box2D's rest spacing: the solvers take different paths (the report says from
