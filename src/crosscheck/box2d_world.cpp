@@ -267,7 +267,7 @@ Box2DScene::Box2DScene(const Scene& scene)
         const std::string where = "joints[" + std::to_string(i) + "]";
         b2Body* a = bodies_[index(j.bodyA, where + ".body_a")];
         b2Body* b = bodies_[index(j.bodyB, where + ".body_b")];
-        joints_.push_back(createJoint(*world_, j, a, b));
+        createJoint(*world_, j, a, b);
     }
     for (size_t i = 0; i < scene_.actions.size(); ++i) {
         actionBodies_.push_back(bodies_[index(scene_.actions[i].body, "actions[" + std::to_string(i) + "].body")]);

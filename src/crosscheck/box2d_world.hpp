@@ -22,8 +22,6 @@ public:
     int stepIndex() const { return stepIndex_; }
 
     const Scene& scene() const { return scene_; }
-    b2World& world() { return *world_; }
-    const b2World& world() const { return *world_; }
     b2Body* body(int sceneIndex) const { return bodies_[size_t(sceneIndex)]; }
 
     // Contacts whose manifolds touch, sensors excluded (what perpdot's World::contactCount() counts).
@@ -35,7 +33,6 @@ private:
     Scene scene_;
     std::unique_ptr<b2World> world_;  // bodies keep pointers to it: never moved
     std::vector<b2Body*> bodies_;
-    std::vector<b2Joint*> joints_;
     std::vector<b2Body*> actionBodies_;  // actions[i] acts on actionBodies_[i]
     int stepIndex_ = 0;
 };
