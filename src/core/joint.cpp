@@ -1,42 +1,318 @@
-// Placeholder joint store until the joint rows land: no joints can be created yet.
+// The joint store and the World's joint API: creation and destruction with generational ids,
+// per-body joint lists (for collideConnected and destroyBody), and the solver stages, which
+// dispatch to the joint types (joint_<type>.cpp) by switch.
+#include <cmath>
+#include <string>
+
+#include "core/joint_rows.hpp"
 #include "core/world_impl.hpp"
 
 namespace perpdot {
 
-struct JointStore {};
 void JointStoreDeleter::operator()(JointStore* store) const { delete store; }
 JointStorePtr makeJointStore() { return JointStorePtr(new JointStore); }
 
-void prepareJoints(World::Impl&, const StepContext&) {}
-void warmStartJoints(World::Impl&, const StepContext&) {}
-void solveJoints(World::Impl&, const StepContext&, bool) {}
-void storeJointImpulses(World::Impl&, const StepContext&) {}
-bool jointAllowsCollision(const World::Impl&, int, int) { return true; }
-void destroyJointsOf(World::Impl&, int) {}
-void forEachJointPair(const World::Impl&, void (*)(void*, int, int), void*) {}
+void requireFinite(bool ok, const char* what) {
+    if (!ok) throw Error(std::string(what) + " must be finite");
+}
 
 namespace {
-[[noreturn]] void notYet() { throw Error("joints are not implemented yet"); }
+
+JointStore& store(World::Impl& w) { return *w.joints; }
+const JointStore& store(const World::Impl& w) { return *w.joints; }
+
+int& headOf(JointStore& s, int body) {
+    if (static_cast<size_t>(body) >= s.bodyHead.size()) s.bodyHead.resize(body + 1, -1);
+    return s.bodyHead[body];
+}
+
+int headOf(const JointStore& s, int body) {
+    return static_cast<size_t>(body) < s.bodyHead.size() ? s.bodyHead[body] : -1;
+}
+
+// Edge key (joint*2 + side) -> the joint's edge in that body's list.
+JointEdge& edgeOf(JointStore& s, int key) { return s.joints[key >> 1].edges[key & 1]; }
+
+void linkEdge(JointStore& s, int joint, int side, int body) {
+    const int key = 2 * joint + side;
+    int& head = headOf(s, body);
+    JointEdge& e = edgeOf(s, key);
+    e.prev = -1;
+    e.next = head;
+    if (head >= 0) edgeOf(s, head).prev = key;
+    head = key;
+}
+
+void unlinkEdge(JointStore& s, int joint, int side, int body) {
+    JointEdge& e = edgeOf(s, 2 * joint + side);
+    if (e.prev >= 0) edgeOf(s, e.prev).next = e.next;
+    else headOf(s, body) = e.next;
+    if (e.next >= 0) edgeOf(s, e.next).prev = e.prev;
+    e = {};
+}
+
+// A joint that forbids collision between its bodies removes their contacts.
+void destroyContactsBetween(World::Impl& w, int bodyA, int bodyB) {
+    for (int edge = w.bodies[bodyA].contactHead; edge >= 0;) {
+        const int index = edge >> 1;
+        const int next = w.contacts[index].edges[edge & 1].next;
+        const Contact& c = w.contacts[index];
+        if ((c.bodyA == bodyA && c.bodyB == bodyB) || (c.bodyA == bodyB && c.bodyB == bodyA)) w.destroyContact(index);
+        edge = next;
+    }
+}
+
+void removeJoint(World::Impl& w, int index) {
+    JointStore& s = store(w);
+    Joint& j = s.joints[index];
+    unlinkEdge(s, index, 0, j.bodyA);
+    unlinkEdge(s, index, 1, j.bodyB);
+    Body& a = w.bodies[j.bodyA];
+    Body& b = w.bodies[j.bodyB];
+    --a.jointCount;
+    --b.jointCount;
+    w.wake(j.bodyA);
+    w.wake(j.bodyB);
+    // The broadphase skipped this pair while the joint forbade it: let it look again.
+    if (!j.collideConnected)
+        for (int shape : b.shapes)
+            for (int proxy : w.shapes[shape].proxies) w.movedProxies.push_back(proxy);
+    j.alive = false;
+    ++j.generation;
+    s.freeList.push_back(index);
+}
+
+Joint& checkedJoint(const World::Impl& w, JointId id) {
+    const JointStore& s = store(w);
+    if (id.index < 0 || static_cast<size_t>(id.index) >= s.joints.size() || !s.joints[id.index].alive ||
+        s.joints[id.index].generation != id.generation)
+        throw Error("stale or invalid JointId (index " + std::to_string(id.index) + ", generation " +
+                    std::to_string(id.generation) + ")");
+    return const_cast<Joint&>(s.joints[id.index]);
+}
+
+JointPair pairOf(World::Impl& w, const Joint& j) {
+    std::vector<BodyState>& states = w.states;
+    return {states[j.indexA], states[j.indexB], j.mass, w.stepRotation[j.indexB] - w.stepRotation[j.indexA]};
+}
+
+JointReaction reactionOf(const Joint& j) {
+    switch (j.type) {
+        case JointType::Revolute: return reactionRevolute(j);
+        case JointType::Prismatic: return reactionPrismatic(j);
+        case JointType::Distance: return reactionDistance(j);
+        case JointType::Weld: return reactionWeld(j);
+        case JointType::Wheel: return reactionWheel(j);
+        case JointType::Motor: return reactionMotor(j);
+        case JointType::Mouse: return reactionMouse(j);
+    }
+    return {};
+}
+
 }  // namespace
 
-JointId World::createJoint(const RevoluteJointDef&) { notYet(); }
-JointId World::createJoint(const PrismaticJointDef&) { notYet(); }
-JointId World::createJoint(const DistanceJointDef&) { notYet(); }
-JointId World::createJoint(const WeldJointDef&) { notYet(); }
-JointId World::createJoint(const WheelJointDef&) { notYet(); }
-JointId World::createJoint(const MotorJointDef&) { notYet(); }
-JointId World::createJoint(const MouseJointDef&) { notYet(); }
-void World::destroyJoint(JointId) { notYet(); }
-bool World::isValid(JointId) const { return false; }
-std::vector<JointId> World::joints() const { return {}; }
-JointType World::jointType(JointId) const { notYet(); }
-BodyId World::jointBodyA(JointId) const { notYet(); }
-BodyId World::jointBodyB(JointId) const { notYet(); }
-Vec2 World::jointAnchorA(JointId) const { notYet(); }
-Vec2 World::jointAnchorB(JointId) const { notYet(); }
-Vec2 World::jointReactionForce(JointId) const { notYet(); }
-float World::jointReactionTorque(JointId) const { notYet(); }
-void World::setMouseTarget(JointId, Vec2) { notYet(); }
-void World::setMotorSpeed(JointId, float) { notYet(); }
+Joint& addJoint(World::Impl& w, JointType type, BodyId bodyA, BodyId bodyB, Vec2 localAnchorA, Vec2 localAnchorB,
+                float referenceAngle, bool collideConnected, void* userData) {
+    w.checkUnlocked("createJoint");
+    w.body(bodyA);
+    w.body(bodyB);
+    if (bodyA.index == bodyB.index) throw Error("a joint needs two different bodies");
+    requireFinite(isFinite(localAnchorA) && isFinite(localAnchorB), "joint anchors");
+    requireFinite(std::isfinite(referenceAngle), "referenceAngle");
+
+    JointStore& s = store(w);
+    int index;
+    if (!s.freeList.empty()) {
+        index = s.freeList.back();
+        s.freeList.pop_back();
+    } else {
+        index = static_cast<int>(s.joints.size());
+        s.joints.emplace_back();
+    }
+    Joint& j = s.joints[index];
+    const uint32_t generation = j.generation;
+    j = Joint{};
+    j.generation = generation;
+    j.alive = true;
+    j.type = type;
+    j.bodyA = bodyA.index;
+    j.bodyB = bodyB.index;
+    j.localAnchorA = localAnchorA;
+    j.localAnchorB = localAnchorB;
+    j.referenceAngle = referenceAngle;
+    j.collideConnected = collideConnected;
+    j.userData = userData;
+    linkEdge(s, index, 0, j.bodyA);
+    linkEdge(s, index, 1, j.bodyB);
+    ++w.bodies[j.bodyA].jointCount;
+    ++w.bodies[j.bodyB].jointCount;
+    if (!collideConnected) destroyContactsBetween(w, j.bodyA, j.bodyB);
+    w.wake(j.bodyA);
+    w.wake(j.bodyB);
+    return j;
+}
+
+JointId jointId(const World::Impl& w, const Joint& joint) {
+    return {static_cast<int32_t>(&joint - store(w).joints.data()), joint.generation};
+}
+
+// --- Solver stages ---
+
+void prepareJoints(World::Impl& w, const StepContext& ctx) {
+    JointStore& s = store(w);
+    s.active.clear();
+    s.invHs = ctx.invHs;
+    for (int index = 0; index < static_cast<int>(s.joints.size()); ++index) {
+        Joint& j = s.joints[index];
+        if (!j.alive) continue;
+        const Body& a = w.bodies[j.bodyA];
+        const Body& b = w.bodies[j.bodyB];
+        if (a.solverIndex == 0 && b.solverIndex == 0) continue;  // both static or asleep
+        j.indexA = a.solverIndex;
+        j.indexB = b.solverIndex;
+        // A body outside the solver (static, or held asleep) is immovable for this step.
+        j.mass = {a.solverIndex ? a.invMass : 0.0f, a.solverIndex ? a.invInertia : 0.0f,
+                  b.solverIndex ? b.invMass : 0.0f, b.solverIndex ? b.invInertia : 0.0f};
+        j.anchorA = rotate(a.xf.q, j.localAnchorA - a.localCenter);
+        j.anchorB = rotate(b.xf.q, j.localAnchorB - b.localCenter);
+        j.deltaCenter = b.center - a.center;
+        j.deltaAngle = b.angle - a.angle - j.referenceAngle;
+        switch (j.type) {
+            case JointType::Revolute: prepareRevolute(j, ctx, a.xf.q); break;
+            case JointType::Prismatic: preparePrismatic(j, ctx, a.xf.q); break;
+            case JointType::Distance: prepareDistance(j, ctx, a.xf.q); break;
+            case JointType::Weld: prepareWeld(j, ctx, a.xf.q); break;
+            case JointType::Wheel: prepareWheel(j, ctx, a.xf.q); break;
+            case JointType::Motor: prepareMotor(j, ctx, a.xf.q); break;
+            case JointType::Mouse: prepareMouse(j, ctx, a.xf.q); break;
+        }
+        s.active.push_back(index);
+    }
+}
+
+// Every substep begins by re-applying the accumulated impulses (Box2D v3's soft step).
+void warmStartJoints(World::Impl& w, const StepContext&) {
+    JointStore& s = store(w);
+    for (int index : s.active) {
+        Joint& j = s.joints[index];
+        JointPair p = pairOf(w, j);
+        switch (j.type) {
+            case JointType::Revolute: warmStartRevolute(j, p); break;
+            case JointType::Prismatic: warmStartPrismatic(j, p); break;
+            case JointType::Distance: warmStartDistance(j, p); break;
+            case JointType::Weld: warmStartWeld(j, p); break;
+            case JointType::Wheel: warmStartWheel(j, p); break;
+            case JointType::Motor: warmStartMotor(j, p); break;
+            case JointType::Mouse: warmStartMouse(j, p); break;
+        }
+    }
+}
+
+void solveJoints(World::Impl& w, const StepContext& ctx, bool useBias) {
+    JointStore& s = store(w);
+    for (int index : s.active) {
+        Joint& j = s.joints[index];
+        JointPair p = pairOf(w, j);
+        switch (j.type) {
+            case JointType::Revolute: solveRevolute(j, p, ctx, useBias); break;
+            case JointType::Prismatic: solvePrismatic(j, p, ctx, useBias); break;
+            case JointType::Distance: solveDistance(j, p, ctx, useBias); break;
+            case JointType::Weld: solveWeld(j, p, ctx, useBias); break;
+            case JointType::Wheel: solveWheel(j, p, ctx, useBias); break;
+            case JointType::Motor: solveMotor(j, p, ctx, useBias); break;
+            case JointType::Mouse: solveMouse(j, p, ctx, useBias); break;
+        }
+    }
+}
+
+// The accumulated impulses live in the joints themselves, ready for the next step's warm start.
+void storeJointImpulses(World::Impl&, const StepContext&) {}
+
+bool jointAllowsCollision(const World::Impl& w, int bodyA, int bodyB) {
+    if (w.bodies[bodyA].jointCount == 0 || w.bodies[bodyB].jointCount == 0) return true;
+    const JointStore& s = store(w);
+    if (w.bodies[bodyB].jointCount < w.bodies[bodyA].jointCount) std::swap(bodyA, bodyB);
+    for (int key = headOf(s, bodyA); key >= 0; key = s.joints[key >> 1].edges[key & 1].next) {
+        const Joint& j = s.joints[key >> 1];
+        const int other = (key & 1) ? j.bodyA : j.bodyB;
+        if (other == bodyB && !j.collideConnected) return false;
+    }
+    return true;
+}
+
+void destroyJointsOf(World::Impl& w, int body) {
+    JointStore& s = store(w);
+    while (headOf(s, body) >= 0) removeJoint(w, headOf(s, body) >> 1);
+}
+
+void forEachJointPair(const World::Impl& w, void (*visit)(void* context, int bodyA, int bodyB), void* context) {
+    for (const Joint& j : store(w).joints)
+        if (j.alive) visit(context, j.bodyA, j.bodyB);
+}
+
+// --- World API ---
+
+void World::destroyJoint(JointId id) {
+    impl_->checkUnlocked("destroyJoint");
+    checkedJoint(*impl_, id);
+    removeJoint(*impl_, id.index);
+}
+
+bool World::isValid(JointId id) const {
+    const JointStore& s = store(*impl_);
+    return id.index >= 0 && static_cast<size_t>(id.index) < s.joints.size() && s.joints[id.index].alive &&
+           s.joints[id.index].generation == id.generation;
+}
+
+std::vector<JointId> World::joints() const {
+    std::vector<JointId> ids;
+    for (const Joint& j : store(*impl_).joints)
+        if (j.alive) ids.push_back(jointId(*impl_, j));
+    return ids;
+}
+
+JointType World::jointType(JointId id) const { return checkedJoint(*impl_, id).type; }
+BodyId World::jointBodyA(JointId id) const { return impl_->bodyId(checkedJoint(*impl_, id).bodyA); }
+BodyId World::jointBodyB(JointId id) const { return impl_->bodyId(checkedJoint(*impl_, id).bodyB); }
+
+Vec2 World::jointAnchorA(JointId id) const {
+    const Joint& j = checkedJoint(*impl_, id);
+    return transformPoint(impl_->bodies[j.bodyA].xf, j.localAnchorA);
+}
+
+Vec2 World::jointAnchorB(JointId id) const {
+    const Joint& j = checkedJoint(*impl_, id);
+    return transformPoint(impl_->bodies[j.bodyB].xf, j.localAnchorB);
+}
+
+// The accumulated impulse is what every substep applies, so force = λ / hs (Box2D v3).
+Vec2 World::jointReactionForce(JointId id) const {
+    return store(*impl_).invHs * reactionOf(checkedJoint(*impl_, id)).linear;
+}
+
+float World::jointReactionTorque(JointId id) const {
+    return store(*impl_).invHs * reactionOf(checkedJoint(*impl_, id)).angular;
+}
+
+void World::setMouseTarget(JointId id, Vec2 target) {
+    Joint& j = checkedJoint(*impl_, id);
+    if (j.type != JointType::Mouse) throw Error("setMouseTarget: not a mouse joint");
+    requireFinite(isFinite(target), "setMouseTarget: target");
+    j.localAnchorA = invTransformPoint(impl_->bodies[j.bodyA].xf, target);
+    impl_->wake(j.bodyB);
+}
+
+void World::setMotorSpeed(JointId id, float speed) {
+    Joint& j = checkedJoint(*impl_, id);
+    requireFinite(std::isfinite(speed), "setMotorSpeed: speed");
+    switch (j.type) {
+        case JointType::Revolute: j.data.revolute.motorSpeed = speed; break;
+        case JointType::Prismatic: j.data.prismatic.motorSpeed = speed; break;
+        case JointType::Wheel: j.data.wheel.motorSpeed = speed; break;
+        default: throw Error("setMotorSpeed: only revolute, prismatic and wheel joints have motors");
+    }
+    impl_->wake(j.bodyA);
+    impl_->wake(j.bodyB);
+}
 
 }  // namespace perpdot

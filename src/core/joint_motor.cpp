@@ -1,0 +1,54 @@
+// Motor joint: drives B's origin to the point `linearOffset` of A's frame and θB − θA to
+// `angularOffset`, each at the speed correctionFactor·C/hs, with impulses capped by maxForce·hs
+// and maxTorque·hs. Rows: the point rows and the angular row of the weld, used as motors.
+#include <cmath>
+#include <memory>
+
+#include "core/joint_rows.hpp"
+#include "core/world_impl.hpp"
+
+namespace perpdot {
+
+JointId World::createJoint(const MotorJointDef& def) {
+    requireFinite(isFinite(def.linearOffset) && std::isfinite(def.angularOffset), "MotorJointDef offsets");
+    requireFinite(std::isfinite(def.maxForce) && std::isfinite(def.maxTorque) && std::isfinite(def.correctionFactor),
+                  "MotorJointDef limits");
+    if (def.maxForce < 0.0f || def.maxTorque < 0.0f) throw Error("MotorJointDef: maxForce and maxTorque must be >= 0");
+    if (def.correctionFactor < 0.0f || def.correctionFactor > 1.0f) throw Error("MotorJointDef.correctionFactor must be in [0, 1]");
+    // Anchor A is the target point in A's frame, anchor B is B's origin.
+    Joint& j = addJoint(*impl_, JointType::Motor, def.bodyA, def.bodyB, def.linearOffset, {}, def.angularOffset,
+                        def.collideConnected, def.userData);
+    MotorJoint& s = *std::construct_at(&j.data.motor);
+    s.maxForce = def.maxForce;
+    s.maxTorque = def.maxTorque;
+    s.correctionFactor = def.correctionFactor;
+    return jointId(*impl_, j);
+}
+
+void prepareMotor(Joint& j, const StepContext& ctx, Rot) {
+    MotorJoint& s = j.data.motor;
+    s.axialMass = effectiveMass(j.mass, angularRow);
+    if (!ctx.enableWarmStarting) {
+        s.linearImpulse = {};
+        s.angularImpulse = 0.0f;
+    }
+}
+
+void warmStartMotor(Joint& j, JointPair& p) {
+    const MotorJoint& s = j.data.motor;
+    const JointFrame f = currentFrame(j, p);
+    applyPoint(p, f.rA, f.rB, s.linearImpulse);
+    applyRow(p, angularRow, s.angularImpulse);
+}
+
+void solveMotor(Joint& j, JointPair& p, const StepContext& ctx, bool) {
+    MotorJoint& s = j.data.motor;
+    const float rate = s.correctionFactor * ctx.invHs;
+    solveMotorRow(p, angularRow, s.axialMass, -rate * currentAngle(j, p), s.maxTorque * ctx.hs, s.angularImpulse);
+    const JointFrame f = currentFrame(j, p);
+    solvePointRows(p, f.rA, f.rB, f.d, Softness{.biasRate = rate}, s.linearImpulse, s.maxForce * ctx.hs);
+}
+
+JointReaction reactionMotor(const Joint& j) { return {j.data.motor.linearImpulse, j.data.motor.angularImpulse}; }
+
+}  // namespace perpdot

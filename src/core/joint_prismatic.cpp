@@ -1,0 +1,84 @@
+// Prismatic joint: B slides along an axis fixed in A. A block of two rows holds the anchor on
+// the line (row along perp(axis)) and the relative angle; along the axis there is an optional
+// motor row and two one-sided limit rows. The axis rows use A's arm to B's anchor, rA + d.
+#include <cmath>
+#include <memory>
+
+#include "core/joint_rows.hpp"
+#include "core/world_impl.hpp"
+
+namespace perpdot {
+
+JointId World::createJoint(const PrismaticJointDef& def) {
+    requireFinite(isFinite(def.localAxisA), "PrismaticJointDef.localAxisA");
+    requireFinite(std::isfinite(def.lower) && std::isfinite(def.upper), "PrismaticJointDef limits");
+    requireFinite(std::isfinite(def.motorSpeed) && std::isfinite(def.maxMotorForce), "PrismaticJointDef motor");
+    if (lengthSquared(def.localAxisA) == 0.0f) throw Error("PrismaticJointDef.localAxisA must not be zero");
+    if (def.lower > def.upper) throw Error("PrismaticJointDef: lower must be <= upper");
+    if (def.maxMotorForce < 0.0f) throw Error("PrismaticJointDef.maxMotorForce must be >= 0");
+    Joint& j = addJoint(*impl_, JointType::Prismatic, def.bodyA, def.bodyB, def.localAnchorA, def.localAnchorB,
+                        def.referenceAngle, def.collideConnected, def.userData);
+    PrismaticJoint& s = *std::construct_at(&j.data.prismatic);
+    s.localAxisA = normalize(def.localAxisA);
+    s.enableLimit = def.enableLimit;
+    s.lower = def.lower;
+    s.upper = def.upper;
+    s.enableMotor = def.enableMotor;
+    s.motorSpeed = def.motorSpeed;
+    s.maxMotorForce = def.maxMotorForce;
+    return jointId(*impl_, j);
+}
+
+void preparePrismatic(Joint& j, const StepContext& ctx, Rot qA) {
+    PrismaticJoint& s = j.data.prismatic;
+    s.axisA = rotate(qA, s.localAxisA);
+    const Vec2 d = j.deltaCenter + j.anchorB - j.anchorA;
+    s.axialMass = effectiveMass(j.mass, linearRow(j.anchorA + d, j.anchorB, s.axisA));
+    if (!ctx.enableWarmStarting) {
+        s.impulse = {};
+        s.motorImpulse = s.lowerImpulse = s.upperImpulse = 0.0f;
+    }
+}
+
+namespace {
+
+struct SliderRows {
+    Row axial, perpendicular;
+    float translation, offset;  // along the axis, and off it
+};
+
+SliderRows sliderRows(const Joint& j, const JointPair& p) {
+    const JointFrame f = currentFrame(j, p);
+    const Vec2 axis = rotate(p.a.dq, j.data.prismatic.axisA);
+    return {linearRow(f.rA + f.d, f.rB, axis), linearRow(f.rA + f.d, f.rB, perp(axis)), dot(axis, f.d),
+            dot(perp(axis), f.d)};
+}
+
+}  // namespace
+
+void warmStartPrismatic(Joint& j, JointPair& p) {
+    const PrismaticJoint& s = j.data.prismatic;
+    const SliderRows rows = sliderRows(j, p);
+    applyRow(p, rows.axial, s.motorImpulse + s.lowerImpulse - s.upperImpulse);
+    applyRow(p, rows.perpendicular, s.impulse.x);
+    applyRow(p, angularRow, s.impulse.y);
+}
+
+void solvePrismatic(Joint& j, JointPair& p, const StepContext& ctx, bool useBias) {
+    PrismaticJoint& s = j.data.prismatic;
+    const SliderRows rows = sliderRows(j, p);
+    if (s.enableMotor) solveMotorRow(p, rows.axial, s.axialMass, s.motorSpeed, s.maxMotorForce * ctx.hs, s.motorImpulse);
+    if (s.enableLimit) {
+        solveLimitRow(p, rows.axial, s.axialMass, rows.translation - s.lower, ctx, useBias, s.lowerImpulse);
+        solveLimitRow(p, negated(rows.axial), s.axialMass, s.upper - rows.translation, ctx, useBias, s.upperImpulse);
+    }
+    solveRowPair(p, rows.perpendicular, angularRow, {rows.offset, currentAngle(j, p)}, rigidSoftness(ctx, useBias),
+                 s.impulse);
+}
+
+JointReaction reactionPrismatic(const Joint& j) {
+    const PrismaticJoint& s = j.data.prismatic;
+    return {(s.motorImpulse + s.lowerImpulse - s.upperImpulse) * s.axisA + s.impulse.x * perp(s.axisA), s.impulse.y};
+}
+
+}  // namespace perpdot

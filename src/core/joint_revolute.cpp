@@ -1,0 +1,63 @@
+// Revolute joint: B's anchor held on A's by two point rows (the 2x2 K of joint_rows.hpp), plus
+// on the angle θB − θA − θref an optional motor row and two one-sided limit rows, each with
+// effective mass 1/(1/IA + 1/IB).
+#include <cmath>
+#include <memory>
+
+#include "core/joint_rows.hpp"
+#include "core/world_impl.hpp"
+
+namespace perpdot {
+
+JointId World::createJoint(const RevoluteJointDef& def) {
+    requireFinite(std::isfinite(def.lowerAngle) && std::isfinite(def.upperAngle), "RevoluteJointDef limits");
+    requireFinite(std::isfinite(def.motorSpeed) && std::isfinite(def.maxMotorTorque), "RevoluteJointDef motor");
+    if (def.lowerAngle > def.upperAngle) throw Error("RevoluteJointDef: lowerAngle must be <= upperAngle");
+    if (def.maxMotorTorque < 0.0f) throw Error("RevoluteJointDef.maxMotorTorque must be >= 0");
+    Joint& j = addJoint(*impl_, JointType::Revolute, def.bodyA, def.bodyB, def.localAnchorA, def.localAnchorB,
+                        def.referenceAngle, def.collideConnected, def.userData);
+    RevoluteJoint& r = *std::construct_at(&j.data.revolute);
+    r.enableLimit = def.enableLimit;
+    r.lowerAngle = def.lowerAngle;
+    r.upperAngle = def.upperAngle;
+    r.enableMotor = def.enableMotor;
+    r.motorSpeed = def.motorSpeed;
+    r.maxMotorTorque = def.maxMotorTorque;
+    return jointId(*impl_, j);
+}
+
+void prepareRevolute(Joint& j, const StepContext& ctx, Rot) {
+    RevoluteJoint& r = j.data.revolute;
+    r.axialMass = effectiveMass(j.mass, angularRow);
+    if (!ctx.enableWarmStarting) {
+        r.linearImpulse = {};
+        r.motorImpulse = r.lowerImpulse = r.upperImpulse = 0.0f;
+    }
+}
+
+void warmStartRevolute(Joint& j, JointPair& p) {
+    const RevoluteJoint& r = j.data.revolute;
+    const JointFrame f = currentFrame(j, p);
+    applyPoint(p, f.rA, f.rB, r.linearImpulse);
+    applyRow(p, angularRow, r.motorImpulse + r.lowerImpulse - r.upperImpulse);
+}
+
+void solveRevolute(Joint& j, JointPair& p, const StepContext& ctx, bool useBias) {
+    RevoluteJoint& r = j.data.revolute;
+    if (r.enableMotor) solveMotorRow(p, angularRow, r.axialMass, r.motorSpeed, r.maxMotorTorque * ctx.hs, r.motorImpulse);
+    if (r.enableLimit) {
+        const float angle = currentAngle(j, p);
+        solveLimitRow(p, angularRow, r.axialMass, angle - r.lowerAngle, ctx, useBias, r.lowerImpulse);
+        solveLimitRow(p, negated(angularRow), r.axialMass, r.upperAngle - angle, ctx, useBias, r.upperImpulse);
+    }
+    // Solved last so that the point, the stiffest part, wins.
+    const JointFrame f = currentFrame(j, p);
+    solvePointRows(p, f.rA, f.rB, f.d, rigidSoftness(ctx, useBias), r.linearImpulse);
+}
+
+JointReaction reactionRevolute(const Joint& j) {
+    const RevoluteJoint& r = j.data.revolute;
+    return {r.linearImpulse, r.motorImpulse + r.lowerImpulse - r.upperImpulse};
+}
+
+}  // namespace perpdot

@@ -1,0 +1,169 @@
+// The joint store: one contiguous std::vector<Joint> with a free list and generations, and the
+// per-type entry points that joint.cpp dispatches to by switch (no virtual calls in the solve).
+//
+// A Joint is plain data (trivially copyable): the user's definition, the per-step solver
+// values written by prepare, and the accumulated impulses kept for warm starting.
+#pragma once
+
+#include <memory>
+#include <type_traits>
+#include <vector>
+
+#include "core/joint.hpp"
+#include "core/softness.hpp"
+#include "core/step_context.hpp"
+
+namespace perpdot {
+
+// Inverse masses and inverse rotational inertias of the joint's two bodies.
+struct JointMass {
+    float mA = 0, iA = 0, mB = 0, iB = 0;
+};
+
+// The two bodies of a joint inside one substep.
+struct JointPair {
+    BodyState& a;
+    BodyState& b;
+    JointMass m;
+    float rotation = 0;  // (θB − θA) turned since the step began
+};
+
+struct RevoluteJoint {
+    bool enableLimit = false, enableMotor = false;
+    float lowerAngle = 0, upperAngle = 0;
+    float motorSpeed = 0, maxMotorTorque = 0;
+    float axialMass = 0;  // 1 / (1/IA + 1/IB)
+    Vec2 linearImpulse;   // point rows
+    float motorImpulse = 0, lowerImpulse = 0, upperImpulse = 0;
+};
+
+struct PrismaticJoint {
+    Vec2 localAxisA;
+    bool enableLimit = false, enableMotor = false;
+    float lower = 0, upper = 0;
+    float motorSpeed = 0, maxMotorForce = 0;
+    Vec2 axisA;           // world axis at step start
+    float axialMass = 0;  // of the row along the axis
+    Vec2 impulse;         // (perpendicular, angular) rows
+    float motorImpulse = 0, lowerImpulse = 0, upperImpulse = 0;
+};
+
+struct DistanceJoint {
+    float length = 1, minLength = 0, maxLength = 0;
+    float hertz = 0, dampingRatio = 0;
+    Softness spring;
+    Vec2 axis;            // B's anchor from A's, unit, at step start
+    float axialMass = 0;
+    float impulse = 0, lowerImpulse = 0, upperImpulse = 0;
+};
+
+struct WeldJoint {
+    float hertz = 0, dampingRatio = 0;  // soft in the angle only, like Box2D 2.4's weld
+    Softness angularSoftness;
+    float axialMass = 0;
+    Vec2 linearImpulse;
+    float angularImpulse = 0;
+};
+
+struct WheelJoint {
+    Vec2 localAxisA;
+    float hertz = 0, dampingRatio = 0;  // 0 hertz: rigid suspension
+    bool enableMotor = false;
+    float motorSpeed = 0, maxMotorTorque = 0;
+    Softness spring;
+    Vec2 axisA;
+    float axialMass = 0, motorMass = 0;
+    float perpImpulse = 0, springImpulse = 0, motorImpulse = 0;
+};
+
+struct MotorJoint {
+    float maxForce = 0, maxTorque = 0, correctionFactor = 0;
+    float axialMass = 0;
+    Vec2 linearImpulse;
+    float angularImpulse = 0;
+};
+
+// The target is anchor A (fixed in the world during a step: A is meant to be static).
+struct MouseJoint {
+    float hertz = 0, dampingRatio = 0, maxForce = 0;
+    Softness softness;
+    Vec2 linearImpulse;
+};
+
+// Type-specific data; `type` in the Joint says which member is live (createJoint starts its
+// lifetime with std::construct_at, value-initialised).
+union JointData {
+    RevoluteJoint revolute;
+    PrismaticJoint prismatic;
+    DistanceJoint distance;
+    WeldJoint weld;
+    WheelJoint wheel;
+    MotorJoint motor;
+    MouseJoint mouse;
+    JointData() : revolute{} {}
+};
+
+struct JointEdge {
+    int prev = -1, next = -1;  // edge keys (joint*2 + side) in the body's joint list
+};
+
+struct Joint {
+    uint32_t generation = 0;
+    bool alive = false;
+    bool collideConnected = false;
+    JointType type = JointType::Revolute;
+    int bodyA = -1, bodyB = -1;
+    JointEdge edges[2];        // in bodyA's list (side 0) and bodyB's (side 1)
+    Vec2 localAnchorA, localAnchorB;  // in each body's origin frame
+    float referenceAngle = 0;  // θB − θA at zero joint angle (motor joint: angularOffset)
+    void* userData = nullptr;
+
+    // Written by prepareJoints for the step.
+    int indexA = 0, indexB = 0;  // solver slots
+    JointMass mass;
+    Vec2 anchorA, anchorB;  // rA, rB: from each centre of mass to its anchor, at step start
+    Vec2 deltaCenter;       // cB − cA at step start
+    float deltaAngle = 0;   // θB − θA − referenceAngle at step start
+
+    JointData data;
+};
+static_assert(std::is_trivially_copyable_v<Joint>, "the joint store is snapshotted bytewise");
+
+struct JointStore {
+    std::vector<Joint> joints;
+    std::vector<int> freeList;
+    std::vector<int> bodyHead;  // by body index: first edge key of its joint list, -1 if none
+    std::vector<int> active;    // joints prepared this step
+    float invHs = 0;            // of the last step, for reaction forces
+};
+
+// Impulses on B per substep, turned into force and torque by the caller (× 1/hs).
+struct JointReaction {
+    Vec2 linear;
+    float angular = 0;
+};
+
+// The common part of createJoint: checks the bodies, links the joint, wakes the bodies and,
+// unless collideConnected, removes their contacts. Returns the new joint (type data unset).
+Joint& addJoint(World::Impl& world, JointType type, BodyId bodyA, BodyId bodyB, Vec2 localAnchorA,
+                Vec2 localAnchorB, float referenceAngle, bool collideConnected, void* userData);
+JointId jointId(const World::Impl& world, const Joint& joint);
+void requireFinite(bool ok, const char* what);  // Error "<what> must be finite" unless ok
+
+// Per-type stages (joint_<type>.cpp). prepare runs after the common frame (anchors, masses,
+// deltaCenter, deltaAngle) is set; qA is body A's rotation at step start.
+#define PERPDOT_JOINT_STAGES(Name)                                                     \
+    void prepare##Name(Joint& joint, const StepContext& ctx, Rot qA);                 \
+    void warmStart##Name(Joint& joint, JointPair& pair);                               \
+    void solve##Name(Joint& joint, JointPair& pair, const StepContext& ctx, bool useBias); \
+    JointReaction reaction##Name(const Joint& joint);
+PERPDOT_JOINT_STAGES(Revolute)
+PERPDOT_JOINT_STAGES(Prismatic)
+PERPDOT_JOINT_STAGES(Distance)
+PERPDOT_JOINT_STAGES(Weld)
+PERPDOT_JOINT_STAGES(Wheel)
+PERPDOT_JOINT_STAGES(Motor)
+PERPDOT_JOINT_STAGES(Mouse)
+#undef PERPDOT_JOINT_STAGES
+
+}  // namespace perpdot

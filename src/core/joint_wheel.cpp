@@ -1,0 +1,81 @@
+// Wheel joint: B's anchor (the axle) moves along a suspension axis fixed in A and B turns freely.
+// One rigid row holds the axle on the line (along perp(axis)), a spring row acts along the axis
+// (rigid when hertz = 0), and an optional motor row drives ωB − ωA.
+#include <cmath>
+#include <memory>
+
+#include "core/joint_rows.hpp"
+#include "core/world_impl.hpp"
+
+namespace perpdot {
+
+JointId World::createJoint(const WheelJointDef& def) {
+    requireFinite(isFinite(def.localAxisA), "WheelJointDef.localAxisA");
+    requireFinite(std::isfinite(def.hertz) && std::isfinite(def.dampingRatio), "WheelJointDef spring");
+    requireFinite(std::isfinite(def.motorSpeed) && std::isfinite(def.maxMotorTorque), "WheelJointDef motor");
+    if (lengthSquared(def.localAxisA) == 0.0f) throw Error("WheelJointDef.localAxisA must not be zero");
+    if (def.hertz < 0.0f || def.dampingRatio < 0.0f) throw Error("WheelJointDef: hertz and dampingRatio must be >= 0");
+    if (def.maxMotorTorque < 0.0f) throw Error("WheelJointDef.maxMotorTorque must be >= 0");
+    Joint& j = addJoint(*impl_, JointType::Wheel, def.bodyA, def.bodyB, def.localAnchorA, def.localAnchorB, 0.0f,
+                        def.collideConnected, def.userData);
+    WheelJoint& s = *std::construct_at(&j.data.wheel);
+    s.localAxisA = normalize(def.localAxisA);
+    s.hertz = def.hertz;
+    s.dampingRatio = def.dampingRatio;
+    s.enableMotor = def.enableMotor;
+    s.motorSpeed = def.motorSpeed;
+    s.maxMotorTorque = def.maxMotorTorque;
+    return jointId(*impl_, j);
+}
+
+void prepareWheel(Joint& j, const StepContext& ctx, Rot qA) {
+    WheelJoint& s = j.data.wheel;
+    s.axisA = rotate(qA, s.localAxisA);
+    const Vec2 d = j.deltaCenter + j.anchorB - j.anchorA;
+    s.axialMass = effectiveMass(j.mass, linearRow(j.anchorA + d, j.anchorB, s.axisA));
+    s.motorMass = effectiveMass(j.mass, angularRow);
+    s.spring = makeSoftness(s.hertz, s.dampingRatio, ctx.hs);
+    if (!ctx.enableWarmStarting) s.perpImpulse = s.springImpulse = s.motorImpulse = 0.0f;
+}
+
+namespace {
+
+struct WheelRows {
+    Row axial, perpendicular;
+    float translation, offset;
+};
+
+WheelRows wheelRows(const Joint& j, const JointPair& p) {
+    const JointFrame f = currentFrame(j, p);
+    const Vec2 axis = rotate(p.a.dq, j.data.wheel.axisA);
+    return {linearRow(f.rA + f.d, f.rB, axis), linearRow(f.rA + f.d, f.rB, perp(axis)), dot(axis, f.d),
+            dot(perp(axis), f.d)};
+}
+
+}  // namespace
+
+void warmStartWheel(Joint& j, JointPair& p) {
+    const WheelJoint& s = j.data.wheel;
+    const WheelRows rows = wheelRows(j, p);
+    applyRow(p, rows.axial, s.springImpulse);
+    applyRow(p, rows.perpendicular, s.perpImpulse);
+    applyRow(p, angularRow, s.motorImpulse);
+}
+
+void solveWheel(Joint& j, JointPair& p, const StepContext& ctx, bool useBias) {
+    WheelJoint& s = j.data.wheel;
+    if (s.enableMotor) solveMotorRow(p, angularRow, s.motorMass, s.motorSpeed, s.maxMotorTorque * ctx.hs, s.motorImpulse);
+    WheelRows rows = wheelRows(j, p);
+    const Softness suspension = s.hertz > 0.0f ? s.spring : rigidSoftness(ctx, useBias);
+    solveRow(p, rows.axial, s.axialMass, rows.translation, suspension, s.springImpulse);
+    rows = wheelRows(j, p);
+    solveRow(p, rows.perpendicular, effectiveMass(p.m, rows.perpendicular), rows.offset, rigidSoftness(ctx, useBias),
+             s.perpImpulse);
+}
+
+JointReaction reactionWheel(const Joint& j) {
+    const WheelJoint& s = j.data.wheel;
+    return {s.springImpulse * s.axisA + s.perpImpulse * perp(s.axisA), s.motorImpulse};
+}
+
+}  // namespace perpdot
