@@ -13,5 +13,6 @@ namespace perpdot {
 std::vector<BuiltinScene> coreScenes();   // core_scenes.cpp: single bodies, stacks, friction, restitution
 std::vector<BuiltinScene> benchScenes();  // bench_scenes.cpp: the large scenes of the benchmarks
 std::vector<BuiltinScene> demoScenes();   // builtin_demo_scenes.cpp: showcases for the viewer (card house, dominoes, ...)
+std::vector<BuiltinScene> jointScenes();  // builtin_joint_scenes.cpp: pendulums, chain, bridge, ragdoll, car, joint grid, windmill, slider
 
 }  // namespace perpdot
