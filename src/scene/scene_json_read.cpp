@@ -65,6 +65,19 @@ public:
         if (value < 0.0f) fail(member(path_, key), "must not be negative");
         return value;
     }
+    // A number or vector no larger than `limit` in magnitude (scene_limits.hpp).
+    float bounded(std::string_view key, float fallback, float limit) const {
+        return within(number(key, fallback), limit, member(path_, key));
+    }
+    float nonNegative(std::string_view key, float fallback, float limit) const {
+        return within(nonNegative(key, fallback), limit, member(path_, key));
+    }
+    Vec2 boundedVec(std::string_view key, Vec2 fallback, float limit) const {
+        const Vec2 v = vec(key, fallback);
+        within(v.x, limit, element(member(path_, key), 0));
+        within(v.y, limit, element(member(path_, key), 1));
+        return v;
+    }
 
     Vec2 vec(std::string_view key, Vec2 fallback) const { return has(key) ? vecAt(key) : fallback; }
     Vec2 vecAt(std::string_view key) const { return toVec(required(key), member(path_, key)); }
@@ -112,9 +125,15 @@ public:
         return items;
     }
 
+    // Polygon and chain vertices, each coordinate within maxCoordinate.
     std::vector<Vec2> points(std::string_view key) const {
         std::vector<Vec2> result;
-        for (const auto& [item, path] : array(key)) result.push_back(toVec(*item, path));
+        for (const auto& [item, path] : array(key)) {
+            const Vec2 v = toVec(*item, path);
+            within(v.x, maxCoordinate, element(path, 0));
+            within(v.y, maxCoordinate, element(path, 1));
+            result.push_back(v);
+        }
         return result;
     }
 
@@ -123,6 +142,15 @@ public:
         if (!v.is_number()) fail(path, std::string("expected a number, got ") + v.type_name());
         const float value = static_cast<float>(v.get<double>());
         if (!std::isfinite(value)) fail(path, "number is not finite in single precision");
+        return value;
+    }
+
+    static float within(float value, float limit, const std::string& path) {
+        if (std::fabs(value) > limit) {
+            std::ostringstream text;
+            text << "must be at most " << limit << " in magnitude, got " << value;
+            fail(path, text.str());
+        }
         return value;
     }
 
@@ -176,22 +204,23 @@ SceneShape readShape(const Object& o) {
     switch (s.kind) {
         case SceneShape::Kind::Circle:
             o.allowOnly({"radius", "center"}, common);
-            s.radius = o.numberAt("radius");
+            s.radius = o.bounded("radius", 0.0f, maxCoordinate);
             if (s.radius <= 0.0f) fail(member(o.path(), "radius"), "must be positive");
-            s.center = o.vec("center", {});
+            s.center = o.boundedVec("center", {}, maxCoordinate);
             break;
         case SceneShape::Kind::Box:
             o.allowOnly({"half_extents", "center", "angle"}, common);
-            s.halfExtents = o.vecAt("half_extents");
+            o.required("half_extents");
+            s.halfExtents = o.boundedVec("half_extents", {}, maxCoordinate);
             if (s.halfExtents.x <= 0.0f || s.halfExtents.y <= 0.0f) fail(member(o.path(), "half_extents"), "must be positive");
-            s.center = o.vec("center", {});
+            s.center = o.boundedVec("center", {}, maxCoordinate);
             s.angle = o.number("angle", 0.0f);
             break;
         case SceneShape::Kind::Polygon:
             o.allowOnly({"vertices", "radius"}, common);
             o.required("vertices");
             s.vertices = o.points("vertices");
-            s.radius = o.nonNegative("radius", 0.0f);
+            s.radius = o.nonNegative("radius", 0.0f, maxCoordinate);
             try {
                 makePolygon(s.vertices, s.radius);  // the library's own check: 3..8 points, strictly convex
             } catch (const Error& e) {
@@ -200,8 +229,10 @@ SceneShape readShape(const Object& o) {
             break;
         case SceneShape::Kind::Segment:
             o.allowOnly({"v1", "v2"}, common);
-            s.v1 = o.vecAt("v1");
-            s.v2 = o.vecAt("v2");
+            o.required("v1");
+            o.required("v2");
+            s.v1 = o.boundedVec("v1", {}, maxCoordinate);
+            s.v2 = o.boundedVec("v2", {}, maxCoordinate);
             if (distance(s.v1, s.v2) <= minEdgeLength) fail(o.path(), "segment is degenerate (v1 == v2)");
             break;
         case SceneShape::Kind::Chain: {
@@ -219,9 +250,9 @@ SceneShape readShape(const Object& o) {
             break;
         }
     }
-    s.density = o.nonNegative("density", s.density);
-    s.friction = o.nonNegative("friction", s.friction);
-    s.restitution = o.nonNegative("restitution", s.restitution);
+    s.density = o.nonNegative("density", s.density, maxDensity);
+    s.friction = o.nonNegative("friction", s.friction, maxMaterial);
+    s.restitution = o.nonNegative("restitution", s.restitution, maxMaterial);
     s.sensor = o.boolean("sensor", s.sensor);
     if (o.has("filter")) s.filter = readFilter(Object(o.required("filter"), member(o.path(), "filter")));
     return s;
@@ -234,13 +265,13 @@ SceneBody readBody(const Object& o, size_t index) {
     b.name = o.string("name", defaultBodyName(index));
     if (b.name.empty()) fail(member(o.path(), "name"), "must not be empty");
     b.type = enumValue(o.string("type", "dynamic"), bodyTypes, member(o.path(), "type"));
-    b.position = o.vec("position", {});
-    b.angle = o.number("angle", 0.0f);
-    b.linearVelocity = o.vec("linear_velocity", {});
-    b.angularVelocity = o.number("angular_velocity", 0.0f);
-    b.linearDamping = o.nonNegative("linear_damping", 0.0f);
-    b.angularDamping = o.nonNegative("angular_damping", 0.0f);
-    b.gravityScale = o.number("gravity_scale", 1.0f);
+    b.position = o.boundedVec("position", {}, maxCoordinate);
+    b.angle = o.bounded("angle", 0.0f, maxCoordinate);
+    b.linearVelocity = o.boundedVec("linear_velocity", {}, maxSpeed);
+    b.angularVelocity = o.bounded("angular_velocity", 0.0f, maxSpeed);
+    b.linearDamping = o.nonNegative("linear_damping", 0.0f, maxMaterial);
+    b.angularDamping = o.nonNegative("angular_damping", 0.0f, maxMaterial);
+    b.gravityScale = o.bounded("gravity_scale", 1.0f, maxMaterial);
     b.fixedRotation = o.boolean("fixed_rotation", false);
     b.bullet = o.boolean("bullet", false);
     b.allowSleep = o.boolean("allow_sleep", true);
@@ -374,7 +405,7 @@ Scene readScene(const Object& o) {
     Scene s;
     s.name = o.string("name", "");
     s.description = o.string("description", "");
-    s.gravity = o.vec("gravity", s.gravity);
+    s.gravity = o.boundedVec("gravity", s.gravity, maxGravity);
     s.timestep = o.number("timestep", s.timestep);
     if (!(s.timestep > 0.0f && s.timestep <= maxTimestep))
         fail("timestep", "must be positive and at most " + std::to_string(int(maxTimestep)) + " s");
