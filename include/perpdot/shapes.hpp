@@ -15,7 +15,7 @@ inline constexpr int maxPolygonVertices = 8;
 enum class ShapeType : uint8_t { Circle, Polygon, Segment, Chain };
 
 struct Circle {
-    Vec2 center;
+    Vec2 center{};
     float radius = 0.5f;
     friend bool operator==(const Circle&, const Circle&) = default;
 };
@@ -31,8 +31,8 @@ struct Polygon {
 
 // Massless line segment (static geometry).
 struct Segment {
-    Vec2 v1;
-    Vec2 v2;
+    Vec2 v1{};
+    Vec2 v2{};
     friend bool operator==(const Segment&, const Segment&) = default;
 };
 
@@ -64,15 +64,21 @@ struct ShapeDef {
     float density = 1.0f;       // kg/m²
     float friction = 0.6f;      // Coulomb μ; mixed as sqrt(μA μB)
     float restitution = 0.0f;   // e; mixed as max(eA, eB)
-    bool sensor = false;        // reports overlaps, takes no collision response
-    Filter filter;
+    bool sensor = false;        // reports overlaps (World::sensorEvents), takes no collision response
+    float rollingResistance = 0.0f;  // angular drag; mixed as max(rA, rB)·(largest rounding radius)
+    float tangentSpeed = 0.0f;  // m/s conveyor surface, clockwise around the shape; summed A + B
+    bool enableContactEvents = true;   // begin/end touch events
+    bool enableHitEvents = false;      // hit events
+    bool enableSensorEvents = true;    // whether sensors see this shape
+    bool enablePreSolveEvents = false; // whether World's pre-solve callback sees its contacts
+    Filter filter{};
     void* userData = nullptr;
 };
 
 // Mass m, centre of mass (body frame) and scalar moment of inertia I about that centre.
 struct MassData {
     float mass = 0.0f;
-    Vec2 center;
+    Vec2 center{};
     float rotationalInertia = 0.0f;
 };
 

@@ -3,13 +3,16 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
 #include "perpdot/body.hpp"
+#include "perpdot/events.hpp"
 #include "perpdot/ids.hpp"
 #include "perpdot/joints.hpp"
 #include "perpdot/math.hpp"
+#include "perpdot/queries.hpp"
 #include "perpdot/shapes.hpp"
 
 namespace perpdot {
@@ -23,9 +26,11 @@ struct WorldDef {
     float jointDampingRatio = 2.0f;
     float contactPushMaxVelocity = 3.0f;  // m/s, cap on the speed that resolves overlap
     float restitutionThreshold = 1.0f;    // m/s, slower approaches do not bounce
-    float maxLinearSpeed = 400.0f;        // m/s, per-step clamp against blow-ups
+    float maxLinearSpeed = 1000.0f;       // m/s, clamp against blow-ups (a 500 m/s bullet must fit)
+    float hitEventThreshold = 1.0f;       // m/s, slower approaches report no ContactHitEvent
     bool enableSleep = true;
     bool enableWarmStarting = true;
+    bool enableContinuous = true;         // time of impact for fast bodies against static shapes
 };
 
 struct ContactPoint {
@@ -116,6 +121,11 @@ public:
     void setFriction(ShapeId shape, float friction);
     void setRestitution(ShapeId shape, float restitution);
     void setDensity(ShapeId shape, float density);  // recomputes the body's mass
+    float rollingResistance(ShapeId shape) const;
+    float tangentSpeed(ShapeId shape) const;
+    void setRollingResistance(ShapeId shape, float resistance);
+    void setTangentSpeed(ShapeId shape, float speed);  // conveyor belt surface speed, m/s
+    void enablePreSolveEvents(ShapeId shape, bool enable);  // ShapeDef::enablePreSolveEvents
 
     // --- joints ---
     JointId createJoint(const RevoluteJointDef& def);
@@ -141,6 +151,24 @@ public:
     // --- contacts ---
     int contactCount() const;  // touching contacts
     std::vector<ContactData> contacts() const;  // touching contacts, for drawing and inspection
+
+    // --- events (of the last step; valid until the next step) ---
+    ContactEvents contactEvents() const;
+    SensorEvents sensorEvents() const;
+    void setPreSolve(PreSolveFn callback);  // empty function: none
+
+    // --- queries ---
+    // Closest hit of the ray origin -> origin + translation, if any.
+    std::optional<RayHit> castRayClosest(Vec2 origin, Vec2 translation, const Filter& filter = {}) const;
+    // Every hit (one per shape child), ordered by fraction.
+    std::vector<RayHit> castRay(Vec2 origin, Vec2 translation, const Filter& filter = {}) const;
+    // Shapes whose tight bounds overlap `box`.
+    std::vector<ShapeId> overlapAABB(const AABB& box, const Filter& filter = {}) const;
+    // Solid shapes (circles, polygons) containing the point.
+    std::vector<ShapeId> overlapPoint(Vec2 point, const Filter& filter = {}) const;
+    // Shapes overlapping a query shape placed at `xf`.
+    std::vector<ShapeId> overlapShape(const Circle& shape, const Transform& xf, const Filter& filter = {}) const;
+    std::vector<ShapeId> overlapShape(const Polygon& shape, const Transform& xf, const Filter& filter = {}) const;
 
     // --- settings ---
     const WorldDef& settings() const;

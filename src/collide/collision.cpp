@@ -6,6 +6,10 @@
 #include <box2d/b2_dynamic_tree.h>
 #include <box2d/b2_edge_shape.h>
 #include <box2d/b2_polygon_shape.h>
+#include <box2d/b2_time_of_impact.h>
+
+#include <algorithm>
+#include <cmath>
 
 #include <cstdint>
 #include <variant>
@@ -37,6 +41,22 @@ const b2Shape& childShape(const Geometry& g, int child) {
     return std::get<b2EdgeShape>(g);
 }
 
+b2CircleShape toB2(const Circle& circle) {
+    b2CircleShape c;
+    c.m_p = toB2(circle.center);
+    c.m_radius = circle.radius;
+    return c;
+}
+
+b2PolygonShape toB2(const Polygon& polygon) {
+    b2Vec2 points[b2_maxPolygonVertices];
+    for (int i = 0; i < polygon.count; ++i) points[i] = toB2(polygon.vertices[i]);
+    b2PolygonShape p;
+    p.Set(points, polygon.count);
+    p.m_radius = polygonRadius + polygon.radius;
+    return p;
+}
+
 // Box2D's dispatch order: circle < polygon < edge.
 int rank(ShapeType t) {
     switch (t) {
@@ -63,21 +83,8 @@ struct CollisionSystem::Impl {
 CollisionSystem::CollisionSystem() : impl_(std::make_unique<Impl>()) {}
 CollisionSystem::~CollisionSystem() = default;
 
-void CollisionSystem::setGeometry(int shape, const Circle& circle) {
-    b2CircleShape c;
-    c.m_p = toB2(circle.center);
-    c.m_radius = circle.radius;
-    impl_->slot(shape) = c;
-}
-
-void CollisionSystem::setGeometry(int shape, const Polygon& polygon) {
-    b2Vec2 points[b2_maxPolygonVertices];
-    for (int i = 0; i < polygon.count; ++i) points[i] = toB2(polygon.vertices[i]);
-    b2PolygonShape p;
-    p.Set(points, polygon.count);
-    p.m_radius = polygonRadius + polygon.radius;
-    impl_->slot(shape) = p;
-}
+void CollisionSystem::setGeometry(int shape, const Circle& circle) { impl_->slot(shape) = toB2(circle); }
+void CollisionSystem::setGeometry(int shape, const Polygon& polygon) { impl_->slot(shape) = toB2(polygon); }
 
 void CollisionSystem::setGeometry(int shape, const Segment& segment) {
     b2EdgeShape e;
@@ -199,6 +206,121 @@ Manifold CollisionSystem::collide(ChildKey a, const Transform& xfA, ChildKey b, 
         out.points[i].id = m.points[i].id.key;
     }
     return out;
+}
+
+namespace {
+
+bool overlap(const b2Shape& a, const b2Transform& xfA, const b2Shape& b, const b2Transform& xfB) {
+    return b2TestOverlap(&a, 0, &b, 0, xfA, xfB);
+}
+
+}  // namespace
+
+bool CollisionSystem::testOverlap(ChildKey a, const Transform& xfA, ChildKey b, const Transform& xfB) const {
+    return overlap(childShape(impl_->geometry[a.shape], a.child), toB2(xfA), childShape(impl_->geometry[b.shape], b.child), toB2(xfB));
+}
+
+bool CollisionSystem::testOverlap(ChildKey a, const Transform& xfA, const Circle& query, const Transform& xf) const {
+    return overlap(childShape(impl_->geometry[a.shape], a.child), toB2(xfA), toB2(query), toB2(xf));
+}
+
+bool CollisionSystem::testOverlap(ChildKey a, const Transform& xfA, const Polygon& query, const Transform& xf) const {
+    return overlap(childShape(impl_->geometry[a.shape], a.child), toB2(xfA), toB2(query), toB2(xf));
+}
+
+bool CollisionSystem::testPoint(int shape, const Transform& xf, Vec2 point) const {
+    const Geometry& g = impl_->geometry[shape];
+    if (std::holds_alternative<ChainEdges>(g) || std::holds_alternative<b2EdgeShape>(g)) return false;
+    return childShape(g, 0).TestPoint(toB2(xf), toB2(point));
+}
+
+bool CollisionSystem::rayCast(ChildKey key, const Transform& xf, Vec2 p1, Vec2 p2, float maxFraction, RayCastResult& result) const {
+    b2RayCastInput input{toB2(p1), toB2(p2), maxFraction};
+    b2RayCastOutput output;
+    if (!childShape(impl_->geometry[key.shape], key.child).RayCast(&output, input, toB2(xf), 0)) return false;
+    result = {fromB2(output.normal), output.fraction};
+    return true;
+}
+
+void CollisionSystem::rayCastImpl(Vec2 p1, Vec2 p2, void* context, float (*visit)(void*, int, float)) const {
+    struct Callback {
+        void* context;
+        float (*visit)(void*, int, float);
+        float RayCastCallback(const b2RayCastInput& input, int32 proxy) { return visit(context, proxy, input.maxFraction); }
+    } callback{context, visit};
+    impl_->tree.RayCast(&callback, b2RayCastInput{toB2(p1), toB2(p2), 1.0f});
+}
+
+namespace {
+
+b2Sweep toB2(const Sweep& s) {
+    b2Sweep out;
+    out.localCenter = toB2(s.localCenter);
+    out.c0 = toB2(s.c1);
+    out.c = toB2(s.c2);
+    out.a0 = s.a1;
+    out.a = s.a2;
+    out.alpha0 = 0.0f;
+    return out;
+}
+
+float timeOfImpact(const b2DistanceProxy& a, const Sweep& sweepA, const b2DistanceProxy& b, const Sweep& sweepB) {
+    b2TOIInput input;
+    input.proxyA = a;
+    input.proxyB = b;
+    input.sweepA = toB2(sweepA);
+    input.sweepB = toB2(sweepB);
+    input.tMax = 1.0f;
+    b2TOIOutput output;
+    b2TimeOfImpact(&output, &input);
+    switch (output.state) {
+        case b2TOIOutput::e_touching: return std::clamp(output.t, 0.0f, 1.0f);
+        case b2TOIOutput::e_overlapped: return 0.0f;
+        default: return 1.0f;
+    }
+}
+
+}  // namespace
+
+float CollisionSystem::timeOfImpact(ChildKey a, const Sweep& sweepA, ChildKey b, const Sweep& sweepB) const {
+    b2DistanceProxy proxyA, proxyB;
+    proxyA.Set(&childShape(impl_->geometry[a.shape], a.child), 0);
+    proxyB.Set(&childShape(impl_->geometry[b.shape], b.child), 0);
+    return perpdot::collide::timeOfImpact(proxyA, sweepA, proxyB, sweepB);
+}
+
+float CollisionSystem::coreTimeOfImpact(int shapeA, float coreRadius, const Sweep& sweepA, ChildKey b, const Sweep& sweepB) const {
+    const Geometry& g = impl_->geometry[shapeA];
+    b2CircleShape core;
+    core.m_radius = coreRadius;
+    if (auto* c = std::get_if<b2CircleShape>(&g)) core.m_p = c->m_p;
+    if (auto* p = std::get_if<b2PolygonShape>(&g)) core.m_p = p->m_centroid;
+    b2DistanceProxy proxyA, proxyB;
+    proxyA.Set(&core, 0);
+    proxyB.Set(&childShape(impl_->geometry[b.shape], b.child), 0);
+    return perpdot::collide::timeOfImpact(proxyA, sweepA, proxyB, sweepB);
+}
+
+float CollisionSystem::minExtent(int shape) const {
+    const Geometry& g = impl_->geometry[shape];
+    if (auto* c = std::get_if<b2CircleShape>(&g)) return c->m_radius;
+    const auto* p = std::get_if<b2PolygonShape>(&g);
+    if (!p) return 0.0f;
+    // Distance from the centroid to the nearest face plane, plus the rounding.
+    float extent = b2_maxFloat;
+    for (int i = 0; i < p->m_count; ++i)
+        extent = std::min(extent, b2Dot(p->m_normals[i], p->m_vertices[i] - p->m_centroid));
+    return extent + p->m_radius;
+}
+
+float CollisionSystem::maxExtent(int shape) const {
+    const Geometry& g = impl_->geometry[shape];
+    if (auto* c = std::get_if<b2CircleShape>(&g)) return c->m_p.Length() + c->m_radius;
+    const auto* p = std::get_if<b2PolygonShape>(&g);
+    if (!p) return 0.0f;
+    float extent = 0.0f;
+    for (int i = 0; i < p->m_count; ++i) extent = std::max(extent, p->m_vertices[i].Length());
+    return extent + p->m_radius;
 }
 
 }  // namespace perpdot::collide

@@ -26,6 +26,19 @@ struct Manifold {
     ManifoldPoint points[2];
 };
 
+// The motion of a body over a step, for time of impact: centre of mass from c1 to c2, angle from
+// a1 to a2, about the body-frame centre localCenter.
+struct Sweep {
+    Vec2 localCenter;
+    Vec2 c1, c2;
+    float a1 = 0, a2 = 0;
+};
+
+struct RayCastResult {
+    Vec2 normal;
+    float fraction = 1.0f;
+};
+
 // A shape child: a whole circle or polygon, or one segment of a chain.
 struct ChildKey {
     int shape = -1;
@@ -73,8 +86,37 @@ public:
     // (polygon before circle, segment/chain before either).
     static bool mustSwap(ShapeType a, ShapeType b);
 
+    // Overlap tests (b2TestOverlap, b2Shape::TestPoint): child against child or a query shape.
+    bool testOverlap(ChildKey a, const Transform& xfA, ChildKey b, const Transform& xfB) const;
+    bool testOverlap(ChildKey a, const Transform& xfA, const Circle& query, const Transform& xf) const;
+    bool testOverlap(ChildKey a, const Transform& xfA, const Polygon& query, const Transform& xf) const;
+    bool testPoint(int shape, const Transform& xf, Vec2 point) const;  // false for segments and chains
+
+    // The ray p1 -> p2 against one child; a hit below maxFraction fills `result`.
+    bool rayCast(ChildKey key, const Transform& xf, Vec2 p1, Vec2 p2, float maxFraction, RayCastResult& result) const;
+    // Calls visit(proxy, maxFraction) for proxies whose fat AABB the ray p1 -> p2 crosses; visit returns
+    // the new maxFraction (0 stops, a negative value leaves it unchanged).
+    template <class Visit>
+    void rayCastTree(Vec2 p1, Vec2 p2, Visit&& visit) const {
+        rayCastImpl(p1, p2, &visit, [](void* v, int proxy, float maxFraction) {
+            return (*static_cast<Visit*>(v))(proxy, maxFraction);
+        });
+    }
+
+    // b2TimeOfImpact: fraction t in [0, 1] of the first time the two moving children come within
+    // Box2D's target separation; 0 if they already are at the start, 1 if they never do.
+    float timeOfImpact(ChildKey a, const Sweep& sweepA, ChildKey b, const Sweep& sweepB) const;
+    // The same for a small disc of radius coreRadius at shape A's centroid (Box2D v3's fallback when
+    // the shapes already touch at the start: the core still must not pass through).
+    float coreTimeOfImpact(int shapeA, float coreRadius, const Sweep& sweepA, ChildKey b, const Sweep& sweepB) const;
+    // Smallest distance from the shape's centroid to its surface, and largest distance from the
+    // shape frame's origin to its surface (rounding included); 0 for segments and chains.
+    float minExtent(int shape) const;
+    float maxExtent(int shape) const;
+
 private:
     void queryImpl(const AABB& aabb, void* context, bool (*visit)(void*, int)) const;
+    void rayCastImpl(Vec2 p1, Vec2 p2, void* context, float (*visit)(void*, int, float)) const;
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };

@@ -19,6 +19,17 @@ uint64_t pairKey(int proxyA, int proxyB) {
 float mixFriction(float a, float b) { return std::sqrt(a * b); }
 float mixRestitution(float a, float b) { return std::max(a, b); }
 
+// Box2D v3's rules: rolling resistance is the larger coefficient times the larger rounding
+// radius (a lever arm), and the surfaces' tangent speeds add.
+float roundingRadius(const ShapeData& s) {
+    if (auto* c = std::get_if<Circle>(&s.geometry)) return c->radius;
+    if (auto* p = std::get_if<Polygon>(&s.geometry)) return p->radius;
+    return 0.0f;
+}
+float mixRollingResistance(const ShapeData& a, const ShapeData& b) {
+    return std::max(a.rollingResistance, b.rollingResistance) * std::max(roundingRadius(a), roundingRadius(b));
+}
+
 void linkEdge(World::Impl& w, int contact, int side, int bodyIndex) {
     const int key = 2 * contact + side;
     Body& b = w.bodies[bodyIndex];
@@ -61,7 +72,9 @@ void World::Impl::addPair(int proxyA, int proxyB) {
     const Body& ba = bodies[sa->body];
     const Body& bb = bodies[sb->body];
     if (ba.type != BodyType::Dynamic && bb.type != BodyType::Dynamic) return;
-    if (sa->sensor || sb->sensor) return;
+    // A sensor sees shapes that are not sensors and want to be seen.
+    if (sa->sensor && sb->sensor) return;
+    if ((sa->sensor && !sb->enableSensorEvents) || (sb->sensor && !sa->enableSensorEvents)) return;
     if (!collide::CollisionSystem::canCollide(sa->type, sb->type)) return;
     if (!shouldCollide(sa->filter, sb->filter)) return;
     if (!jointAllowsCollision(*this, sa->body, sb->body)) return;
@@ -91,6 +104,7 @@ void World::Impl::addPair(int proxyA, int proxyB) {
     c.b = keyB;
     c.bodyA = sa->body;
     c.bodyB = sb->body;
+    c.sensor = sa->sensor || sb->sensor;
     linkEdge(*this, index, 0, c.bodyA);
     linkEdge(*this, index, 1, c.bodyB);
     pairs.emplace(key, index);
@@ -98,6 +112,7 @@ void World::Impl::addPair(int proxyA, int proxyB) {
 
 void World::Impl::destroyContact(int index) {
     Contact& c = contacts[index];
+    if (c.touching || c.overlapping) reportTouch(c, false);
     pairs.erase(c.pairKey);
     unlinkEdge(*this, index, 0, c.bodyA);
     unlinkEdge(*this, index, 1, c.bodyB);
@@ -133,11 +148,21 @@ void World::Impl::updateContacts() {
             destroyContact(index);
             continue;
         }
+        if (c.sensor) {
+            const bool overlapping = collision.testOverlap(c.a, ba.xf, c.b, bb.xf);
+            if (overlapping != c.overlapping) {
+                c.overlapping = overlapping;
+                reportTouch(c, overlapping);
+            }
+            continue;
+        }
         const collide::Manifold m = collision.collide(c.a, ba.xf, c.b, bb.xf);
         const ShapeData& sa = shapes[c.a.shape];
         const ShapeData& sb = shapes[c.b.shape];
         c.friction = mixFriction(sa.friction, sb.friction);
         c.restitution = mixRestitution(sa.restitution, sb.restitution);
+        c.rollingResistance = mixRollingResistance(sa, sb);
+        c.tangentSpeed = sa.tangentSpeed + sb.tangentSpeed;
 
         ContactPointState next[2];
         for (int i = 0; i < m.pointCount; ++i) {
@@ -155,11 +180,18 @@ void World::Impl::updateContacts() {
                 }
             }
         }
+        const bool wasTouching = c.touching;
         c.normal = m.normal;
         c.pointCount = m.pointCount;
         c.points[0] = next[0];
         c.points[1] = next[1];
         c.touching = m.pointCount > 0;
+        if (c.touching && preSolve && (sa.enablePreSolveEvents || sb.enablePreSolveEvents) && !preSolve(shapeId(c.a.shape), shapeId(c.b.shape), contactData(c))) {
+            c.pointCount = 0;  // disabled for this step
+            c.touching = false;
+        }
+        if (!c.touching) c.rollingImpulse = 0.0f;
+        if (c.touching != wasTouching) reportTouch(c, c.touching);
         // An awake body touching a sleeping one wakes the sleeper's island.
         if (c.touching) {
             if (!ba.awake && ba.type != BodyType::Static && bb.awake) wake(c.bodyA);

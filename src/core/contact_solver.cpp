@@ -50,6 +50,11 @@ void prepareContacts(World::Impl& w, const StepContext& ctx) {
         c.normal = contact.normal;
         c.friction = contact.friction;
         c.restitution = contact.restitution;
+        c.rollingResistance = contact.rollingResistance;
+        c.tangentSpeed = contact.tangentSpeed;
+        c.rollingImpulse = ctx.enableWarmStarting ? contact.rollingImpulse : 0.0f;
+        const float kRolling = c.invIA + c.invIB;
+        c.rollingMass = kRolling > 0.0f ? 1.0f / kRolling : 0.0f;
         const bool againstStatic = ba.invMass == 0.0f || bb.invMass == 0.0f;
         c.softness = againstStatic ? ctx.staticSoftness : ctx.contactSoftness;
         c.pointCount = contact.pointCount;
@@ -86,6 +91,8 @@ void warmStartContacts(World::Impl& w, const StepContext& ctx) {
             const ContactConstraintPoint& cp = c.points[i];
             applyImpulse(c, a, b, cp.anchorA, cp.anchorB, cp.normalImpulse * c.normal + cp.tangentImpulse * t);
         }
+        a.w -= c.invIA * c.rollingImpulse;
+        b.w += c.invIB * c.rollingImpulse;
     }
 }
 
@@ -98,6 +105,7 @@ void solveContacts(World::Impl& w, const StepContext& ctx, bool useBias) {
         const Vec2 dp = b.dp - a.dp;
 
         // Non-penetration: λn ≥ 0.
+        float totalNormalImpulse = 0.0f;
         for (int i = 0; i < c.pointCount; ++i) {
             ContactConstraintPoint& cp = c.points[i];
             // Current separation without a new narrowphase: s = base + (ΔpB + rB' - ΔpA - rA')·n.
@@ -118,20 +126,32 @@ void solveContacts(World::Impl& w, const StepContext& ctx, bool useBias) {
             impulse = newImpulse - cp.normalImpulse;
             cp.normalImpulse = newImpulse;
             cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, impulse);
+            totalNormalImpulse += newImpulse;
             applyImpulse(c, a, b, rA, rB, impulse * n);
         }
 
-        // Coulomb friction along t = perp(n): |λt| ≤ μ λn.
+        // Coulomb friction along t = perp(n): |λt| ≤ μ λn. A conveyor's surfaces move clockwise
+        // around their shapes, which is −tangentSpeed along perp(n): the row drives v_rel·t to it.
         const Vec2 t = perp(n);
         for (int i = 0; i < c.pointCount; ++i) {
             ContactConstraintPoint& cp = c.points[i];
             const Vec2 rA = cp.anchorA, rB = cp.anchorB;
-            const float vt = dot(relativeVelocity(a, b, rA, rB), t);
+            const float vt = dot(relativeVelocity(a, b, rA, rB), t) + c.tangentSpeed;
             const float maxFriction = c.friction * cp.normalImpulse;
             const float newImpulse = std::clamp(cp.tangentImpulse - cp.tangentMass * vt, -maxFriction, maxFriction);
             const float impulse = newImpulse - cp.tangentImpulse;
             cp.tangentImpulse = newImpulse;
             applyImpulse(c, a, b, rA, rB, impulse * t);
+        }
+
+        // Rolling resistance: an angular row on ωB − ωA, |λr| ≤ rollingResistance·Σλn.
+        if (c.rollingResistance > 0.0f) {
+            const float maxLambda = c.rollingResistance * totalNormalImpulse;
+            const float lambda = c.rollingImpulse;
+            c.rollingImpulse = std::clamp(lambda - c.rollingMass * (b.w - a.w), -maxLambda, maxLambda);
+            const float impulse = c.rollingImpulse - lambda;
+            a.w -= c.invIA * impulse;
+            b.w += c.invIB * impulse;
         }
     }
 }
@@ -162,6 +182,7 @@ void applyRestitution(World::Impl& w, const StepContext& ctx) {
 void storeContactImpulses(World::Impl& w) {
     for (const ContactConstraint& c : w.constraints) {
         Contact& contact = w.contacts[c.contact];
+        contact.rollingImpulse = c.rollingImpulse;
         for (int i = 0; i < c.pointCount; ++i) {
             contact.points[i].normalImpulse = c.points[i].normalImpulse;
             contact.points[i].tangentImpulse = c.points[i].tangentImpulse;

@@ -13,6 +13,8 @@ void validate(const ShapeDef& def) {
     if (!(std::isfinite(def.density) && def.density >= 0.0f)) throw Error("ShapeDef.density must be finite and >= 0");
     if (!(std::isfinite(def.friction) && def.friction >= 0.0f)) throw Error("ShapeDef.friction must be finite and >= 0");
     if (!(std::isfinite(def.restitution) && def.restitution >= 0.0f)) throw Error("ShapeDef.restitution must be finite and >= 0");
+    if (!(std::isfinite(def.rollingResistance) && def.rollingResistance >= 0.0f)) throw Error("ShapeDef.rollingResistance must be finite and >= 0");
+    if (!std::isfinite(def.tangentSpeed)) throw Error("ShapeDef.tangentSpeed must be finite");
 }
 
 void validate(const Circle& c) {
@@ -49,6 +51,8 @@ ShapeId create(World::Impl& w, BodyId bodyId, const ShapeDef& def, const Geometr
     const int index = w.addShape(bodyId, def);
     w.shapes[index].geometry = geometry;
     w.collision.setGeometry(index, geometry);
+    w.shapes[index].minExtent = w.collision.minExtent(index);
+    w.shapes[index].maxExtent = w.collision.maxExtent(index);
     w.createProxies(index);
     if constexpr (std::is_same_v<Geometry, Circle> || std::is_same_v<Geometry, Polygon>) w.updateMass(bodyId.index);
     return w.shapeId(index);
@@ -86,7 +90,13 @@ int World::Impl::addShape(BodyId bodyId, const ShapeDef& def) {
     s.density = def.density;
     s.friction = def.friction;
     s.restitution = def.restitution;
+    s.rollingResistance = def.rollingResistance;
+    s.tangentSpeed = def.tangentSpeed;
     s.sensor = def.sensor;
+    s.enableContactEvents = def.enableContactEvents;
+    s.enableHitEvents = def.enableHitEvents;
+    s.enableSensorEvents = def.enableSensorEvents;
+    s.enablePreSolveEvents = def.enablePreSolveEvents;
     s.filter = def.filter;
     s.userData = def.userData;
     bodies[bodyId.index].shapes.push_back(index);
@@ -203,6 +213,21 @@ void World::setRestitution(ShapeId id, float restitution) {
     if (!(std::isfinite(restitution) && restitution >= 0.0f)) throw Error("setRestitution: restitution must be finite and >= 0");
     impl_->shape(id).restitution = restitution;
 }
+
+float World::rollingResistance(ShapeId id) const { return impl_->shape(id).rollingResistance; }
+float World::tangentSpeed(ShapeId id) const { return impl_->shape(id).tangentSpeed; }
+
+void World::setRollingResistance(ShapeId id, float resistance) {
+    if (!(std::isfinite(resistance) && resistance >= 0.0f)) throw Error("setRollingResistance: resistance must be finite and >= 0");
+    impl_->shape(id).rollingResistance = resistance;
+}
+
+void World::setTangentSpeed(ShapeId id, float speed) {
+    if (!std::isfinite(speed)) throw Error("setTangentSpeed: speed must be finite");
+    impl_->shape(id).tangentSpeed = speed;
+}
+
+void World::enablePreSolveEvents(ShapeId id, bool enable) { impl_->shape(id).enablePreSolveEvents = enable; }
 
 void World::setDensity(ShapeId id, float density) {
     if (!(std::isfinite(density) && density >= 0.0f)) throw Error("setDensity: density must be finite and >= 0");

@@ -19,10 +19,13 @@ void World::step(float timeStep) {
     Impl& w = *impl_;
     if (!(timeStep > 0.0f) || !std::isfinite(timeStep) || w.locked) return;
     w.locked = true;
+    w.beginEvents();
     w.updatePairs();
     w.updateContacts();
     w.solve(timeStep);
     w.updateSleep(timeStep);
+    w.contactEndReported = w.contactEndEvents.size();
+    w.sensorEndReported = w.sensorEndEvents.size();
     w.locked = false;
 }
 
@@ -97,7 +100,10 @@ void integratePositions(World::Impl& w, const StepContext& ctx) {
 }
 
 // Write the solver state back: c = c0 + Δp, θ = θ0 + Δθ, origin = c - R(θ) localCenter.
+// Fast bodies are then swept from their step-start pose against static shapes; bullets wait
+// until every other body is final, then sweep against dynamic shapes too.
 void finalizeBodies(World::Impl& w) {
+    w.bullets.clear();
     for (size_t k = 0; k < w.awakeBodies.size(); ++k) {
         const int index = w.awakeBodies[k];
         Body& b = w.bodies[index];
@@ -109,13 +115,29 @@ void finalizeBodies(World::Impl& w) {
             b.w = 0.0f;
             continue;
         }
+        const Vec2 c0 = b.center;
+        const float a0 = b.angle;
         b.v = s.v;
         b.w = s.w;
         b.center = b.center + s.dp;
         b.angle = b.angle + dAngle;
         b.xf.q = Rot::fromAngle(b.angle);
         b.xf.p = b.center - rotate(b.xf.q, b.localCenter);
-        w.synchronizeProxies(index, s.dp);
+        if (w.def.enableContinuous && w.isFast(index, c0, a0)) {
+            if (b.bullet) {
+                w.bullets.push_back(static_cast<int>(k));
+                continue;
+            }
+            w.solveContinuous(index, c0, a0);
+        }
+        w.synchronizeProxies(index, b.center - c0);
+    }
+    for (int k : w.bullets) {
+        const int index = w.awakeBodies[k];
+        Body& b = w.bodies[index];
+        const Vec2 c0 = b.center - w.states[k + 1].dp;
+        w.solveContinuous(index, c0, b.angle - w.stepRotation[k + 1]);
+        w.synchronizeProxies(index, b.center - c0);
     }
     for (Body& b : w.bodies) {
         b.force = {};
@@ -158,6 +180,7 @@ void World::Impl::solve(float h) {
     applyRestitution(*this, ctx);
     storeJointImpulses(*this, ctx);
     storeContactImpulses(*this);
+    reportHitEvents(*this);
     finalizeBodies(*this);
 }
 

@@ -28,18 +28,8 @@ int World::contactCount() const {
 
 std::vector<ContactData> World::contacts() const {
     std::vector<ContactData> out;
-    for (const Contact& c : impl_->contacts) {
-        if (!c.alive || !c.touching) continue;
-        ContactData& d = out.emplace_back();
-        d.shapeA = impl_->shapeId(c.a.shape);
-        d.shapeB = impl_->shapeId(c.b.shape);
-        d.normal = c.normal;
-        d.pointCount = c.pointCount;
-        for (int i = 0; i < c.pointCount; ++i) {
-            const ContactPointState& p = c.points[i];
-            d.points[i] = {p.point, p.separation, p.normalImpulse, p.tangentImpulse, p.id};
-        }
-    }
+    for (const Contact& c : impl_->contacts)
+        if (c.alive && c.touching) out.push_back(impl_->contactData(c));
     return out;
 }
 

@@ -48,7 +48,10 @@ struct ShapeData {
     ShapeType type = ShapeType::Circle;
     std::variant<Circle, Polygon, Segment, Chain> geometry;
     float density = 1, friction = 0.6f, restitution = 0;
+    float rollingResistance = 0, tangentSpeed = 0;
     bool sensor = false;
+    bool enableContactEvents = true, enableHitEvents = false, enableSensorEvents = true, enablePreSolveEvents = false;
+    float minExtent = 0, maxExtent = 0;  // about the body origin, for continuous collision
     Filter filter;
     void* userData = nullptr;
     std::vector<int> proxies;  // broadphase proxy of each child
@@ -68,12 +71,16 @@ struct ContactEdge {
 
 struct Contact {
     bool alive = false;
-    bool touching = false;
+    bool touching = false;     // has manifold points and takes part in the solve (never for sensors)
+    bool sensor = false;       // a sensor and a visitor: overlap test only, no constraint
+    bool overlapping = false;  // sensor contacts: the shapes overlap
     uint64_t pairKey = 0;
     int proxyA = -1, proxyB = -1;
     collide::ChildKey a, b;
     int bodyA = -1, bodyB = -1;
     float friction = 0, restitution = 0;
+    float rollingResistance = 0, tangentSpeed = 0;
+    float rollingImpulse = 0;  // warm start of the rolling-resistance row
     Vec2 normal;
     int pointCount = 0;
     ContactPointState points[2];
@@ -94,6 +101,8 @@ struct ContactConstraint {
     float invMassA = 0, invIA = 0, invMassB = 0, invIB = 0;
     Vec2 normal;
     float friction = 0, restitution = 0;
+    float rollingResistance = 0, tangentSpeed = 0;
+    float rollingMass = 0, rollingImpulse = 0;  // angular row: 1/(1/IA + 1/IB), accumulated λ
     Softness softness;
     int pointCount = 0;
     ContactConstraintPoint points[2];
@@ -112,6 +121,17 @@ struct World::Impl {
     collide::CollisionSystem collision;
     JointStorePtr joints;
     bool locked = false;  // inside step()
+
+    // Events of the last step (events.cpp). End events raised between steps (a destroyed shape)
+    // are kept for the next step: the first `endEventsReported` entries are the stale ones.
+    std::vector<ContactBeginTouchEvent> contactBeginEvents;
+    std::vector<ContactEndTouchEvent> contactEndEvents;
+    std::vector<ContactHitEvent> contactHitEvents;
+    std::vector<SensorBeginTouchEvent> sensorBeginEvents;
+    std::vector<SensorEndTouchEvent> sensorEndEvents;
+    size_t contactEndReported = 0, sensorEndReported = 0;
+    PreSolveFn preSolve;
+    std::vector<int> bullets;  // continuous.cpp scratch: bullets wait until the others are final
 
     // Solver arrays, rebuilt each step without reallocating.
     std::vector<BodyState> states;
@@ -148,11 +168,18 @@ struct World::Impl {
     void addPair(int proxyA, int proxyB);
     void updateContacts();
     void destroyContact(int contact);
+    void beginEvents();                        // forget the events reported after the last step
+    void reportTouch(const Contact& c, bool begin);  // begin/end event for a contact or sensor
+    ContactData contactData(const Contact& c) const;
     void destroyContactsOf(int body, int shape);  // shape = -1: all of the body's contacts
 
     // The step (solver.cpp, contact_solver.cpp, sleep.cpp)
     void solve(float h);
     void updateSleep(float h);
+    // Continuous collision (continuous.cpp): sweep a fast body from its step-start pose
+    // (centre c0, angle a0) to its current one; moves it back to the earliest time of impact.
+    bool isFast(int body, Vec2 c0, float a0) const;
+    void solveContinuous(int body, Vec2 c0, float a0);
 };
 
 // Contact solver stages (contact_solver.cpp).
@@ -161,5 +188,6 @@ void warmStartContacts(World::Impl& world, const StepContext& ctx);
 void solveContacts(World::Impl& world, const StepContext& ctx, bool useBias);
 void applyRestitution(World::Impl& world, const StepContext& ctx);
 void storeContactImpulses(World::Impl& world);
+void reportHitEvents(World::Impl& world);
 
 }  // namespace perpdot

@@ -1,0 +1,58 @@
+// Contact and sensor events, buffered during World::step() and read after it (Box2D v3 style),
+// and the pre-solve callback that may disable a contact for one step (one-way platforms).
+#pragma once
+
+#include <functional>
+#include <span>
+
+#include "perpdot/ids.hpp"
+#include "perpdot/math.hpp"
+
+namespace perpdot {
+
+struct ContactData;
+
+// Two shapes started touching (their manifold gained points) — needs enableContactEvents on either.
+struct ContactBeginTouchEvent {
+    ShapeId shapeA, shapeB;
+};
+
+// Two shapes stopped touching, or their contact was destroyed (the ids may then be stale).
+struct ContactEndTouchEvent {
+    ShapeId shapeA, shapeB;
+};
+
+// A touching contact whose approach speed −v_rel·n exceeded WorldDef::hitEventThreshold at the start
+// of the step — needs enableHitEvents on either shape. The point is the fastest-approaching one.
+struct ContactHitEvent {
+    ShapeId shapeA, shapeB;
+    Vec2 point;            // world
+    Vec2 normal;           // from A to B
+    float approachSpeed = 0.0f;  // m/s, > 0
+};
+
+// The events of the last step; the spans stay valid until the next step().
+struct ContactEvents {
+    std::span<const ContactBeginTouchEvent> beginEvents;
+    std::span<const ContactEndTouchEvent> endEvents;
+    std::span<const ContactHitEvent> hitEvents;
+};
+
+// A shape (the visitor) began or stopped overlapping a sensor shape.
+struct SensorBeginTouchEvent {
+    ShapeId sensorShape, visitorShape;
+};
+struct SensorEndTouchEvent {
+    ShapeId sensorShape, visitorShape;
+};
+struct SensorEvents {
+    std::span<const SensorBeginTouchEvent> beginEvents;
+    std::span<const SensorEndTouchEvent> endEvents;
+};
+
+// Called during step()'s narrowphase for every touching contact where either shape has
+// ShapeDef::enablePreSolveEvents; return false to disable the contact for this step. The world is
+// locked: creating or destroying anything throws perpdot::Error.
+using PreSolveFn = std::function<bool(ShapeId shapeA, ShapeId shapeB, const ContactData& contact)>;
+
+}  // namespace perpdot

@@ -1,0 +1,113 @@
+// Continuous collision (Box2D v3's scheme): after the solve, a body that moved more than half its
+// smallest extent this step is swept from its step-start pose to its end pose with b2TimeOfImpact
+// against the static shapes around the sweep — bullets against every non-bullet body — and moved
+// back to the earliest time of impact t < 1. Its velocity is kept: the next step's contact stops it.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/world_impl.hpp"
+
+namespace perpdot {
+
+namespace {
+
+constexpr float safetyFactor = 0.5f;  // of the smallest extent: slower bodies cannot tunnel
+
+AABB combine(const AABB& a, const AABB& b) {
+    return {{std::min(a.lower.x, b.lower.x), std::min(a.lower.y, b.lower.y)},
+            {std::max(a.upper.x, b.upper.x), std::max(a.upper.y, b.upper.y)}};
+}
+
+Vec2 middle(const AABB& box) { return 0.5f * (box.lower + box.upper); }
+
+// The world endpoints of a segment or of one chain child.
+bool segmentOf(const ShapeData& s, int child, const Transform& xf, Vec2& p1, Vec2& p2) {
+    if (auto* segment = std::get_if<Segment>(&s.geometry)) {
+        p1 = transformPoint(xf, segment->v1);
+        p2 = transformPoint(xf, segment->v2);
+        return true;
+    }
+    if (auto* chain = std::get_if<Chain>(&s.geometry)) {
+        const std::vector<Vec2>& v = chain->vertices;
+        p1 = transformPoint(xf, v[child]);
+        p2 = transformPoint(xf, v[(child + 1) % v.size()]);
+        return true;
+    }
+    return false;
+}
+
+// A sweep across a segment is needed only when the moving shape's centre starts in front of it
+// and ends closer than safetyFactor·extent (or behind it). This keeps a body sliding along a floor
+// of segments from pausing at every seam. Chains are one-sided: their front is the right of v1→v2.
+bool crossesSegment(Vec2 p1, Vec2 p2, bool oneSided, Vec2 start, Vec2 end, float extent) {
+    const Vec2 e = p2 - p1;
+    const float len = length(e);
+    if (len == 0.0f) return false;
+    float d1 = -perpDot(e, start - p1) / len;  // distance in front (right side)
+    float d2 = -perpDot(e, end - p1) / len;
+    if (!oneSided && d1 < 0.0f) {
+        d1 = -d1;
+        d2 = -d2;
+    }
+    return d1 > 0.0f && d2 < safetyFactor * extent;
+}
+
+}  // namespace
+
+bool World::Impl::isFast(int index, Vec2 c0, float a0) const {
+    const Body& b = bodies[index];
+    if (b.type != BodyType::Dynamic) return false;
+    float minExtent = std::numeric_limits<float>::max(), maxExtent = 0.0f;
+    for (int s : b.shapes) {
+        if (shapes[s].sensor) continue;
+        minExtent = std::min(minExtent, shapes[s].minExtent);
+        maxExtent = std::max(maxExtent, shapes[s].maxExtent);
+    }
+    if (maxExtent == 0.0f) return false;
+    // Largest distance any point travelled: |Δc| + |Δθ|·(radius about the centre of mass).
+    const float travel = distance(c0, b.center) + std::fabs(b.angle - a0) * (maxExtent + length(b.localCenter));
+    return travel > safetyFactor * minExtent;
+}
+
+void World::Impl::solveContinuous(int index, Vec2 c0, float a0) {
+    Body& b = bodies[index];
+    const collide::Sweep sweep{b.localCenter, c0, b.center, a0, b.angle};
+    const Rot q0 = Rot::fromAngle(a0);
+    const Transform xf0{c0 - rotate(q0, b.localCenter), q0};
+    float t = 1.0f;
+    for (int s : b.shapes) {
+        const ShapeData& shape = shapes[s];
+        if (shape.sensor) continue;
+        const AABB start = collision.computeAABB(s, 0, xf0), end = collision.computeAABB(s, 0, b.xf);
+        collision.query(combine(start, end), [&](int proxy) {
+            const collide::ChildKey key = collision.proxyKey(proxy);
+            const ShapeData& other = shapes[key.shape];
+            const Body& ob = bodies[other.body];
+            if (other.body == index || other.sensor) return true;
+            if (ob.type != BodyType::Static && !(b.bullet && !ob.bullet)) return true;
+            if (!collide::CollisionSystem::canCollide(shape.type, other.type) || !shouldCollide(shape.filter, other.filter) ||
+                !jointAllowsCollision(*this, index, other.body))
+                return true;
+            Vec2 p1, p2;
+            if (segmentOf(other, key.child, ob.xf, p1, p2) &&
+                !crossesSegment(p1, p2, other.type == ShapeType::Chain, middle(start), middle(end), shape.minExtent))
+                return true;
+            // The other body stands still at its final pose.
+            const collide::Sweep still{ob.localCenter, ob.center, ob.center, ob.angle, ob.angle};
+            float toi = collision.timeOfImpact({s, 0}, sweep, key, still);
+            // Already touching at the start: the shape's core (a quarter of its extent) must still not pass.
+            if (toi == 0.0f) toi = collision.coreTimeOfImpact(s, 0.25f * shape.minExtent, sweep, key, still);
+            if (toi > 0.0f && toi < t) t = toi;
+            return true;
+        });
+    }
+    if (t >= 1.0f) return;
+    // Back to the pose at the time of impact: c = c0 + t (c1 - c0), θ = θ0 + t (θ1 - θ0).
+    b.center = c0 + t * (b.center - c0);
+    b.angle = a0 + t * (b.angle - a0);
+    b.xf.q = Rot::fromAngle(b.angle);
+    b.xf.p = b.center - rotate(b.xf.q, b.localCenter);
+}
+
+}  // namespace perpdot
