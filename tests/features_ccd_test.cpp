@@ -1,0 +1,87 @@
+// Continuous collision: a fast body is swept from its step-start pose with b2TimeOfImpact and
+// stopped at the first impact, so it cannot pass through thin geometry between two steps.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "features_helpers.hpp"
+
+namespace perpdot {
+namespace {
+
+using features::dt;
+
+struct Shot {
+    float maxX = -1e9f;  // furthest the bullet's centre got
+    float finalX = 0.0f;
+};
+
+// A 0.1 m bullet (circle r = 0.05) at 500 m/s (8.3 m per step, 83 bullet lengths) towards a 0.1 m
+// thick wall whose left face is x = 10.
+Shot fireAtWall(const WorldDef& def, bool bullet, BodyType wallType) {
+    World world(def);
+    const BodyId wall = world.createBody({.type = wallType, .position = {10.05f, 0.0f}});
+    world.createShape(wall, {.density = 1000.0f}, makeBox(0.05f, 2.0f));
+    const BodyId shot = features::addDynamic(world, {0.0f, 0.0f}, {500.0f, 0.0f}, bullet);
+    world.createShape(shot, {}, Circle{.radius = 0.05f});
+    Shot result;
+    for (int i = 0; i < 60; ++i) {
+        world.step(dt);
+        result.maxX = std::max(result.maxX, world.position(shot).x);
+    }
+    result.finalX = world.position(shot).x;
+    return result;
+}
+
+WorldDef noGravity() { return {.gravity = {0.0f, 0.0f}}; }
+
+TEST(FeaturesContinuous, BulletNeverPassesAThinStaticWall) {
+    const Shot shot = fireAtWall(noGravity(), true, BodyType::Static);
+    // The centre never gets past the wall's middle (x = 10.05) and ends in front of the wall.
+    EXPECT_LT(shot.maxX, 10.05f);
+    EXPECT_LT(shot.finalX, 10.0f - 0.05f + 0.01f);
+    EXPECT_GT(shot.finalX, 9.0f);  // and it did reach the wall
+}
+
+TEST(FeaturesContinuous, WithoutContinuousCollisionTheSameShotTunnels) {
+    // The counterfactual: the same scene with continuous collision off passes the wall.
+    WorldDef def = noGravity();
+    def.enableContinuous = false;
+    EXPECT_GT(fireAtWall(def, true, BodyType::Static).finalX, 10.1f);
+}
+
+TEST(FeaturesContinuous, BulletHitsADynamicWallButANonBulletPassesIt) {
+    // Bullets sweep against dynamic bodies too; ordinary fast bodies only against static ones.
+    const Shot bullet = fireAtWall(noGravity(), true, BodyType::Dynamic);
+    EXPECT_LT(bullet.maxX, 10.05f);
+    EXPECT_LT(bullet.finalX, 10.0f);
+    EXPECT_GT(fireAtWall(noGravity(), false, BodyType::Dynamic).finalX, 10.1f);
+}
+
+TEST(FeaturesContinuous, FastBallDoesNotTunnelAThinStaticSegment) {
+    // A 0.2 m ball at 200 m/s downwards (3.3 m per step) onto a two-sided segment at y = 0.
+    World world;
+    world.createShape(features::addStatic(world, {}), {}, Segment{{-5.0f, 0.0f}, {5.0f, 0.0f}});
+    const BodyId ball = features::addDynamic(world, {0.0f, 20.0f}, {0.0f, -200.0f});
+    world.createShape(ball, {}, Circle{.radius = 0.1f});
+    float minY = 1e9f;
+    for (int i = 0; i < 120; ++i) {
+        world.step(dt);
+        minY = std::min(minY, world.position(ball).y);
+    }
+    EXPECT_GT(minY, 0.0f);
+    EXPECT_NEAR(world.position(ball).y, 0.1f, 0.02f);  // resting on the segment
+}
+
+TEST(FeaturesContinuous, FastBallDoesNotTunnelAOneSidedChainFromItsFront) {
+    // A chain listed right-to-left collides on top; the ball comes down at 300 m/s.
+    World world;
+    world.createShape(features::addStatic(world, {}), {}, Chain{{{5.0f, 0.0f}, {0.0f, 0.0f}, {-5.0f, 0.0f}}});
+    const BodyId ball = features::addDynamic(world, {0.3f, 30.0f}, {0.0f, -300.0f});
+    world.createShape(ball, {}, Circle{.radius = 0.1f});
+    features::run(world, 120);
+    EXPECT_NEAR(world.position(ball).y, 0.1f, 0.02f);
+}
+
+}  // namespace
+}  // namespace perpdot
