@@ -1,0 +1,180 @@
+// Feature demos: one-way platforms (pre-solve), a sensor zone, bullets against a thin wall
+// (continuous collision), conveyor belts (tangent speed) and a ray-cast laser. The geometry is a
+// Scene like any other; what a scene file cannot express lives in each scene's SceneBehaviour.
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+
+#include "perpdot/feature_scenes.hpp"
+#include "scene/builtin_registry.hpp"
+#include "scene/scene_builders.hpp"
+
+namespace perpdot {
+namespace {
+
+// The shapes of the scene bodies whose names start with `prefix`.
+std::vector<ShapeId> shapesNamed(const SceneWorld& sw, const std::string& prefix) {
+    std::vector<ShapeId> out;
+    for (size_t i = 0; i < sw.scene.bodies.size(); ++i)
+        if (sw.scene.bodies[i].name.starts_with(prefix))
+            for (ShapeId shape : sw.world.shapes(sw.bodies[i])) out.push_back(shape);
+    return out;
+}
+
+bool contains(const std::vector<ShapeId>& ids, ShapeId id) { return std::find(ids.begin(), ids.end(), id) != ids.end(); }
+
+// Platforms at three heights; balls launched upwards from below pass through them and land on top.
+Scene oneWayPlatform() {
+    Scene s;
+    s.steps = 600;
+    addGround(s, 10.0f);
+    for (int i = 0; i < 3; ++i) {
+        const float x = -5.0f + 5.0f * i;
+        addBody(s, {.name = "platform" + std::to_string(i), .type = BodyType::Static, .position = {x, 3.0f + 1.5f * i},
+                    .shapes = {boxShape(1.5f, 0.1f)}});
+        addBody(s, {.position = {x, 0.5f}, .linearVelocity = {0.0f, 9.0f + 1.0f * i}, .shapes = {circleShape(0.3f)}});
+        addBody(s, {.position = {x + 0.8f, 0.5f}, .linearVelocity = {0.0f, 9.0f + 1.0f * i}, .shapes = {boxShape(0.25f, 0.25f)}});
+    }
+    return s;
+}
+
+// A platform's contact is enabled only while it pushes the visitor up, i.e. the visitor came from above.
+SceneBehaviour oneWayBehaviour() {
+    return {.setup = [](SceneWorld& sw) {
+                const std::vector<ShapeId> platforms = shapesNamed(sw, "platform");
+                for (ShapeId shape : platforms) sw.world.enablePreSolveEvents(shape, true);
+                sw.world.setPreSolve([platforms](ShapeId a, ShapeId b, const ContactData& contact) {
+                    if (!contains(platforms, a) && !contains(platforms, b)) return true;
+                    const float up = contains(platforms, a) ? contact.normal.y : -contact.normal.y;
+                    return up > 0.7f;
+                });
+            },
+            .draw = {}};
+}
+
+// A sensor zone over the ground; balls and boxes rain through it.
+Scene sensorZone() {
+    Scene s;
+    s.steps = 600;
+    addGround(s, 10.0f);
+    SceneShape zone = boxShape(3.0f, 1.5f);
+    zone.sensor = true;
+    addBody(s, {.name = "zone", .type = BodyType::Static, .position = {0.0f, 4.0f}, .shapes = {zone}});
+    for (int i = 0; i < 12; ++i) {
+        const float x = -4.0f + 0.7f * i;
+        addBody(s, {.position = {x, 9.0f + 0.6f * (i % 4)}, .shapes = {i % 2 ? boxShape(0.2f, 0.2f) : circleShape(0.2f)}});
+    }
+    return s;
+}
+
+// Marks every shape inside the zone with a yellow point at its body's origin.
+SceneBehaviour sensorZoneBehaviour() {
+    return {.setup = {}, .draw = [](const SceneWorld& sw, DebugDraw& draw) {
+                for (ShapeId zone : shapesNamed(sw, "zone")) {
+                    const Transform xf = sw.world.transform(sw.world.shapeBody(zone));
+                    for (ShapeId inside : sw.world.overlapShape(sw.world.polygon(zone), xf))
+                        if (inside != zone) draw.drawPoint(sw.world.position(sw.world.shapeBody(inside)), 8.0f, {255, 220, 0, 255});
+                }
+            }};
+}
+
+// 0.1 m bullets at 500 m/s (8 m per step) against a 0.1 m static wall, a thin dynamic plank
+// (bullets only), and a fast ordinary ball against the wall (every body against static geometry).
+Scene bulletWall() {
+    Scene s;
+    s.steps = 300;
+    s.gravity = {0.0f, -10.0f};
+    addGround(s, 20.0f);
+    addBody(s, {.name = "wall", .type = BodyType::Static, .position = {10.0f, 2.0f}, .shapes = {boxShape(0.05f, 2.0f)}});
+    addBody(s, {.name = "plank", .position = {5.0f, 1.0f}, .shapes = {boxShape(0.05f, 1.0f)}});
+    for (int i = 0; i < 3; ++i)
+        addBody(s, {.name = "bullet" + std::to_string(i), .position = {-15.0f, 0.6f + 0.6f * i}, .linearVelocity = {500.0f, 0.0f},
+                    .bullet = true, .shapes = {circleShape(0.05f)}});
+    addBody(s, {.name = "ball", .position = {-15.0f, 3.5f}, .linearVelocity = {300.0f, 0.0f}, .shapes = {circleShape(0.1f)}});
+    return s;
+}
+
+// Two belts carry boxes right, then left, onto the ground.
+Scene conveyor() {
+    Scene s;
+    s.steps = 900;
+    addGround(s, 12.0f);
+    addBody(s, {.name = "belt_right", .type = BodyType::Static, .position = {-3.0f, 4.0f}, .angle = -0.1f, .shapes = {boxShape(5.0f, 0.2f)}});
+    addBody(s, {.name = "belt_left", .type = BodyType::Static, .position = {3.0f, 1.5f}, .angle = 0.1f, .shapes = {boxShape(5.0f, 0.2f)}});
+    for (int i = 0; i < 8; ++i)
+        addBody(s, {.position = {-7.5f + 1.0f * i, 5.0f + 0.3f * i}, .shapes = {boxShape(0.3f, 0.3f)}});
+    return s;
+}
+
+SceneBehaviour conveyorBehaviour() {
+    return {.setup = [](SceneWorld& sw) {
+                for (ShapeId belt : shapesNamed(sw, "belt_right")) sw.world.setTangentSpeed(belt, 2.0f);
+                for (ShapeId belt : shapesNamed(sw, "belt_left")) sw.world.setTangentSpeed(belt, -2.0f);
+            },
+            .draw = {}};
+}
+
+// A turning laser and shapes to light: the beam is a ray cast reflected up to four times.
+Scene laser() {
+    Scene s;
+    s.steps = 1200;
+    addGround(s, 10.0f);
+    addBody(s, {.type = BodyType::Static, .position = {-9.0f, 5.0f}, .shapes = {boxShape(0.2f, 5.0f)}});
+    addBody(s, {.type = BodyType::Static, .position = {9.0f, 5.0f}, .shapes = {boxShape(0.2f, 5.0f)}});
+    addBody(s, {.type = BodyType::Kinematic, .position = {3.0f, 5.0f}, .angularVelocity = 0.5f, .shapes = {boxShape(1.5f, 0.2f)}});
+    for (int i = 0; i < 6; ++i)
+        addBody(s, {.position = {-5.0f + 1.5f * i, 1.0f + 0.5f * i}, .shapes = {i % 2 ? circleShape(0.4f) : boxShape(0.4f, 0.4f)}});
+    return s;
+}
+
+SceneBehaviour laserBehaviour() {
+    return {.setup = {}, .draw = [](const SceneWorld& sw, DebugDraw& draw) {
+                const float angle = -0.3f + 0.6f * std::sin(0.01f * static_cast<float>(sw.stepIndex));
+                Vec2 origin{-8.5f, 8.0f}, direction{std::cos(angle - 0.4f), std::sin(angle - 0.4f)};
+                const Color beam{255, 40, 40, 255};
+                for (int bounce = 0; bounce < 5; ++bounce) {
+                    const Vec2 translation = 30.0f * direction;
+                    const std::optional<RayHit> hit = sw.world.castRayClosest(origin, translation);
+                    if (!hit) {
+                        draw.drawSegment(origin, origin + translation, beam);
+                        break;
+                    }
+                    draw.drawSegment(origin, hit->point, beam);
+                    draw.drawPoint(hit->point, 6.0f, beam);
+                    // Mirror reflection d' = d − 2 (d·n) n, started a hair off the surface.
+                    direction = direction - 2.0f * dot(direction, hit->normal) * hit->normal;
+                    origin = hit->point + 1.0e-3f * hit->normal;
+                }
+            }};
+}
+
+const std::map<std::string_view, SceneBehaviour>& behaviours() {
+    static const std::map<std::string_view, SceneBehaviour> table = {
+        {"one_way_platform", oneWayBehaviour()},
+        {"sensor_zone", sensorZoneBehaviour()},
+        {"conveyor", conveyorBehaviour()},
+        {"laser", laserBehaviour()},
+    };
+    return table;
+}
+
+}  // namespace
+
+std::vector<BuiltinScene> featureScenes() {
+    return {
+        {"one_way_platform", "balls and boxes launched up through one-way platforms land on them (pre-solve callback)",
+         oneWayPlatform},
+        {"sensor_zone", "a sensor zone reports the shapes raining through it and does not touch them", sensorZone},
+        {"bullet_wall", "0.1 m bullets at 500 m/s stop at a 0.1 m wall and a thin plank (continuous collision)", bulletWall},
+        {"conveyor", "two conveyor belts (tangent speed +-2 m/s) carry boxes right, then left", conveyor},
+        {"laser", "a ray-cast laser reflects off boxes, balls and a turning mirror", laser},
+    };
+}
+
+const SceneBehaviour* findSceneBehaviour(std::string_view sceneName) {
+    const auto found = behaviours().find(sceneName);
+    return found == behaviours().end() ? nullptr : &found->second;
+}
+
+}  // namespace perpdot
