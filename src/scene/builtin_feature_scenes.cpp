@@ -62,7 +62,7 @@ Scene sensorZone() {
     zone.sensor = true;
     addBody(s, {.name = "zone", .type = BodyType::Static, .position = {0.0f, 4.0f}, .shapes = {zone}});
     for (int i = 0; i < 12; ++i) {
-        const float x = -4.0f + 0.7f * i;
+        const float x = -2.75f + 0.5f * i;
         addBody(s, {.position = {x, 9.0f + 0.6f * (i % 4)}, .shapes = {i % 2 ? boxShape(0.2f, 0.2f) : circleShape(0.2f)}});
     }
     return s;
