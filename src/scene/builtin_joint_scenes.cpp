@@ -38,7 +38,7 @@ Scene doublePendulum() {
     return s;
 }
 
-// 40 links of 0.5 m hung from one end, released horizontal, with a heavy ball at the tip.
+// 40 links of 0.5 m hung from one end, released horizontal, with a ball of 25 links at the tip.
 Scene chain() {
     Scene s;
     addGround(s, 20.0f);
@@ -52,7 +52,7 @@ Scene chain() {
         previous = name;
     }
     SceneShape weight = circleShape(0.5f);
-    weight.density = 20.0f;
+    weight.density = 2.0f;
     addBody(s, {.name = "weight", .position = {80.0f * half, top}, .shapes = {weight}});
     s.joints.push_back(revolute(previous, "weight", {80.0f * half, top}));
     return s;
