@@ -21,6 +21,9 @@ AABB combine(const AABB& a, const AABB& b) {
 
 Vec2 middle(const AABB& box) { return 0.5f * (box.lower + box.upper); }
 
+// Solid shapes are swept; sensors and (massless) segments and chains on a moving body are not.
+bool sweeps(const ShapeData& s) { return !s.sensor && s.minExtent > 0.0f; }
+
 // The world endpoints of a segment or of one chain child.
 bool segmentOf(const ShapeData& s, int child, const Transform& xf, Vec2& p1, Vec2& p2) {
     if (auto* segment = std::get_if<Segment>(&s.geometry)) {
@@ -60,7 +63,7 @@ bool World::Impl::isFast(int index, Vec2 c0, float a0) const {
     if (b.type != BodyType::Dynamic) return false;
     float minExtent = std::numeric_limits<float>::max(), maxExtent = 0.0f;
     for (int s : b.shapes) {
-        if (shapes[s].sensor) continue;
+        if (!sweeps(shapes[s])) continue;
         minExtent = std::min(minExtent, shapes[s].minExtent);
         maxExtent = std::max(maxExtent, shapes[s].maxExtent);
     }
@@ -78,7 +81,7 @@ void World::Impl::solveContinuous(int index, Vec2 c0, float a0) {
     float t = 1.0f;
     for (int s : b.shapes) {
         const ShapeData& shape = shapes[s];
-        if (shape.sensor) continue;
+        if (!sweeps(shape)) continue;
         const AABB start = collision.computeAABB(s, 0, xf0), end = collision.computeAABB(s, 0, b.xf);
         collision.query(combine(start, end), [&](int proxy) {
             const collide::ChildKey key = collision.proxyKey(proxy);

@@ -129,8 +129,10 @@ void finalizeBodies(World::Impl& w) {
                 continue;
             }
             w.solveContinuous(index, c0, a0);
+            w.synchronizeProxies(index, b.center - c0);
+            continue;
         }
-        w.synchronizeProxies(index, b.center - c0);
+        w.synchronizeProxies(index, s.dp);
     }
     for (int k : w.bullets) {
         const int index = w.awakeBodies[k];
