@@ -27,7 +27,8 @@ float roundingRadius(const ShapeData& s) {
     return 0.0f;
 }
 float mixRollingResistance(const ShapeData& a, const ShapeData& b) {
-    return std::max(a.rollingResistance, b.rollingResistance) * std::max(roundingRadius(a), roundingRadius(b));
+    const float resistance = std::max(a.rollingResistance, b.rollingResistance);
+    return resistance > 0.0f ? resistance * std::max(roundingRadius(a), roundingRadius(b)) : 0.0f;
 }
 
 void linkEdge(World::Impl& w, int contact, int side, int bodyIndex) {

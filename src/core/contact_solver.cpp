@@ -54,7 +54,7 @@ void prepareContacts(World::Impl& w, const StepContext& ctx) {
         c.tangentSpeed = contact.tangentSpeed;
         c.rollingImpulse = ctx.enableWarmStarting ? contact.rollingImpulse : 0.0f;
         const float kRolling = c.invIA + c.invIB;
-        c.rollingMass = kRolling > 0.0f ? 1.0f / kRolling : 0.0f;
+        c.rollingMass = c.rollingResistance > 0.0f && kRolling > 0.0f ? 1.0f / kRolling : 0.0f;
         const bool againstStatic = ba.invMass == 0.0f || bb.invMass == 0.0f;
         c.softness = againstStatic ? ctx.staticSoftness : ctx.contactSoftness;
         c.pointCount = contact.pointCount;
@@ -91,8 +91,10 @@ void warmStartContacts(World::Impl& w, const StepContext& ctx) {
             const ContactConstraintPoint& cp = c.points[i];
             applyImpulse(c, a, b, cp.anchorA, cp.anchorB, cp.normalImpulse * c.normal + cp.tangentImpulse * t);
         }
-        a.w -= c.invIA * c.rollingImpulse;
-        b.w += c.invIB * c.rollingImpulse;
+        if (c.rollingImpulse != 0.0f) {
+            a.w -= c.invIA * c.rollingImpulse;
+            b.w += c.invIB * c.rollingImpulse;
+        }
     }
 }
 

@@ -95,6 +95,7 @@ int World::Impl::addShape(BodyId bodyId, const ShapeDef& def) {
     s.sensor = def.sensor;
     s.enableContactEvents = def.enableContactEvents;
     s.enableHitEvents = def.enableHitEvents;
+    anyHitEvents = anyHitEvents || def.enableHitEvents;
     s.enableSensorEvents = def.enableSensorEvents;
     s.enablePreSolveEvents = def.enablePreSolveEvents;
     s.filter = def.filter;

@@ -131,6 +131,7 @@ struct World::Impl {
     std::vector<SensorEndTouchEvent> sensorEndEvents;
     size_t contactEndReported = 0, sensorEndReported = 0;
     PreSolveFn preSolve;
+    bool anyHitEvents = false;  // a shape with enableHitEvents was ever created: look for hits
     std::vector<int> bullets;  // continuous.cpp scratch: bullets wait until the others are final
 
     // Solver arrays, rebuilt each step without reallocating.
