@@ -1,7 +1,8 @@
 // Chains without ghost collisions: a box sliding over a floor made of many short chain segments
 // never catches on a seam, because every one-sided chain edge knows its neighbours (ghost
-// vertices). A floor of separate two-sided segments has no such knowledge; the second test
-// measures the difference.
+// vertices). Floors of separate two-sided segments or of box tiles have no such knowledge; the
+// second test measures them: box tiles snag badly (the classic ghost collision), which shows the
+// measurement would catch a snag.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -27,18 +28,23 @@ struct Slide {
 constexpr float mu = 0.2f, g = 10.0f, v0 = 8.0f;
 constexpr float tileWidth = 0.5f;  // seams every 0.5 m, narrower than the 1 m box
 
+enum class Floor { Chain, Segments, BoxTiles };
+
 // A 1 m box (friction μ on both) starts sliding at 8 m/s over a floor from x = −20 to 30.
-Slide slide(bool chainFloor) {
+Slide slide(Floor kind) {
     World world;
     const BodyId ground = features::addStatic(world, {});
     const ShapeDef floorDef{.friction = mu};
-    if (chainFloor) {
+    if (kind == Floor::Chain) {
         // Listed right to left: one-sided chain edges collide on the right of v1→v2, i.e. on top.
         Chain floor;
         for (float x = 30.0f; x >= -20.0f; x -= tileWidth) floor.vertices.push_back({x, 0.0f});
         world.createShape(ground, floorDef, floor);
-    } else {
+    } else if (kind == Floor::Segments) {
         for (float x = -20.0f; x < 30.0f; x += tileWidth) world.createShape(ground, floorDef, Segment{{x, 0.0f}, {x + tileWidth, 0.0f}});
+    } else {
+        for (float x = -20.0f; x < 30.0f; x += tileWidth)
+            world.createShape(ground, floorDef, makeBox(0.5f * tileWidth, 0.25f, {x + 0.5f * tileWidth, -0.25f}));
     }
     const BodyId box = features::addDynamic(world, {-15.0f, 0.5f});
     world.createShape(box, {.friction = mu}, makeBox(0.5f, 0.5f));
@@ -64,7 +70,7 @@ Slide slide(bool chainFloor) {
 }
 
 TEST(FeaturesChain, BoxSlidesAcrossManyChainSegmentsWithoutSnagging) {
-    const Slide s = slide(true);
+    const Slide s = slide(Floor::Chain);
     EXPECT_LT(s.maxVerticalSpeed, 0.01f);
     EXPECT_LT(s.maxAngularSpeed, 0.01f);
     EXPECT_LE(s.maxSpeedIncrease, 1e-4f);  // speed only ever decreases
@@ -73,21 +79,23 @@ TEST(FeaturesChain, BoxSlidesAcrossManyChainSegmentsWithoutSnagging) {
     EXPECT_NEAR(s.distance, v0 * v0 / (2.0f * mu * g), 0.3f);
 }
 
-TEST(FeaturesChain, SeparateSegmentsAreMeasuredForComparison) {
-    // Two-sided segments each see the box's corner alone at a seam; Box2D 2.4's edge collision
-    // may report the neighbouring segment's end as a face and bump the box. Record what happens.
-    const Slide chain = slide(true), segments = slide(false);
-    RecordProperty("segments_max_vy_mm_per_s", static_cast<int>(1000.0f * segments.maxVerticalSpeed));
-    RecordProperty("segments_max_omega_mrad_per_s", static_cast<int>(1000.0f * segments.maxAngularSpeed));
-    RecordProperty("segments_max_decel_error_mm_per_s2", static_cast<int>(1000.0f * segments.maxDecelerationError));
-    RecordProperty("segments_distance_mm", static_cast<int>(1000.0f * segments.distance));
-    std::printf("chain:    max|vy| %.4f  max|w| %.4f  decel err %.4f  distance %.3f\n", chain.maxVerticalSpeed,
+TEST(FeaturesChain, BoxTilesSnagAndSeparateSegmentsAreMeasured) {
+    // Box tiles: the sliding box's corner meets each tile's side face at the seams and is thrown
+    // (Box2D's ghost collision). The same measurement that passes the chain fails them.
+    const Slide chain = slide(Floor::Chain), segments = slide(Floor::Segments), tiles = slide(Floor::BoxTiles);
+    std::printf("chain:     max|vy| %.4f  max|w| %.4f  decel err %.4f  distance %.3f\n", chain.maxVerticalSpeed,
                 chain.maxAngularSpeed, chain.maxDecelerationError, chain.distance);
-    std::printf("segments: max|vy| %.4f  max|w| %.4f  decel err %.4f  distance %.3f\n", segments.maxVerticalSpeed,
+    std::printf("segments:  max|vy| %.4f  max|w| %.4f  decel err %.4f  distance %.3f\n", segments.maxVerticalSpeed,
                 segments.maxAngularSpeed, segments.maxDecelerationError, segments.distance);
-    // The chain is never worse than the segments.
-    EXPECT_LE(chain.maxVerticalSpeed, segments.maxVerticalSpeed + 1e-6f);
-    EXPECT_LE(chain.maxAngularSpeed, segments.maxAngularSpeed + 1e-6f);
+    std::printf("box tiles: max|vy| %.4f  max|w| %.4f  decel err %.4f  distance %.3f\n", tiles.maxVerticalSpeed,
+                tiles.maxAngularSpeed, tiles.maxDecelerationError, tiles.distance);
+    EXPECT_GT(tiles.maxVerticalSpeed, 0.1f);
+    EXPECT_GT(tiles.maxDecelerationError, 10.0f * mu * g);  // stopped dead at a seam at least once
+    EXPECT_LT(tiles.distance, 0.9f * v0 * v0 / (2.0f * mu * g));
+    // Two-sided segments on a flat floor: Box2D 2.4.1's edge collision keeps the face normal, so
+    // they do not snag here either (within 10× the chain's noise, far from the tiles' snags).
+    EXPECT_LT(segments.maxVerticalSpeed, 0.01f);
+    EXPECT_NEAR(segments.distance, chain.distance, 0.05f);
 }
 
 }  // namespace
