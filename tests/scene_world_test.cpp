@@ -117,6 +117,27 @@ TEST(SceneWorld, ImpulsesAndTorquesApplyOnTheirSteps) {
     EXPECT_NEAR(w.angularVelocity(box), omega, 1e-5f);
 }
 
+TEST(SceneWorld, JointAnchorsAreWhereTheSceneSays) {
+    Scene scene = freeBox({});
+    addBody(scene, {.name = "pivot", .type = BodyType::Static, .position = {-1.0f, 2.0f}});
+    scene.joints.push_back({.type = JointType::Revolute, .bodyA = "pivot", .bodyB = "box", .anchor = Vec2{0.0f, 2.0f}});
+    scene.joints.push_back({.type = JointType::Distance, .bodyA = "pivot", .bodyB = "box", .anchor = Vec2{-1.0f, 2.0f},
+                            .anchorB = Vec2{1.5f, 2.0f}});
+    scene.joints.push_back({.type = JointType::Weld, .bodyA = "pivot", .bodyB = "box", .anchor = Vec2{0.5f, 2.0f}});
+    SceneWorld built = buildWorld(scene);
+    ASSERT_EQ(built.joints.size(), 3u);
+    const auto near = [](Vec2 a, Vec2 b) { return distance(a, b) < 1e-5f; };
+    EXPECT_TRUE(near(built.world.jointAnchorA(built.joints[0]), (Vec2{0.0f, 2.0f})));
+    EXPECT_TRUE(near(built.world.jointAnchorB(built.joints[0]), (Vec2{0.0f, 2.0f})));
+    EXPECT_TRUE(near(built.world.jointAnchorB(built.joints[1]), (Vec2{1.5f, 2.0f})));
+    EXPECT_EQ(built.world.jointBodyA(built.joints[1]), built.bodies[1]);
+    // Every joint is satisfied as built (the distance joint's length is the current distance, the
+    // weld's reference angle is the bodies' angle difference), so nothing moves.
+    for (int i = 0; i < 30; ++i) built.step();
+    EXPECT_TRUE(near(built.world.position(built.bodies[0]), scene.bodies[0].position));
+    EXPECT_NEAR(built.world.angle(built.bodies[0]), scene.bodies[0].angle, 1e-5f);
+}
+
 TEST(SceneWorld, HandBuiltMistakesAreRefused) {
     Scene scene = freeBox({{.kind = SceneAction::Kind::Torque, .body = "ghost", .scalar = 1.0f}});
     EXPECT_THROW(buildWorld(scene), Error);
