@@ -48,6 +48,13 @@ struct ContactData {
     ContactPoint points[2];
 };
 
+// Pool sizes and health counters, for soak tests and tools.
+struct WorldStats {
+    int bodies = 0, shapes = 0, contacts = 0;            // live; contacts: every cached pair, touching or not
+    int bodySlots = 0, shapeSlots = 0, contactSlots = 0;  // pool sizes (live + free): bounded in steady state
+    int frozenBodies = 0;  // times a body was frozen because its state became NaN or infinite
+};
+
 class World {
 public:
     explicit World(const WorldDef& def = {});
@@ -169,6 +176,16 @@ public:
     // Shapes overlapping a query shape placed at `xf`.
     std::vector<ShapeId> overlapShape(const Circle& shape, const Transform& xf, const Filter& filter = {}) const;
     std::vector<ShapeId> overlapShape(const Polygon& shape, const Transform& xf, const Filter& filter = {}) const;
+
+    // --- snapshots (bit-exact: restore + N steps equals N steps) ---
+    // Versioned bytes of the whole state: settings, bodies, shapes, joints, and the contact cache
+    // with its warm-start impulses. Not saved: userData pointers, the pre-solve callback, events.
+    std::vector<uint8_t> snapshot() const;
+    // Replaces this world's state with a snapshot's (ids from the snapshotted world stay valid, the
+    // pre-solve callback stays). Corrupt or truncated bytes: Error, and the world is unchanged.
+    void restore(std::span<const uint8_t> snapshot);
+
+    WorldStats stats() const;
 
     // --- settings ---
     const WorldDef& settings() const;

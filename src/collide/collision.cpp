@@ -145,6 +145,15 @@ AABB CollisionSystem::fatAABB(int proxy) const {
     return {fromB2(box.lowerBound), fromB2(box.upperBound)};
 }
 
+// The tree fattens what it is given, so insert `fat` itself (every ancestor then contains the
+// fattened box, hence `fat`) and set the leaf's own box to `fat`. GetFatAABB returns a const
+// reference to that box in the tree's (non-const) node storage, so writing through it is defined.
+int CollisionSystem::restoreProxy(const AABB& fat, ChildKey key) {
+    const int proxy = createProxy(fat, key);
+    const_cast<b2AABB&>(impl_->tree.GetFatAABB(proxy)) = b2AABB{toB2(fat.lower), toB2(fat.upper)};
+    return proxy;
+}
+
 bool CollisionSystem::wasMoved(int proxy) const { return impl_->tree.WasMoved(proxy); }
 void CollisionSystem::clearMoved(int proxy) { impl_->tree.ClearMoved(proxy); }
 

@@ -69,6 +69,8 @@ public:
     // Re-fits the proxy if `aabb` left its fat AABB; returns whether it moved.
     bool moveProxy(int proxy, const AABB& aabb, Vec2 displacement);
     AABB fatAABB(int proxy) const;
+    // A new proxy whose fat AABB is exactly `fat` (a snapshot's), marked as moved like createProxy's.
+    int restoreProxy(const AABB& fat, ChildKey key);
     bool wasMoved(int proxy) const;
     void clearMoved(int proxy);
     ChildKey proxyKey(int proxy) const;

@@ -2,18 +2,13 @@
 // and warm-start impulses carried from one step to the next by Box2D's feature ids.
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "core/world_impl.hpp"
 
 namespace perpdot {
 
 namespace {
-
-uint64_t pairKey(int proxyA, int proxyB) {
-    const auto lo = static_cast<uint32_t>(std::min(proxyA, proxyB));
-    const auto hi = static_cast<uint32_t>(std::max(proxyA, proxyB));
-    return (static_cast<uint64_t>(lo) << 32) | hi;
-}
 
 // Box2D's mixing rules, so cross-checks compare like with like.
 float mixFriction(float a, float b) { return std::sqrt(a * b); }
@@ -53,16 +48,29 @@ void unlinkEdge(World::Impl& w, int contact, int side, int bodyIndex) {
 
 void World::Impl::updatePairs() {
     // Every proxy that moved out of its fat AABB (or is new) looks for overlapping proxies.
+    newPairs.clear();
     for (int proxy : movedProxies) {
         collision.query(collision.fatAABB(proxy), [&](int other) {
             // When both moved, only the pair's lower proxy reports it.
             if (other == proxy || (other < proxy && collision.wasMoved(other))) return true;
-            addPair(proxy, other);
+            NewPair p{collision.proxyKey(proxy), collision.proxyKey(other), proxy, other};
+            if (std::tie(p.b.shape, p.b.child) < std::tie(p.a.shape, p.a.child)) {
+                std::swap(p.a, p.b);
+                std::swap(p.proxyA, p.proxyB);
+            }
+            newPairs.push_back(p);
             return true;
         });
     }
     for (int proxy : movedProxies) collision.clearMoved(proxy);
     movedProxies.clear();
+    // The tree's internal shape decides the order pairs are found in. Contacts are created in the
+    // order of their child keys instead, so that contact order (and the solver's) depends on the
+    // world's state alone: a world restored from a snapshot, with a rebuilt tree, steps bit for bit alike.
+    std::sort(newPairs.begin(), newPairs.end(), [](const NewPair& x, const NewPair& y) {
+        return std::tie(x.a.shape, x.a.child, x.b.shape, x.b.child) < std::tie(y.a.shape, y.a.child, y.b.shape, y.b.child);
+    });
+    for (const NewPair& p : newPairs) addPair(p.proxyA, p.proxyB);
 }
 
 void World::Impl::addPair(int proxyA, int proxyB) {
@@ -79,7 +87,7 @@ void World::Impl::addPair(int proxyA, int proxyB) {
     if (!collide::CollisionSystem::canCollide(sa->type, sb->type)) return;
     if (!shouldCollide(sa->filter, sb->filter)) return;
     if (!jointAllowsCollision(*this, sa->body, sb->body)) return;
-    const uint64_t key = pairKey(proxyA, proxyB);
+    const uint64_t key = proxyPairKey(proxyA, proxyB);
     if (pairs.contains(key)) return;
 
     if (collide::CollisionSystem::mustSwap(sa->type, sb->type)) {

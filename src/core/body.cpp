@@ -189,6 +189,7 @@ void World::setTransform(BodyId id, Vec2 position, float angle) {
 }
 
 void World::setLinearVelocity(BodyId id, Vec2 v) {
+    impl_->checkUnlocked("setLinearVelocity");
     if (!isFinite(v)) throw Error("setLinearVelocity: velocity must be finite");
     Body& b = impl_->body(id);
     if (b.type == BodyType::Static) return;
@@ -197,6 +198,7 @@ void World::setLinearVelocity(BodyId id, Vec2 v) {
 }
 
 void World::setAngularVelocity(BodyId id, float omega) {
+    impl_->checkUnlocked("setAngularVelocity");
     if (!std::isfinite(omega)) throw Error("setAngularVelocity: ω must be finite");
     Body& b = impl_->body(id);
     if (b.type == BodyType::Static || b.fixedRotation) return;
@@ -205,6 +207,7 @@ void World::setAngularVelocity(BodyId id, float omega) {
 }
 
 void World::setAwake(BodyId id, bool awake) {
+    impl_->checkUnlocked("setAwake");
     Body& b = impl_->body(id);
     if (awake) {
         impl_->wake(id.index);
@@ -217,22 +220,26 @@ void World::setAwake(BodyId id, bool awake) {
 }
 
 void World::setGravityScale(BodyId id, float scale) {
+    impl_->checkUnlocked("setGravityScale");
     if (!std::isfinite(scale)) throw Error("setGravityScale: scale must be finite");
     impl_->body(id).gravityScale = scale;
 }
 
 void World::setLinearDamping(BodyId id, float damping) {
+    impl_->checkUnlocked("setLinearDamping");
     if (!(damping >= 0.0f && std::isfinite(damping))) throw Error("setLinearDamping: damping must be finite and >= 0");
     impl_->body(id).linearDamping = damping;
 }
 
 void World::setAngularDamping(BodyId id, float damping) {
+    impl_->checkUnlocked("setAngularDamping");
     if (!(damping >= 0.0f && std::isfinite(damping))) throw Error("setAngularDamping: damping must be finite and >= 0");
     impl_->body(id).angularDamping = damping;
 }
 
 // Forces accumulate until the next step: F, and τ = perpDot(P - CM, F) about the centre of mass.
 void World::applyForce(BodyId id, Vec2 force, Vec2 worldPoint) {
+    impl_->checkUnlocked("applyForce");
     if (!isFinite(force) || !isFinite(worldPoint)) throw Error("applyForce: force and point must be finite");
     Body& b = impl_->body(id);
     if (b.type != BodyType::Dynamic) return;
@@ -244,6 +251,7 @@ void World::applyForce(BodyId id, Vec2 force, Vec2 worldPoint) {
 void World::applyForceToCenter(BodyId id, Vec2 force) { applyForce(id, force, impl_->body(id).center); }
 
 void World::applyTorque(BodyId id, float torque) {
+    impl_->checkUnlocked("applyTorque");
     if (!std::isfinite(torque)) throw Error("applyTorque: torque must be finite");
     Body& b = impl_->body(id);
     if (b.type != BodyType::Dynamic) return;
@@ -253,6 +261,7 @@ void World::applyTorque(BodyId id, float torque) {
 
 // An impulse J at P changes momentum at once: Δv = J/m, Δω = perpDot(P - CM, J)/I.
 void World::applyLinearImpulse(BodyId id, Vec2 impulse, Vec2 worldPoint) {
+    impl_->checkUnlocked("applyLinearImpulse");
     if (!isFinite(impulse) || !isFinite(worldPoint)) throw Error("applyLinearImpulse: impulse and point must be finite");
     Body& b = impl_->body(id);
     if (b.type != BodyType::Dynamic) return;
@@ -266,6 +275,7 @@ void World::applyLinearImpulseToCenter(BodyId id, Vec2 impulse) {
 }
 
 void World::applyAngularImpulse(BodyId id, float impulse) {
+    impl_->checkUnlocked("applyAngularImpulse");
     if (!std::isfinite(impulse)) throw Error("applyAngularImpulse: impulse must be finite");
     Body& b = impl_->body(id);
     if (b.type != BodyType::Dynamic) return;

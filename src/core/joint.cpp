@@ -295,6 +295,7 @@ float World::jointReactionTorque(JointId id) const {
 }
 
 void World::setMouseTarget(JointId id, Vec2 target) {
+    impl_->checkUnlocked("setMouseTarget");
     Joint& j = checkedJoint(*impl_, id);
     if (j.type != JointType::Mouse) throw Error("setMouseTarget: not a mouse joint");
     requireFinite(isFinite(target), "setMouseTarget: target");
@@ -303,6 +304,7 @@ void World::setMouseTarget(JointId id, Vec2 target) {
 }
 
 void World::setMotorSpeed(JointId id, float speed) {
+    impl_->checkUnlocked("setMotorSpeed");
     Joint& j = checkedJoint(*impl_, id);
     requireFinite(std::isfinite(speed), "setMotorSpeed: speed");
     switch (j.type) {

@@ -17,22 +17,24 @@ void validate(const ShapeDef& def) {
     if (!std::isfinite(def.tangentSpeed)) throw Error("ShapeDef.tangentSpeed must be finite");
 }
 
-void validate(const Circle& c) {
+}  // namespace
+
+void validateGeometry(const Circle& c) {
     if (!isFinite(c.center)) throw Error("circle center must be finite");
     if (!(std::isfinite(c.radius) && c.radius > 0.0f)) throw Error("circle radius must be finite and > 0");
 }
 
-void validate(const Polygon& p) {
+void validateGeometry(const Polygon& p) {
     // Re-run the construction checks: a hand-filled Polygon gets the same scrutiny as makePolygon's.
     makePolygon(std::span(p.vertices.data(), static_cast<size_t>(std::clamp(p.count, 0, maxPolygonVertices + 1))), p.radius);
 }
 
-void validate(const Segment& s) {
+void validateGeometry(const Segment& s) {
     if (!isFinite(s.v1) || !isFinite(s.v2)) throw Error("segment vertices must be finite");
     if (distance(s.v1, s.v2) < collide::linearSlop) throw Error("segment is shorter than the linear slop (0.005 m)");
 }
 
-void validate(const Chain& c) {
+void validateGeometry(const Chain& c) {
     const size_t minimum = c.loop ? 3 : 2;
     if (c.vertices.size() < minimum) throw Error("chain needs at least " + std::to_string(minimum) + " vertices");
     for (size_t i = 0; i < c.vertices.size(); ++i) {
@@ -42,12 +44,14 @@ void validate(const Chain& c) {
     }
 }
 
+namespace {
+
 template <class Geometry>
 ShapeId create(World::Impl& w, BodyId bodyId, const ShapeDef& def, const Geometry& geometry) {
     w.checkUnlocked("createShape");
     w.body(bodyId);
     validate(def);
-    validate(geometry);
+    validateGeometry(geometry);
     const int index = w.addShape(bodyId, def);
     w.shapes[index].geometry = geometry;
     w.collision.setGeometry(index, geometry);
@@ -206,11 +210,13 @@ AABB World::aabb(ShapeId id) const {
 
 // Material changes reach existing contacts, whose mixed values are refreshed each narrowphase.
 void World::setFriction(ShapeId id, float friction) {
+    impl_->checkUnlocked("setFriction");
     if (!(std::isfinite(friction) && friction >= 0.0f)) throw Error("setFriction: friction must be finite and >= 0");
     impl_->shape(id).friction = friction;
 }
 
 void World::setRestitution(ShapeId id, float restitution) {
+    impl_->checkUnlocked("setRestitution");
     if (!(std::isfinite(restitution) && restitution >= 0.0f)) throw Error("setRestitution: restitution must be finite and >= 0");
     impl_->shape(id).restitution = restitution;
 }
@@ -219,11 +225,13 @@ float World::rollingResistance(ShapeId id) const { return impl_->shape(id).rolli
 float World::tangentSpeed(ShapeId id) const { return impl_->shape(id).tangentSpeed; }
 
 void World::setRollingResistance(ShapeId id, float resistance) {
+    impl_->checkUnlocked("setRollingResistance");
     if (!(std::isfinite(resistance) && resistance >= 0.0f)) throw Error("setRollingResistance: resistance must be finite and >= 0");
     impl_->shape(id).rollingResistance = resistance;
 }
 
 void World::setTangentSpeed(ShapeId id, float speed) {
+    impl_->checkUnlocked("setTangentSpeed");
     if (!std::isfinite(speed)) throw Error("setTangentSpeed: speed must be finite");
     impl_->shape(id).tangentSpeed = speed;
 }
@@ -231,6 +239,7 @@ void World::setTangentSpeed(ShapeId id, float speed) {
 void World::enablePreSolveEvents(ShapeId id, bool enable) { impl_->shape(id).enablePreSolveEvents = enable; }
 
 void World::setDensity(ShapeId id, float density) {
+    impl_->checkUnlocked("setDensity");
     if (!(std::isfinite(density) && density >= 0.0f)) throw Error("setDensity: density must be finite and >= 0");
     ShapeData& s = impl_->shape(id);
     s.density = density;

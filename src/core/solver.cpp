@@ -85,13 +85,25 @@ void applySubstepForces(World::Impl& w) {
     }
 }
 
+// v scaled down to `maxSpeed` along its own direction. v·v overflows beyond 1.8e19 m/s: the
+// direction then comes from v divided by its largest component first.
+Vec2 clampSpeed(Vec2 v, float maxSpeed) {
+    if (!(dot(v, v) > maxSpeed * maxSpeed)) return v;
+    float len = length(v);
+    if (!std::isfinite(len)) {
+        v *= 1.0f / std::max(std::fabs(v.x), std::fabs(v.y));
+        len = length(v);
+    }
+    return v * (maxSpeed / len);
+}
+
 // x += hs v, θ += hs ω for one substep, with speeds clamped against blow-ups.
 void integratePositions(World::Impl& w, const StepContext& ctx) {
     const float maxLinearSpeed = w.def.maxLinearSpeed;
     const float maxAngularSpeed = 0.25f * pi * ctx.invHs;
     for (size_t i = 1; i < w.states.size(); ++i) {
         BodyState& s = w.states[i];
-        if (dot(s.v, s.v) > maxLinearSpeed * maxLinearSpeed) s.v *= maxLinearSpeed / length(s.v);
+        s.v = clampSpeed(s.v, maxLinearSpeed);
         if (s.w * s.w > maxAngularSpeed * maxAngularSpeed) s.w *= maxAngularSpeed / std::fabs(s.w);
         s.dp += ctx.hs * s.v;
         w.stepRotation[i] += ctx.hs * s.w;
@@ -110,9 +122,13 @@ void finalizeBodies(World::Impl& w) {
         const BodyState& s = w.states[k + 1];
         const float dAngle = w.stepRotation[k + 1];
         if (!isFinite(s.v) || !std::isfinite(s.w) || !isFinite(s.dp) || !std::isfinite(dAngle)) {
-            // A body that went non-finite is frozen where it was instead of spreading NaN.
+            // A body that went non-finite is frozen where it was instead of spreading NaN: stopped,
+            // put to sleep until something wakes it, and counted in stats().frozenBodies.
             b.v = {};
             b.w = 0.0f;
+            b.awake = false;
+            b.sleepTime = 0.0f;
+            ++w.frozenBodies;
             continue;
         }
         const Vec2 c0 = b.center;

@@ -2,6 +2,7 @@
 // the collision system, and the per-step solver arrays.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <unordered_map>
@@ -108,6 +109,25 @@ struct ContactConstraint {
     ContactConstraintPoint points[2];
 };
 
+// Identity of a broadphase pair in World::Impl::pairs.
+inline uint64_t proxyPairKey(int proxyA, int proxyB) {
+    const auto lo = static_cast<uint32_t>(std::min(proxyA, proxyB));
+    const auto hi = static_cast<uint32_t>(std::max(proxyA, proxyB));
+    return (static_cast<uint64_t>(lo) << 32) | hi;
+}
+
+// A pair found by the broadphase this step, child keys in order (a < b).
+struct NewPair {
+    collide::ChildKey a, b;
+    int proxyA = -1, proxyB = -1;
+};
+
+// The geometry checks of createShape (shape.cpp), also run on restored snapshots: Error if invalid.
+void validateGeometry(const Circle& circle);
+void validateGeometry(const Polygon& polygon);
+void validateGeometry(const Segment& segment);
+void validateGeometry(const Chain& chain);
+
 struct World::Impl {
     WorldDef def;
     std::vector<Body> bodies;
@@ -121,6 +141,8 @@ struct World::Impl {
     collide::CollisionSystem collision;
     JointStorePtr joints;
     bool locked = false;  // inside step()
+    int frozenBodies = 0;  // bodies frozen because their state went non-finite (stats())
+    std::vector<NewPair> newPairs;  // updatePairs scratch
 
     // Events of the last step (events.cpp). End events raised between steps (a destroyed shape)
     // are kept for the next step: the first `endEventsReported` entries are the stale ones.

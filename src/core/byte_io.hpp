@@ -1,0 +1,96 @@
+// Little-endian bytes for snapshots: a writer, and a bounds-checked reader that throws
+// perpdot::Error on truncation or on a value outside its allowed range, never reading past the end.
+#pragma once
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "perpdot/error.hpp"
+#include "perpdot/math.hpp"
+
+namespace perpdot {
+
+class ByteWriter {
+public:
+    void u8(uint8_t v) { bytes.push_back(v); }
+    void u16(uint16_t v) { unsigned_(v, 2); }
+    void u32(uint32_t v) { unsigned_(v, 4); }
+    void u64(uint64_t v) { unsigned_(v, 8); }
+    void i32(int32_t v) { u32(static_cast<uint32_t>(v)); }
+    void boolean(bool v) { u8(v ? 1 : 0); }
+    void f32(float v) { u32(std::bit_cast<uint32_t>(v)); }
+    void vec2(Vec2 v) { f32(v.x); f32(v.y); }
+
+    std::vector<uint8_t> bytes;
+
+private:
+    void unsigned_(uint64_t v, int size) {
+        for (int i = 0; i < size; ++i) bytes.push_back(static_cast<uint8_t>(v >> (8 * i)));
+    }
+};
+
+class ByteReader {
+public:
+    explicit ByteReader(std::span<const uint8_t> bytes) : bytes_(bytes) {}
+
+    uint8_t u8() { return static_cast<uint8_t>(unsigned_(1)); }
+    uint16_t u16() { return static_cast<uint16_t>(unsigned_(2)); }
+    uint32_t u32() { return static_cast<uint32_t>(unsigned_(4)); }
+    uint64_t u64() { return unsigned_(8); }
+    int32_t i32() { return static_cast<int32_t>(u32()); }
+    bool boolean() {
+        const uint8_t v = u8();
+        if (v > 1) fail("a boolean is " + std::to_string(v));
+        return v == 1;
+    }
+    // Floats must be finite: a snapshot of a world never holds NaN or infinity (finalizeBodies freezes them).
+    float f32() {
+        const float v = std::bit_cast<float>(u32());
+        if (!std::isfinite(v)) fail("a number is not finite");
+        return v;
+    }
+    Vec2 vec2() {
+        const float x = f32();
+        return {x, f32()};
+    }
+    // An int in [lo, hi].
+    int integer(int lo, int hi, const char* what) {
+        const int32_t v = i32();
+        if (v < lo || v > hi)
+            fail(std::string(what) + " " + std::to_string(v) + " is outside [" + std::to_string(lo) + ", " +
+                 std::to_string(hi) + "]");
+        return v;
+    }
+    // An element count, bounded by what the remaining bytes could hold (minBytes per element), so a
+    // corrupt count cannot make the reader allocate gigabytes.
+    int count(size_t minBytes, const char* what) {
+        const uint32_t n = u32();
+        if (n > 0x7FFFFFFFu || n * static_cast<uint64_t>(minBytes) > bytes_.size() - pos_)
+            fail(std::string(what) + " count " + std::to_string(n) + " exceeds the remaining data");
+        return static_cast<int>(n);
+    }
+    void expectEnd() const {
+        if (pos_ != bytes_.size()) fail(std::to_string(bytes_.size() - pos_) + " bytes left over after the end");
+    }
+    [[noreturn]] void fail(const std::string& why) const {
+        throw Error("snapshot: " + why + " (at byte " + std::to_string(pos_) + ")");
+    }
+
+private:
+    uint64_t unsigned_(size_t size) {
+        if (bytes_.size() - pos_ < size) fail("truncated");
+        uint64_t v = 0;
+        for (size_t i = 0; i < size; ++i) v |= static_cast<uint64_t>(bytes_[pos_ + i]) << (8 * i);
+        pos_ += size;
+        return v;
+    }
+
+    std::span<const uint8_t> bytes_;
+    size_t pos_ = 0;
+};
+
+}  // namespace perpdot

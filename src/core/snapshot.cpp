@@ -1,0 +1,454 @@
+// World snapshots: versioned bytes of everything a step reads — settings, bodies, shapes with
+// their broadphase proxies (fat AABBs, move buffer), the contact cache with its warm-start
+// impulses, joints (snapshot_joints.cpp), free lists and generations — so that restore + N steps equals N steps, bit for bit.
+//
+// The Box2D tree itself cannot be saved: restore re-creates one proxy per shape child with the
+// saved fat AABB, and contacts and the move buffer name proxies by child key (shape, child), not
+// by the tree's proxy ids. Nothing depends on the tree's shape or its numbering (updatePairs sorts
+// new pairs by child keys), so the rebuilt tree behaves like the original, and the bytes of a
+// snapshot depend on the world's state alone. The reader checks every count, index and link before the world is
+// touched: corrupt bytes give perpdot::Error and leave the world as it was.
+#include <algorithm>
+#include <unordered_set>
+
+#include "core/snapshot.hpp"
+
+namespace perpdot {
+
+namespace {
+
+constexpr uint8_t magic[8] = {'P', 'E', 'R', 'P', 'D', 'O', 'T', 'S'};
+constexpr uint32_t formatVersion = 1;
+
+// --- settings ---
+
+void writeDef(ByteWriter& out, const WorldDef& d) {
+    out.vec2(d.gravity);
+    out.i32(d.substeps);
+    for (float f : {d.contactHertz, d.contactDampingRatio, d.jointHertz, d.jointDampingRatio, d.contactPushMaxVelocity,
+                    d.restitutionThreshold, d.maxLinearSpeed, d.hitEventThreshold})
+        out.f32(f);
+    for (bool b : {d.enableSleep, d.enableWarmStarting, d.enableContinuous}) out.boolean(b);
+}
+
+WorldDef readDef(ByteReader& in) {
+    WorldDef d;
+    d.gravity = in.vec2();
+    d.substeps = in.integer(1, 64, "substeps");
+    for (float* f : {&d.contactHertz, &d.contactDampingRatio, &d.jointHertz, &d.jointDampingRatio,
+                     &d.contactPushMaxVelocity, &d.restitutionThreshold, &d.maxLinearSpeed, &d.hitEventThreshold})
+        *f = in.f32();
+    for (bool* b : {&d.enableSleep, &d.enableWarmStarting, &d.enableContinuous}) *b = in.boolean();
+    return d;
+}
+
+// --- bodies ---
+
+void writeBody(ByteWriter& out, const World::Impl& w, const Body& b) {
+    out.u8(static_cast<uint8_t>(b.type));
+    out.vec2(b.xf.p);
+    out.f32(b.xf.q.c);
+    out.f32(b.xf.q.s);
+    for (float f : {b.angle}) out.f32(f);
+    for (Vec2 v : {b.localCenter, b.center, b.v}) out.vec2(v);
+    out.f32(b.w);
+    out.vec2(b.force);
+    for (float f : {b.torque, b.mass, b.invMass, b.inertia, b.invInertia, b.linearDamping, b.angularDamping,
+                    b.gravityScale, b.sleepTime})
+        out.f32(f);
+    for (bool f : {b.fixedRotation, b.bullet, b.allowSleep, b.awake}) out.boolean(f);
+    out.i32(b.jointCount);
+    out.i32(b.islandNext);
+    out.u32(static_cast<uint32_t>(b.shapes.size()));
+    for (int s : b.shapes) out.i32(s);
+    // The contact list as the sequence of its edge keys (contact*2 + side), head first.
+    int edges = 0;
+    for (int e = b.contactHead; e >= 0; e = w.contacts[e >> 1].edges[e & 1].next) ++edges;
+    out.u32(static_cast<uint32_t>(edges));
+    for (int e = b.contactHead; e >= 0; e = w.contacts[e >> 1].edges[e & 1].next) out.i32(e);
+}
+
+// Reads a live body; its shape list and contact edges are checked against the other pools later.
+void readBody(ByteReader& in, Body& b, std::vector<int>& edges, int bodyCount, int shapeLimit, int edgeLimit) {
+    const uint8_t type = in.u8();
+    if (type > static_cast<uint8_t>(BodyType::Dynamic)) in.fail("body type " + std::to_string(type) + " is unknown");
+    b.type = static_cast<BodyType>(type);
+    b.xf.p = in.vec2();
+    b.xf.q.c = in.f32();
+    b.xf.q.s = in.f32();
+    b.angle = in.f32();
+    b.localCenter = in.vec2();
+    b.center = in.vec2();
+    b.v = in.vec2();
+    b.w = in.f32();
+    b.force = in.vec2();
+    for (float* f : {&b.torque, &b.mass, &b.invMass, &b.inertia, &b.invInertia, &b.linearDamping, &b.angularDamping,
+                     &b.gravityScale, &b.sleepTime})
+        *f = in.f32();
+    if (b.mass < 0 || b.invMass < 0 || b.inertia < 0 || b.invInertia < 0) in.fail("negative mass or inertia");
+    for (bool* f : {&b.fixedRotation, &b.bullet, &b.allowSleep, &b.awake}) *f = in.boolean();
+    b.jointCount = in.integer(0, 0x3FFFFFFF, "joint count");
+    b.islandNext = in.integer(-1, bodyCount - 1, "island link");
+    b.shapes.resize(in.count(4, "body shape"));
+    for (int& s : b.shapes) s = in.integer(0, shapeLimit - 1, "shape index");
+    edges.resize(in.count(4, "contact edge"));
+    for (int& e : edges) e = in.integer(0, edgeLimit - 1, "contact edge");
+}
+
+// --- shapes ---
+
+void writeGeometry(ByteWriter& out, const ShapeData& s) {
+    out.u8(static_cast<uint8_t>(s.geometry.index()));
+    if (auto* c = std::get_if<Circle>(&s.geometry)) {
+        out.vec2(c->center);
+        out.f32(c->radius);
+    } else if (auto* p = std::get_if<Polygon>(&s.geometry)) {
+        out.u32(static_cast<uint32_t>(p->count));
+        for (int i = 0; i < p->count; ++i) out.vec2(p->vertices[i]);
+        out.f32(p->radius);
+    } else if (auto* seg = std::get_if<Segment>(&s.geometry)) {
+        out.vec2(seg->v1);
+        out.vec2(seg->v2);
+    } else {
+        const Chain& chain = std::get<Chain>(s.geometry);
+        out.u32(static_cast<uint32_t>(chain.vertices.size()));
+        for (Vec2 v : chain.vertices) out.vec2(v);
+        out.boolean(chain.loop);
+    }
+}
+
+// Reads geometry and runs the checks createShape runs; a polygon must also be the exact
+// normalised form makePolygon produces, which is what the world stores.
+void readGeometry(ByteReader& in, ShapeData& s) {
+    try {
+        switch (in.u8()) {
+            case 0: {
+                Circle c;
+                c.center = in.vec2();
+                c.radius = in.f32();
+                validateGeometry(c);
+                s.geometry = c;
+                break;
+            }
+            case 1: {
+                Polygon p;
+                p.count = static_cast<int>(in.u32());
+                if (p.count < 3 || p.count > maxPolygonVertices) in.fail("polygon vertex count out of range");
+                for (int i = 0; i < p.count; ++i) p.vertices[i] = in.vec2();
+                p.radius = in.f32();
+                validateGeometry(p);
+                if (!(makePolygon(std::span(p.vertices.data(), static_cast<size_t>(p.count)), p.radius) == p))
+                    in.fail("polygon is not in normalised form");
+                s.geometry = p;
+                break;
+            }
+            case 2: {
+                Segment seg;
+                seg.v1 = in.vec2();
+                seg.v2 = in.vec2();
+                validateGeometry(seg);
+                s.geometry = seg;
+                break;
+            }
+            case 3: {
+                Chain chain;
+                chain.vertices.resize(in.count(8, "chain vertex"));
+                for (Vec2& v : chain.vertices) v = in.vec2();
+                chain.loop = in.boolean();
+                validateGeometry(chain);
+                s.geometry = std::move(chain);
+                break;
+            }
+            default:
+                in.fail("shape type is unknown");
+        }
+    } catch (const Error& e) {
+        const std::string what = e.what();
+        if (what.starts_with("snapshot:")) throw;
+        in.fail("invalid shape geometry: " + what);
+    }
+    s.type = static_cast<ShapeType>(s.geometry.index());
+}
+
+void writeShape(ByteWriter& out, const World::Impl& w, const ShapeData& s) {
+    out.i32(s.body);
+    writeGeometry(out, s);
+    for (float f : {s.density, s.friction, s.restitution, s.rollingResistance, s.tangentSpeed, s.minExtent, s.maxExtent})
+        out.f32(f);
+    for (bool f : {s.sensor, s.enableContactEvents, s.enableHitEvents, s.enableSensorEvents, s.enablePreSolveEvents})
+        out.boolean(f);
+    out.u16(s.filter.category);
+    out.u16(s.filter.mask);
+    out.u16(static_cast<uint16_t>(s.filter.group));
+    out.u32(static_cast<uint32_t>(s.proxies.size()));
+    for (int proxy : s.proxies) {
+        const AABB fat = w.collision.fatAABB(proxy);
+        out.vec2(fat.lower);
+        out.vec2(fat.upper);
+    }
+}
+
+void readShape(ByteReader& in, ShapeData& s, std::vector<AABB>& proxies, int bodyCount) {
+    s.body = in.integer(0, bodyCount - 1, "shape body");
+    readGeometry(in, s);
+    for (float* f : {&s.density, &s.friction, &s.restitution, &s.rollingResistance, &s.tangentSpeed, &s.minExtent,
+                     &s.maxExtent})
+        *f = in.f32();
+    if (s.density < 0 || s.friction < 0 || s.restitution < 0) in.fail("negative shape material");
+    for (bool* f : {&s.sensor, &s.enableContactEvents, &s.enableHitEvents, &s.enableSensorEvents, &s.enablePreSolveEvents})
+        *f = in.boolean();
+    s.filter.category = in.u16();
+    s.filter.mask = in.u16();
+    s.filter.group = static_cast<int16_t>(in.u16());
+    proxies.resize(in.count(16, "proxy"));
+    for (AABB& fat : proxies) {
+        fat.lower = in.vec2();
+        fat.upper = in.vec2();
+        if (fat.lower.x > fat.upper.x || fat.lower.y > fat.upper.y) in.fail("inverted proxy AABB");
+    }
+}
+
+// --- contacts ---
+
+void writeContact(ByteWriter& out, const Contact& c) {
+    for (bool f : {c.touching, c.sensor, c.overlapping}) out.boolean(f);
+    for (int i : {c.a.shape, c.a.child, c.b.shape, c.b.child}) out.i32(i);
+    for (float f : {c.friction, c.restitution, c.rollingResistance, c.tangentSpeed, c.rollingImpulse}) out.f32(f);
+    out.vec2(c.normal);
+    out.u32(static_cast<uint32_t>(c.pointCount));
+    for (int i = 0; i < c.pointCount; ++i) {
+        const ContactPointState& p = c.points[i];
+        for (Vec2 v : {p.point, p.anchorA, p.anchorB}) out.vec2(v);
+        for (float f : {p.separation, p.normalImpulse, p.tangentImpulse, p.maxNormalImpulse}) out.f32(f);
+        out.u32(p.id);
+    }
+}
+
+void readContact(ByteReader& in, Contact& c, int shapeCount) {
+    for (bool* f : {&c.touching, &c.sensor, &c.overlapping}) *f = in.boolean();
+    c.a.shape = in.integer(0, shapeCount - 1, "contact shape");
+    c.a.child = in.integer(0, 0x7FFFFFFF, "contact child");
+    c.b.shape = in.integer(0, shapeCount - 1, "contact shape");
+    c.b.child = in.integer(0, 0x7FFFFFFF, "contact child");
+    for (float* f : {&c.friction, &c.restitution, &c.rollingResistance, &c.tangentSpeed, &c.rollingImpulse}) *f = in.f32();
+    c.normal = in.vec2();
+    c.pointCount = static_cast<int>(in.u32());
+    if (c.pointCount > 2) in.fail("contact point count out of range");
+    for (int i = 0; i < c.pointCount; ++i) {
+        ContactPointState& p = c.points[i];
+        for (Vec2* v : {&p.point, &p.anchorA, &p.anchorB}) *v = in.vec2();
+        for (float* f : {&p.separation, &p.normalImpulse, &p.tangentImpulse, &p.maxNormalImpulse}) *f = in.f32();
+        p.id = in.u32();
+    }
+}
+
+// --- pools ---
+
+void writeFreeList(ByteWriter& out, const std::vector<int>& free) {
+    out.u32(static_cast<uint32_t>(free.size()));
+    for (int i : free) out.i32(i);
+}
+
+// A free list must name every dead slot exactly once (the order decides which slot is reused next).
+std::vector<int> readFreeList(ByteReader& in, const std::vector<bool>& alive, const char* what) {
+    std::vector<int> free(in.count(4, what));
+    std::vector<bool> seen(alive.size(), false);
+    for (int& i : free) {
+        i = in.integer(0, static_cast<int>(alive.size()) - 1, what);
+        if (alive[i] || seen[i]) in.fail(std::string(what) + " names a live or repeated slot");
+        seen[i] = true;
+    }
+    if (static_cast<size_t>(std::count(alive.begin(), alive.end(), false)) != free.size())
+        in.fail(std::string(what) + " misses dead slots");
+    return free;
+}
+
+// Relinks body `index`'s contact list in the saved order, checking that every edge belongs to it.
+void linkEdges(ByteReader& in, World::Impl& w, int index, const std::vector<int>& edges, std::vector<bool>& seen) {
+    int prev = -1;
+    for (int e : edges) {
+        const Contact& c = w.contacts[e >> 1];
+        if (!c.alive || seen[e] || ((e & 1) ? c.bodyB : c.bodyA) != index) in.fail("contact list is inconsistent");
+        seen[e] = true;
+        w.contacts[e >> 1].edges[e & 1] = {prev, -1};
+        if (prev >= 0) w.contacts[prev >> 1].edges[prev & 1].next = e;
+        else w.bodies[index].contactHead = e;
+        prev = e;
+    }
+}
+
+// Island rings (bodies that fell asleep together) must be proper cycles, or wake() would not end:
+// the links of linked bodies must form a permutation of them.
+void checkIslandRings(ByteReader& in, const World::Impl& w) {
+    std::vector<bool> targeted(w.bodies.size(), false);
+    for (const Body& b : w.bodies) {
+        if (b.islandNext < 0) continue;
+        const Body& next = w.bodies[b.islandNext];
+        if (!b.alive || !next.alive || next.islandNext < 0 || targeted[b.islandNext]) in.fail("island ring is broken");
+        targeted[b.islandNext] = true;
+    }
+}
+
+}  // namespace
+
+std::vector<uint8_t> World::snapshot() const {
+    const Impl& w = *impl_;
+    w.checkUnlocked("snapshot");
+    ByteWriter out;
+    for (uint8_t m : magic) out.u8(m);
+    out.u32(formatVersion);
+    writeDef(out, w.def);
+    out.u32(static_cast<uint32_t>(w.frozenBodies));
+    out.boolean(w.anyHitEvents);
+
+    out.u32(static_cast<uint32_t>(w.bodies.size()));
+    for (const Body& b : w.bodies) {
+        out.u32(b.generation);
+        out.boolean(b.alive);
+        if (b.alive) writeBody(out, w, b);
+    }
+    writeFreeList(out, w.freeBodies);
+
+    out.u32(static_cast<uint32_t>(w.shapes.size()));
+    for (const ShapeData& s : w.shapes) {
+        out.u32(s.generation);
+        out.boolean(s.alive);
+        if (s.alive) writeShape(out, w, s);
+    }
+    writeFreeList(out, w.freeShapes);
+
+    out.u32(static_cast<uint32_t>(w.contacts.size()));
+    for (const Contact& c : w.contacts) {
+        out.boolean(c.alive);
+        if (c.alive) writeContact(out, c);
+    }
+    writeFreeList(out, w.freeContacts);
+    writeJoints(out, w);
+
+    out.u32(static_cast<uint32_t>(w.movedProxies.size()));
+    for (int proxy : w.movedProxies) {
+        const collide::ChildKey key = w.collision.proxyKey(proxy);
+        out.i32(key.shape);
+        out.i32(key.child);
+    }
+    return std::move(out.bytes);
+}
+
+void World::restore(std::span<const uint8_t> bytes) {
+    impl_->checkUnlocked("restore");
+    ByteReader in(bytes);
+    for (uint8_t m : magic)
+        if (in.u8() != m) in.fail("not a perpdot snapshot (bad magic)");
+    if (const uint32_t version = in.u32(); version != formatVersion)
+        in.fail("format version " + std::to_string(version) + " is not " + std::to_string(formatVersion));
+    auto fresh = std::make_unique<Impl>(readDef(in));
+    Impl& w = *fresh;
+    w.frozenBodies = in.integer(0, 0x7FFFFFFF, "frozen body count");
+    w.anyHitEvents = in.boolean();
+
+    // Bodies, with their contact lists kept aside until the contacts are read.
+    const int bodyCount = in.count(5, "body");
+    w.bodies.resize(bodyCount);
+    std::vector<std::vector<int>> edgesOf(bodyCount);
+    std::vector<bool> bodyAlive(bodyCount);
+    // Shape and contact counts are not known yet: indices are bounded by the input size, then checked.
+    const int indexLimit = static_cast<int>(std::min<size_t>(bytes.size(), 0x3FFFFFFF));
+    for (int i = 0; i < bodyCount; ++i) {
+        Body& b = w.bodies[i];
+        b.generation = in.u32();
+        b.alive = bodyAlive[i] = in.boolean();
+        if (b.alive) readBody(in, b, edgesOf[i], bodyCount, indexLimit, 2 * indexLimit);
+    }
+    w.freeBodies = readFreeList(in, bodyAlive, "free body");
+
+    const int shapeCount = in.count(5, "shape");
+    w.shapes.resize(shapeCount);
+    std::vector<bool> shapeAlive(shapeCount), shapeListed(shapeCount, false);
+    std::vector<std::vector<AABB>> savedProxies(shapeCount);
+    for (int i = 0; i < shapeCount; ++i) {
+        ShapeData& s = w.shapes[i];
+        s.generation = in.u32();
+        s.alive = shapeAlive[i] = in.boolean();
+        if (!s.alive) continue;
+        readShape(in, s, savedProxies[i], bodyCount);
+        if (!bodyAlive[s.body]) in.fail("shape " + std::to_string(i) + " belongs to a dead body");
+    }
+    w.freeShapes = readFreeList(in, shapeAlive, "free shape");
+    for (int i = 0; i < bodyCount; ++i)
+        for (int s : w.bodies[i].shapes)
+            if (s >= shapeCount || !shapeAlive[s] || w.shapes[s].body != i || shapeListed[s]) in.fail("body shape list is inconsistent");
+            else shapeListed[s] = true;
+    for (int i = 0; i < shapeCount; ++i)
+        if (shapeAlive[i] && !shapeListed[i]) in.fail("shape " + std::to_string(i) + " is missing from its body");
+
+    const int contactCount = in.count(1, "contact");
+    w.contacts.resize(contactCount);
+    std::vector<bool> contactAlive(contactCount);
+    for (int i = 0; i < contactCount; ++i) {
+        Contact& c = w.contacts[i];
+        c.alive = contactAlive[i] = in.boolean();
+        if (!c.alive) continue;
+        readContact(in, c, shapeCount);
+        const auto valid = [&](collide::ChildKey k) {
+            return shapeAlive[k.shape] && k.child < static_cast<int>(savedProxies[k.shape].size());
+        };
+        if (!valid(c.a) || !valid(c.b)) in.fail("contact " + std::to_string(i) + " names a missing shape child");
+        const ShapeData& sa = w.shapes[c.a.shape];
+        const ShapeData& sb = w.shapes[c.b.shape];
+        // The narrowphase needs the pair in Box2D's order and a routine for it.
+        if (sa.body == sb.body || !collide::CollisionSystem::canCollide(sa.type, sb.type) ||
+            collide::CollisionSystem::mustSwap(sa.type, sb.type))
+            in.fail("contact " + std::to_string(i) + " pairs shapes that cannot collide");
+        c.bodyA = sa.body;
+        c.bodyB = sb.body;
+    }
+    w.freeContacts = readFreeList(in, contactAlive, "free contact");
+    std::vector<bool> edgeSeen(2 * static_cast<size_t>(contactCount), false);
+    for (int i = 0; i < bodyCount; ++i) {
+        for (int e : edgesOf[i])
+            if (e >= 2 * contactCount) in.fail("contact edge out of range");
+        linkEdges(in, w, i, edgesOf[i], edgeSeen);
+    }
+    for (int i = 0; i < contactCount; ++i)
+        if (contactAlive[i] && !(edgeSeen[2 * i] && edgeSeen[2 * i + 1])) in.fail("contact missing from a body's list");
+    checkIslandRings(in, w);
+    readJoints(in, w);
+
+    std::vector<collide::ChildKey> moved(in.count(8, "moved proxy"));
+    for (collide::ChildKey& key : moved) {
+        key.shape = in.integer(0, shapeCount - 1, "moved proxy shape");
+        key.child = in.integer(0, 0x7FFFFFFF, "moved proxy child");
+        if (!shapeAlive[key.shape] || key.child >= static_cast<int>(savedProxies[key.shape].size()))
+            in.fail("moved proxy names a missing shape child");
+    }
+    in.expectEnd();
+
+    // Everything is checked: build the geometry and the broadphase. Proxies come out of the tree
+    // with the saved fat AABBs and, like every new proxy, marked as moved.
+    for (int i = 0; i < shapeCount; ++i) {
+        if (!shapeAlive[i]) continue;
+        ShapeData& s = w.shapes[i];
+        std::visit([&](const auto& g) { w.collision.setGeometry(i, g); }, s.geometry);
+        if (w.collision.childCount(i) != static_cast<int>(savedProxies[i].size())) in.fail("proxy count does not match the shape");
+        for (int child = 0; child < static_cast<int>(savedProxies[i].size()); ++child)
+            s.proxies.push_back(w.collision.restoreProxy(savedProxies[i][child], {i, child}));
+    }
+    for (const collide::ChildKey& key : moved) w.movedProxies.push_back(w.shapes[key.shape].proxies[key.child]);
+    std::unordered_set<int> movedSet(w.movedProxies.begin(), w.movedProxies.end());
+    for (const ShapeData& s : w.shapes)
+        for (int proxy : s.proxies)
+            if (!movedSet.contains(proxy)) w.collision.clearMoved(proxy);
+    for (int i = 0; i < contactCount; ++i) {
+        Contact& c = w.contacts[i];
+        if (!c.alive) continue;
+        c.proxyA = w.shapes[c.a.shape].proxies[c.a.child];
+        c.proxyB = w.shapes[c.b.shape].proxies[c.b.child];
+        c.pairKey = proxyPairKey(c.proxyA, c.proxyB);
+        if (!w.pairs.emplace(c.pairKey, i).second) in.fail("two contacts for one pair");
+    }
+
+    fresh->preSolve = std::move(impl_->preSolve);  // a setting of this World, not of the state
+    impl_ = std::move(fresh);
+}
+
+}  // namespace perpdot
