@@ -160,5 +160,41 @@ TEST(Cli, BadInputExitsWithStatus2AndSaysWhy) {
     }
 }
 
+std::string hashOf(const Result& r) {
+    const size_t at = r.out.find("state_hash=");
+    return at == std::string::npos ? "(none: " + r.out + r.err + ")" : r.out.substr(at + 11, 16);
+}
+
+// --save-at K FILE then --load FILE continues the run bit for bit, scripted actions included
+// (off_center_push pushes for its first steps: the save falls inside the push).
+TEST(Cli, SaveAtThenLoadContinuesTheRunBitForBit) {
+    for (const char* scene : {"off_center_push", "pyramid", "ragdoll"}) {
+        const std::string file = tempPath(std::string(scene) + ".snapshot");
+        const Result straight = perpdot(std::string("run ") + scene + " --steps 240");
+        const Result saving = perpdot(std::string("run ") + scene + " --steps 240 --save-at 20 '" + file + "'");
+        const Result loaded = perpdot(std::string("run ") + scene + " --steps 240 --load '" + file + "'");
+        ASSERT_EQ(straight.status, 0) << straight.err;
+        ASSERT_EQ(saving.status, 0) << saving.err;
+        ASSERT_EQ(loaded.status, 0) << loaded.err;
+        EXPECT_EQ(hashOf(saving), hashOf(straight)) << scene;
+        EXPECT_EQ(hashOf(loaded), hashOf(straight)) << scene;
+        // A snapshot cut short is refused with the file's name, exit status 2.
+        std::filesystem::resize_file(file, std::filesystem::file_size(file) - 7);
+        const Result truncated = perpdot(std::string("run ") + scene + " --steps 240 --load '" + file + "'");
+        EXPECT_EQ(truncated.status, 2);
+        EXPECT_NE(truncated.err.find(file + ": snapshot: "), std::string::npos) << truncated.err;
+        std::filesystem::remove(file);
+    }
+    const std::string file = tempPath("other.snapshot");
+    ASSERT_EQ(perpdot("run single_box --steps 5 --save-at 5 '" + file + "'").status, 0);
+    const Result wrongScene = perpdot("run pyramid --load '" + file + "'");
+    EXPECT_EQ(wrongScene.status, 2);
+    EXPECT_NE(wrongScene.err.find("not of scene"), std::string::npos) << wrongScene.err;
+    EXPECT_EQ(perpdot("run single_box --steps 5 --save-at 6 '" + file + "'").status, 2);
+    EXPECT_EQ(perpdot("run single_box --save-at 5").status, 2);
+    EXPECT_EQ(perpdot("run single_box --load /nonexistent-dir/x.snapshot").status, 2);
+    std::filesystem::remove(file);
+}
+
 }  // namespace
 }  // namespace perpdot

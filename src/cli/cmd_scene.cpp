@@ -8,6 +8,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/flags.hpp"
+#include "cli/run_snapshot.hpp"
 #include "perpdot/error.hpp"
 #include "perpdot/scene.hpp"
 #include "perpdot/state_hash.hpp"
@@ -21,10 +22,14 @@ struct RunOptions {
     std::optional<int> steps{};
     std::string csvPath{};
     int every = 1;
+    std::optional<SaveAt> saveAt{};
+    std::string loadPath{};
 };
 
 RunOptions parseRunOptions(Args args) {
-    const Flags flags(args, {"--steps", "--csv", "--every"});
+    std::optional<SaveAt> saveAt;
+    const std::vector<std::string> rest = takeSaveAt(args, saveAt);
+    const Flags flags(rest, {"--steps", "--csv", "--every", "--load"});
     if (flags.positional().empty()) throw UsageError{"no scene given"};
     if (flags.positional().size() > 1) throw UsageError{"more than one scene given"};
     RunOptions options{.scene = flags.positional()[0], .csvPath = flags.text("--csv").value_or("")};
@@ -33,6 +38,8 @@ RunOptions parseRunOptions(Args args) {
         if (*options.steps > maxSceneSteps) throw UsageError{"--steps must be at most " + std::to_string(maxSceneSteps)};
     }
     options.every = flags.integer("--every", 1, 1);
+    options.saveAt = saveAt;
+    options.loadPath = flags.text("--load").value_or("");
     return options;
 }
 
@@ -95,25 +102,34 @@ int runCommand(Args args) {
     Scene scene = findScene(options.scene);
     if (options.steps) scene.steps = *options.steps;
     SceneWorld built = buildWorld(scene);
+    if (!options.loadPath.empty()) loadRun(options.loadPath, built);  // continue from its step
+    const int first = built.stepIndex + 1;
+    if (options.saveAt && (options.saveAt->step < built.stepIndex || options.saveAt->step > scene.steps))
+        throw UsageError{"--save-at must be a step in [" + std::to_string(built.stepIndex) + ", " + std::to_string(scene.steps) + "]"};
+    const auto saveIfDue = [&] {
+        if (options.saveAt && built.stepIndex == options.saveAt->step) saveRun(options.saveAt->path, built);
+    };
+    saveIfDue();
 
     std::optional<TrajectoryWriter> csv;
     if (!options.csvPath.empty()) {
         csv.emplace(options.csvPath, built);
-        csv->write(built, 0);
+        csv->write(built, built.stepIndex);
     }
     using Clock = std::chrono::steady_clock;
     Clock::duration stepping{};
-    for (int step = 1; step <= scene.steps; ++step) {
+    for (int step = first; step <= scene.steps; ++step) {
         const auto start = Clock::now();
         built.step();
         stepping += Clock::now() - start;  // time the physics only, not the CSV
+        saveIfDue();
         if (csv && step % options.every == 0) csv->write(built, step);
     }
     if (csv) csv->close(options.csvPath);
 
     const double ms = std::chrono::duration<double, std::milli>(stepping).count();
     std::printf("scene=%s steps=%d bodies=%zu ms_per_step=%.3f state_hash=%016" PRIx64 "\n", scene.name.c_str(),
-                scene.steps, built.bodies.size(), scene.steps > 0 ? ms / scene.steps : 0.0, stateHash(built.world));
+                scene.steps, built.bodies.size(), scene.steps >= first ? ms / (scene.steps - first + 1) : 0.0, stateHash(built.world));
     return 0;
 }
 

@@ -12,7 +12,7 @@ namespace {
 
 const Command commands[] = {
     {"list", "perpdot list", listCommand},
-    {"run", "perpdot run SCENE|FILE [--steps N] [--csv FILE] [--every K]", runCommand},
+    {"run", "perpdot run SCENE|FILE [--steps N] [--csv FILE] [--every K] [--save-at K FILE] [--load FILE]", runCommand},
     {"export", "perpdot export SCENE FILE", exportCommand},
     {"crosscheck", "perpdot crosscheck SCENE|FILE [--steps N] [--tolerance METRES] [--angle-tolerance RAD] [--report DIR]", crosscheckCommand},
     {"record", "perpdot record SCENE|FILE --out FILE.csv [--engine perpdot|box2d] [--steps N]", recordCommand},
