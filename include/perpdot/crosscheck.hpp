@@ -41,6 +41,11 @@ Trajectory record(const Scene& scene, Engine engine, int steps = -1);
 
 // CSV: `step,time,body,x,y,angle,vx,vy,omega`, with a trailing `engine` column when `engine` is given.
 void writeCsv(std::ostream& out, const Trajectory& trajectory, const char* engine = nullptr);
+// The pieces writeCsv is made of, for writers that stream (perpdot run --csv). A body name that
+// cannot stand in a CSV field (comma, line break) is a perpdot::Error.
+void writeCsvHeader(std::ostream& out, bool engineColumn);
+void writeCsvRow(std::ostream& out, int step, float timestep, const std::string& body, const BodyState& state,
+                 const char* engine = nullptr);
 // Reads the CSV written by writeCsv(…, nullptr); perpdot::Error naming the line if it is malformed.
 Trajectory readCsv(std::istream& in);
 

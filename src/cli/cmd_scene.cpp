@@ -2,13 +2,15 @@
 #include <chrono>
 #include <cinttypes>
 #include <cstdio>
-#include <memory>
+#include <fstream>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "cli/commands.hpp"
 #include "cli/flags.hpp"
 #include "cli/run_snapshot.hpp"
+#include "perpdot/crosscheck.hpp"
 #include "perpdot/error.hpp"
 #include "perpdot/scene.hpp"
 #include "perpdot/state_hash.hpp"
@@ -43,41 +45,26 @@ RunOptions parseRunOptions(Args args) {
     return options;
 }
 
-struct FileCloser {
-    void operator()(std::FILE* f) const { std::fclose(f); }
-};
-using File = std::unique_ptr<std::FILE, FileCloser>;
-
-// A CSV field: quoted (RFC 4180) only if it holds a comma, quote or line break.
-std::string csvField(const std::string& text) {
-    if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
-    std::string quoted = "\"";
-    for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return quoted + "\"";
-}
-
-// The trajectory CSV of scene-format.md: non-static bodies in scene order; %.9g round-trips a float.
+// The trajectory CSV of scene-format.md, streamed: non-static bodies in scene order.
 class TrajectoryWriter {
 public:
-    TrajectoryWriter(const std::string& path, const SceneWorld& built) : file_(std::fopen(path.c_str(), "w")) {
+    TrajectoryWriter(const std::string& path, const SceneWorld& built) : path_(path), file_(path) {
         if (!file_) throw Error(path + ": cannot open for writing");
         for (size_t i = 0; i < built.bodies.size(); ++i)
-            if (built.scene.bodies[i].type != BodyType::Static) recorded_.push_back({built.bodies[i], csvField(built.scene.bodies[i].name)});
-        std::fputs("step,time,body,x,y,angle,vx,vy,omega\n", file_.get());
+            if (built.scene.bodies[i].type != BodyType::Static) recorded_.push_back({built.bodies[i], built.scene.bodies[i].name});
+        crosscheck::writeCsvHeader(file_, false);
     }
 
     void write(const SceneWorld& built, int step) {
         const World& w = built.world;
-        const double time = static_cast<double>(step) * built.scene.timestep;
-        for (const auto& [body, name] : recorded_) {
-            const Vec2 p = w.position(body), v = w.linearVelocity(body);
-            std::fprintf(file_.get(), "%d,%.9g,%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", step, time, name.c_str(), p.x, p.y,
-                         w.angle(body), v.x, v.y, w.angularVelocity(body));
-        }
+        for (const auto& [body, name] : recorded_)
+            crosscheck::writeCsvRow(file_, step, built.scene.timestep, name,
+                                    {w.position(body), w.angle(body), w.linearVelocity(body), w.angularVelocity(body)});
     }
 
-    void close(const std::string& path) {
-        if (std::ferror(file_.get()) || std::fclose(file_.release()) != 0) throw Error(path + ": write failed");
+    void close() {
+        file_.close();
+        if (!file_) throw Error(path_ + ": write failed");
     }
 
 private:
@@ -85,7 +72,8 @@ private:
         BodyId body;
         std::string name;
     };
-    File file_;
+    std::string path_;
+    std::ofstream file_;
     std::vector<Recorded> recorded_;
 };
 
@@ -125,7 +113,7 @@ int runCommand(Args args) {
         saveIfDue();
         if (csv && step % options.every == 0) csv->write(built, step);
     }
-    if (csv) csv->close(options.csvPath);
+    if (csv) csv->close();
 
     const double ms = std::chrono::duration<double, std::milli>(stepping).count();
     std::printf("scene=%s steps=%d bodies=%zu ms_per_step=%.3f state_hash=%016" PRIx64 "\n", scene.name.c_str(),

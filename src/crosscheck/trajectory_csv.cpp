@@ -41,23 +41,23 @@ T parseNumber(std::string_view field, const char* column, int lineNumber) {
 
 }  // namespace
 
+void writeCsvHeader(std::ostream& out, bool engineColumn) { out << header << (engineColumn ? ",engine\n" : "\n"); }
+
+void writeCsvRow(std::ostream& out, int step, float timestep, const std::string& body, const BodyState& s, const char* engine) {
+    if (body.find_first_of(",\n\r") != std::string::npos) throw Error("body name '" + body + "' cannot go in a CSV field");
+    char row[256];
+    std::snprintf(row, sizeof row, "%d,%.9g,%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g", step, double(step) * double(timestep), body.c_str(),
+                  double(s.position.x), double(s.position.y), double(s.angle), double(s.linearVelocity.x),
+                  double(s.linearVelocity.y), double(s.angularVelocity));
+    out << row;
+    if (engine) out << ',' << engine;
+    out << '\n';
+}
+
 void writeCsv(std::ostream& out, const Trajectory& t, const char* engine) {
-    for (const std::string& name : t.bodies) {
-        if (name.find_first_of(",\n\r") != std::string::npos) throw Error("body name '" + name + "' cannot go in a CSV field");
-    }
-    out << header << (engine ? ",engine\n" : "\n");
-    char time[32], row[256];
-    for (int frame = 0; frame < t.frameCount(); ++frame) {
-        std::snprintf(time, sizeof time, "%d,%.9g,", frame, double(frame) * double(t.timestep));
-        for (size_t body = 0; body < t.bodies.size(); ++body) {
-            const BodyState& s = t.at(frame, int(body));
-            std::snprintf(row, sizeof row, ",%.9g,%.9g,%.9g,%.9g,%.9g,%.9g", double(s.position.x), double(s.position.y),
-                          double(s.angle), double(s.linearVelocity.x), double(s.linearVelocity.y), double(s.angularVelocity));
-            out << time << t.bodies[body] << row;
-            if (engine) out << ',' << engine;
-            out << '\n';
-        }
-    }
+    writeCsvHeader(out, engine != nullptr);
+    for (int frame = 0; frame < t.frameCount(); ++frame)
+        for (size_t body = 0; body < t.bodies.size(); ++body) writeCsvRow(out, frame, t.timestep, t.bodies[body], t.at(frame, int(body)), engine);
 }
 
 Trajectory readCsv(std::istream& in) {
