@@ -8,7 +8,6 @@
 
 #include "perpdot/error.hpp"
 #include "perpdot/scene.hpp"
-#include "scene/scene_limits.hpp"
 
 namespace perpdot {
 namespace {

@@ -74,6 +74,25 @@ TEST(ApiMisuse, DestroyingABodyInAStackLeavesAConsistentWorld) {
     EXPECT_NEAR(world.position(stack[4]).y, world.position(stack[1]).y + 2.0f * gap, 0.03f);
 }
 
+TEST(ApiMisuse, DestroyingABodyWithJointsAndContactsInvalidatesItsJoints) {
+    World world;
+    addBox(world, {0, -0.5f}, BodyType::Static, 10.0f, 0.5f);
+    const BodyId a = addBox(world, {0, 0.5f}), b = addBox(world, {1.1f, 0.5f}), c = addBox(world, {2.2f, 0.5f});
+    const JointId ab = world.createJoint(RevoluteJointDef{.bodyA = a, .bodyB = b, .localAnchorA = {0.55f, 0}, .localAnchorB = {-0.55f, 0}});
+    const JointId bc = world.createJoint(RevoluteJointDef{.bodyA = b, .bodyB = c, .localAnchorA = {0.55f, 0}, .localAnchorB = {-0.55f, 0}});
+    for (int i = 0; i < 30; ++i) world.step(dt);
+    ASSERT_GE(world.contactCount(), 3);  // all three rest on the ground
+    world.destroyBody(b);
+    EXPECT_FALSE(world.isValid(ab));
+    EXPECT_FALSE(world.isValid(bc));
+    EXPECT_THROW(world.jointType(ab), Error);
+    EXPECT_THROW(world.destroyJoint(bc), Error);
+    EXPECT_TRUE(world.joints().empty());
+    for (int i = 0; i < 60; ++i) world.step(dt);
+    EXPECT_TRUE(allFinite(world));
+    EXPECT_NEAR(world.position(a).y, world.position(c).y, 0.01f);  // both still resting
+}
+
 TEST(ApiMisuse, EveryMutationInsideStepIsRefused) {
     World world;
     const BodyId ground = world.createBody({.position = {0, -0.5f}});

@@ -18,8 +18,9 @@ for harness in scene snapshot; do
     corpus="$build/corpus/$harness"
     mkdir -p "$corpus"
     echo "== fuzz_$harness for $((seconds / 2)) s"
-    (cd "$build" && ./fuzz_$harness -max_total_time=$((seconds / 2)) -max_len=8192 -timeout=10 -rss_limit_mb=2048 \
-        -print_final_stats=1 "$corpus" "$root/tests/fuzz/corpus/$harness" 2>&1 | grep -E "^(stat::number_of_executed_units|#[0-9]+ +DONE|==[0-9]+==ERROR|SUMMARY|.*(crash|leak|timeout)-)" || true)
+    "$build/tests/fuzz/fuzz_$harness" -max_total_time=$((seconds / 2)) -max_len=8192 -timeout=10 -rss_limit_mb=2048 \
+        -artifact_prefix="$build/" -print_final_stats=1 "$corpus" "$root/tests/fuzz/corpus/$harness" 2>&1 |
+        grep -E "^(stat::number_of_executed_units|stat::new_units_added|Done [0-9]+ runs|==[0-9]+==ERROR|SUMMARY|.*(crash|leak|timeout)-)" || true
     if compgen -G "$build/crash-*" >/dev/null || compgen -G "$build/leak-*" >/dev/null || compgen -G "$build/timeout-*" >/dev/null; then
         echo "fuzz_$harness found a failing input:" "$build"/crash-* "$build"/leak-* "$build"/timeout-* 2>/dev/null
         exit 1
