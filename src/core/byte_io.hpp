@@ -3,6 +3,7 @@
 #pragma once
 
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -46,10 +47,20 @@ public:
         if (v > 1) fail("a boolean is " + std::to_string(v));
         return v == 1;
     }
-    // Any bits, NaN and infinity included: a world's own snapshot must always load back (its
-    // contacts may hold non-finite values next to wild bodies), and non-finite floats are not
-    // undefined behaviour. Geometry is checked separately (validateGeometry).
+    // Any bits, NaN and infinity included, for contact and joint values: a world's own snapshot
+    // must always load back, and its contacts may hold non-finite values next to wild bodies.
     float f32() { return std::bit_cast<float>(u32()); }
+    // Body state, settings and broadphase boxes must be finite (the step keeps them so, and
+    // Box2D's time of impact asserts on NaN).
+    float finite() {
+        const float v = f32();
+        if (!std::isfinite(v)) fail("a number is not finite");
+        return v;
+    }
+    Vec2 finiteVec2() {
+        const float x = finite();
+        return {x, finite()};
+    }
     Vec2 vec2() {
         const float x = f32();
         return {x, f32()};

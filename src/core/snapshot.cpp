@@ -33,11 +33,11 @@ void writeDef(ByteWriter& out, const WorldDef& d) {
 
 WorldDef readDef(ByteReader& in) {
     WorldDef d;
-    d.gravity = in.vec2();
+    d.gravity = in.finiteVec2();
     d.substeps = in.integer(1, 64, "substeps");
     for (float* f : {&d.contactHertz, &d.contactDampingRatio, &d.jointHertz, &d.jointDampingRatio,
                      &d.contactPushMaxVelocity, &d.restitutionThreshold, &d.maxLinearSpeed, &d.hitEventThreshold})
-        *f = in.f32();
+        *f = in.finite();
     for (bool* b : {&d.enableSleep, &d.enableWarmStarting, &d.enableContinuous}) *b = in.boolean();
     return d;
 }
@@ -73,18 +73,18 @@ void readBody(ByteReader& in, Body& b, std::vector<int>& edges, int bodyCount, i
     const uint8_t type = in.u8();
     if (type > static_cast<uint8_t>(BodyType::Dynamic)) in.fail("body type " + std::to_string(type) + " is unknown");
     b.type = static_cast<BodyType>(type);
-    b.xf.p = in.vec2();
-    b.xf.q.c = in.f32();
-    b.xf.q.s = in.f32();
-    b.angle = in.f32();
-    b.localCenter = in.vec2();
-    b.center = in.vec2();
-    b.v = in.vec2();
-    b.w = in.f32();
-    b.force = in.vec2();
+    b.xf.p = in.finiteVec2();
+    b.xf.q.c = in.finite();
+    b.xf.q.s = in.finite();
+    b.angle = in.finite();
+    b.localCenter = in.finiteVec2();
+    b.center = in.finiteVec2();
+    b.v = in.finiteVec2();
+    b.w = in.finite();
+    b.force = in.finiteVec2();
     for (float* f : {&b.torque, &b.mass, &b.invMass, &b.inertia, &b.invInertia, &b.linearDamping, &b.angularDamping,
                      &b.gravityScale, &b.sleepTime})
-        *f = in.f32();
+        *f = in.finite();
     if (b.mass < 0 || b.invMass < 0 || b.inertia < 0 || b.invInertia < 0) in.fail("negative mass or inertia");
     for (bool* f : {&b.fixedRotation, &b.bullet, &b.allowSleep, &b.awake}) *f = in.boolean();
     b.jointCount = in.integer(0, 0x3FFFFFFF, "joint count");
@@ -124,8 +124,8 @@ void readGeometry(ByteReader& in, ShapeData& s) {
         switch (in.u8()) {
             case 0: {
                 Circle c;
-                c.center = in.vec2();
-                c.radius = in.f32();
+                c.center = in.finiteVec2();
+                c.radius = in.finite();
                 validateGeometry(c);
                 s.geometry = c;
                 break;
@@ -134,8 +134,8 @@ void readGeometry(ByteReader& in, ShapeData& s) {
                 Polygon p;
                 p.count = static_cast<int>(in.u32());
                 if (p.count < 3 || p.count > maxPolygonVertices) in.fail("polygon vertex count out of range");
-                for (int i = 0; i < p.count; ++i) p.vertices[i] = in.vec2();
-                p.radius = in.f32();
+                for (int i = 0; i < p.count; ++i) p.vertices[i] = in.finiteVec2();
+                p.radius = in.finite();
                 validateGeometry(p);
                 if (!(makePolygon(std::span(p.vertices.data(), static_cast<size_t>(p.count)), p.radius) == p))
                     in.fail("polygon is not in normalised form");
@@ -144,8 +144,8 @@ void readGeometry(ByteReader& in, ShapeData& s) {
             }
             case 2: {
                 Segment seg;
-                seg.v1 = in.vec2();
-                seg.v2 = in.vec2();
+                seg.v1 = in.finiteVec2();
+                seg.v2 = in.finiteVec2();
                 validateGeometry(seg);
                 s.geometry = seg;
                 break;
@@ -153,7 +153,7 @@ void readGeometry(ByteReader& in, ShapeData& s) {
             case 3: {
                 Chain chain;
                 chain.vertices.resize(in.count(8, "chain vertex"));
-                for (Vec2& v : chain.vertices) v = in.vec2();
+                for (Vec2& v : chain.vertices) v = in.finiteVec2();
                 chain.loop = in.boolean();
                 validateGeometry(chain);
                 s.geometry = std::move(chain);
@@ -193,7 +193,7 @@ void readShape(ByteReader& in, ShapeData& s, std::vector<AABB>& proxies, int bod
     readGeometry(in, s);
     for (float* f : {&s.density, &s.friction, &s.restitution, &s.rollingResistance, &s.tangentSpeed, &s.minExtent,
                      &s.maxExtent})
-        *f = in.f32();
+        *f = in.finite();
     if (s.density < 0 || s.friction < 0 || s.restitution < 0) in.fail("negative shape material");
     for (bool* f : {&s.sensor, &s.enableContactEvents, &s.enableHitEvents, &s.enableSensorEvents, &s.enablePreSolveEvents})
         *f = in.boolean();
@@ -202,8 +202,8 @@ void readShape(ByteReader& in, ShapeData& s, std::vector<AABB>& proxies, int bod
     s.filter.group = static_cast<int16_t>(in.u16());
     proxies.resize(in.count(16, "proxy"));
     for (AABB& fat : proxies) {
-        fat.lower = in.vec2();
-        fat.upper = in.vec2();
+        fat.lower = in.finiteVec2();
+        fat.upper = in.finiteVec2();
         if (fat.lower.x > fat.upper.x || fat.lower.y > fat.upper.y) in.fail("inverted proxy AABB");
     }
 }
