@@ -184,7 +184,10 @@ TEST(Numerics, ABodyThatGoesNonFiniteIsFrozenAndReported) {
     addBox(world, {0, -0.5f}, BodyType::Static, 10.0f, 0.5f);
     const BodyId healthy = addBox(world, {2, 0.5f});
     const BodyId doomed = world.createBody({.type = BodyType::Dynamic, .position = {0, 3}});
-    world.createShape(doomed, {.density = 3.0e38f}, Circle{{0, 0}, 10.0f});
+    world.createShape(doomed, {}, Circle{{0, 0}, 1.0f});
+    // Each torque is finite; their sum overflows to infinity, and ω with it.
+    world.applyTorque(doomed, 3.0e38f);
+    world.applyTorque(doomed, 3.0e38f);
     EXPECT_EQ(world.stats().frozenBodies, 0);
     for (int i = 0; i < 60; ++i) world.step(dt);
     EXPECT_GE(world.stats().frozenBodies, 1);
@@ -192,6 +195,19 @@ TEST(Numerics, ABodyThatGoesNonFiniteIsFrozenAndReported) {
     EXPECT_EQ(world.linearVelocity(doomed), (Vec2{0, 0}));
     EXPECT_TRUE(std::isfinite(world.position(healthy).y));
     EXPECT_NEAR(world.position(healthy).y, 0.5f, 0.02f);
+}
+
+TEST(Numerics, ShapesWhoseMassOverflowsOrThatAreSliversAreRefused) {
+    World world;
+    const BodyId body = world.createBody({.type = BodyType::Dynamic});
+    // ρ = 3e38 on a 10 m disc: m = ρπr² is not a float.
+    EXPECT_THROW(world.createShape(body, {.density = 3.0e38f}, Circle{{0, 0}, 10.0f}), Error);
+    const ShapeId disc = world.createShape(body, {}, Circle{{0, 0}, 10.0f});
+    EXPECT_THROW(world.setDensity(disc, 3.0e38f), Error);
+    EXPECT_EQ(world.density(disc), 1.0f);
+    // A 100 m sliver 1 mm thick: its apex is closer than the linear slop to its base line.
+    const Vec2 sliver[3] = {{0, 0}, {100, 0}, {50, 0.001f}};
+    EXPECT_THROW(makePolygon(sliver), Error);
 }
 
 TEST(Numerics, LinearSpeedIsClampedToTheWorldLimit) {

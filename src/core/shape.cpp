@@ -46,12 +46,22 @@ void validateGeometry(const Chain& c) {
 
 namespace {
 
+// m = ρA and I must be representable: a huge density on a large shape overflows to infinity.
+void requireFiniteMass(const ShapeData::Geometry& geometry, float density) {
+    MassData m;
+    if (auto* c = std::get_if<Circle>(&geometry)) m = computeMass(*c, density);
+    if (auto* p = std::get_if<Polygon>(&geometry)) m = computeMass(*p, density);
+    if (!std::isfinite(m.mass) || !std::isfinite(m.rotationalInertia) || !isFinite(m.center))
+        throw Error("shape mass is not finite: density " + std::to_string(density) + " is too large for its area");
+}
+
 template <class Geometry>
 ShapeId create(World::Impl& w, BodyId bodyId, const ShapeDef& def, const Geometry& geometry) {
     w.checkUnlocked("createShape");
     w.body(bodyId);
     validate(def);
     validateGeometry(geometry);
+    requireFiniteMass(geometry, def.density);
     const int index = w.addShape(bodyId, def);
     w.shapes[index].geometry = geometry;
     w.collision.setGeometry(index, geometry);
@@ -242,6 +252,7 @@ void World::setDensity(ShapeId id, float density) {
     impl_->checkUnlocked("setDensity");
     if (!(std::isfinite(density) && density >= 0.0f)) throw Error("setDensity: density must be finite and >= 0");
     ShapeData& s = impl_->shape(id);
+    requireFiniteMass(s.geometry, density);
     s.density = density;
     impl_->updateMass(s.body);
 }

@@ -11,8 +11,9 @@ namespace perpdot {
 
 namespace {
 
-// Below this, two vertices are the same point (Box2D's weld distance is half its linear slop).
-constexpr float weldDistance = 0.0025f;
+// Box2D's linear slop, and its weld distance (half of it): closer vertices are the same point.
+constexpr float linearSlop = 0.005f;
+constexpr float weldDistance = 0.5f * linearSlop;
 
 float signedArea(std::span<const Vec2> p) {
     float twiceArea = 0.0f;
@@ -45,6 +46,14 @@ Polygon makePolygon(std::span<const Vec2> points, float radius) {
         // Strict convexity: every turn is to the left, with some margin for collinear points.
         const Vec2 e1 = b - a, e2 = c - b;
         if (perpDot(e1, e2) <= 1.0e-6f * length(e1) * length(e2)) throw Error("polygon is not convex");
+    }
+    // No sliver: every vertex stands at least the linear slop off the line through its
+    // neighbours (Box2D v3's hull rule); thinner polygons break the time-of-impact solver.
+    for (int i = 0; i < n; ++i) {
+        const Vec2 prev = poly.vertices[(i + n - 1) % n], v = poly.vertices[i], next = poly.vertices[(i + 1) % n];
+        const float offLine = perpDot(next - prev, v - prev) / length(next - prev);
+        if (std::fabs(offLine) < linearSlop)
+            throw Error("polygon is degenerate: vertex " + std::to_string(i) + " lies within 0.005 m of the line through its neighbours");
     }
     // A star-shaped loop turns left everywhere but winds twice: the turning must add up to one turn.
     float turning = 0.0f;

@@ -18,7 +18,13 @@ namespace perpdot {
 void World::step(float timeStep) {
     Impl& w = *impl_;
     if (!(timeStep > 0.0f) || !std::isfinite(timeStep) || w.locked) return;
-    w.locked = true;
+    // Unlocks however step() ends: an exception thrown by the user's pre-solve callback leaves
+    // the step unfinished but the world usable.
+    struct Lock {
+        bool& locked;
+        explicit Lock(bool& l) : locked(l) { locked = true; }
+        ~Lock() { locked = false; }
+    } lock(w.locked);
     w.beginEvents();
     w.updatePairs();
     w.updateContacts();
@@ -26,7 +32,6 @@ void World::step(float timeStep) {
     w.updateSleep(timeStep);
     w.contactEndReported = w.contactEndEvents.size();
     w.sensorEndReported = w.sensorEndEvents.size();
-    w.locked = false;
 }
 
 namespace {

@@ -47,7 +47,8 @@ struct ShapeData {
     bool alive = false;
     int body = -1;
     ShapeType type = ShapeType::Circle;
-    std::variant<Circle, Polygon, Segment, Chain> geometry;
+    using Geometry = std::variant<Circle, Polygon, Segment, Chain>;
+    Geometry geometry;
     float density = 1, friction = 0.6f, restitution = 0;
     float rollingResistance = 0, tangentSpeed = 0;
     bool sensor = false;
