@@ -1,21 +1,40 @@
 #!/usr/bin/env bash
-# The README's test command: installs what is missing, builds, and runs every test.
+# The README's test command (and what CI runs through .ci/run): installs what is missing, builds,
+# and runs every check:
 #   1. release build with -Werror, the whole ctest suite
-#   2. ASan + UBSan build of the test suite
-# Prints the ctest summary of each; exits non-zero on the first failure.
+#   2. AddressSanitizer + UndefinedBehaviorSanitizer build, the whole ctest suite again
+#   3. determinism across compilers: gcc and clang builds print the same state_hash
+#   4. a short libFuzzer run of the scene and snapshot loaders (60 s)
+#   5. clang-tidy with the checked-in .clang-tidy
+# Exits non-zero on the first failure; ends with both ctest summaries.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-jobs=${PERPDOT_JOBS:-$(nproc)}
+export PERPDOT_JOBS=${PERPDOT_JOBS:-$(nproc)}
+jobs=$PERPDOT_JOBS
+log=$(mktemp -d)
 
 bash third_party/install-deps.sh
 
-echo "== release build and tests"
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DPERPDOT_WERROR=ON
+echo "== release build (-Werror) and tests"
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DPERPDOT_WERROR=ON -DCMAKE_EXPORT_COMPILE_COMMANDS=ON
 cmake --build build -j"$jobs"
-ctest --test-dir build --output-on-failure -j"$jobs"
+ctest --test-dir build --output-on-failure -j"$jobs" | tee "$log/release"
 
 echo "== AddressSanitizer + UndefinedBehaviorSanitizer build and tests"
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPERPDOT_SANITIZE=ON -DPERPDOT_WERROR=ON \
   -DPERPDOT_BUILD_DEMOS=OFF -DPERPDOT_BUILD_BENCH=OFF
 cmake --build build-asan -j"$jobs"
-ctest --test-dir build-asan --output-on-failure -j"$jobs"
+ctest --test-dir build-asan --output-on-failure -j"$jobs" | tee "$log/asan"
+
+echo "== gcc vs clang state_hash"
+bash tests/cross_compiler_hash.sh
+
+echo "== fuzz (60 s)"
+bash tests/fuzz/run.sh 60
+
+echo "== clang-tidy"
+bash tests/clang_tidy.sh build
+
+echo "== summary"
+echo "release: $(grep 'tests passed' "$log/release")"
+echo "asan:    $(grep 'tests passed' "$log/asan")"

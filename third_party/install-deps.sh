@@ -3,7 +3,8 @@
 # from Debian 12's archive only. Safe to re-run: apt-get skips what is present.
 set -euo pipefail
 packages=(
-  build-essential cmake git pkg-config clang
+  build-essential cmake git pkg-config
+  clang clang-tidy libclang-rt-14-dev   # gcc-vs-clang determinism, clang-tidy, libFuzzer
   libbox2d-dev            # collision: b2DynamicTree, b2Collide*, and b2World for cross-checks
   nlohmann-json3-dev      # scene files
   libgtest-dev libgmock-dev libbenchmark-dev
