@@ -48,11 +48,21 @@ b2CircleShape toB2(const Circle& circle) {
     return c;
 }
 
+// perpdot polygons are already validated convex and counter-clockwise (makePolygon), so they go to
+// Box2D as they are: b2PolygonShape::Set would re-run its own hull with other tolerances, and it
+// asserts on thin polygons that pass perpdot's checks (a fuzz finding).
 b2PolygonShape toB2(const Polygon& polygon) {
-    b2Vec2 points[b2_maxPolygonVertices];
-    for (int i = 0; i < polygon.count; ++i) points[i] = toB2(polygon.vertices[i]);
+    const int n = polygon.count;
     b2PolygonShape p;
-    p.Set(points, polygon.count);
+    p.m_count = n;
+    for (int i = 0; i < n; ++i) {
+        const Vec2 edge = polygon.vertices[(i + 1) % n] - polygon.vertices[i];
+        p.m_vertices[i] = toB2(polygon.vertices[i]);
+        p.m_normals[i] = toB2(normalize(Vec2{edge.y, -edge.x}));  // outward for counter-clockwise
+    }
+    Polygon core = polygon;
+    core.radius = 0.0f;
+    p.m_centroid = toB2(computeMass(core, 1.0f).center);
     p.m_radius = polygonRadius + polygon.radius;
     return p;
 }
