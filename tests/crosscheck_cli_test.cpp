@@ -23,8 +23,10 @@ struct Result {
     std::string output;  // stdout and stderr
 };
 
-Result perpdot(const std::string& arguments) {
-    const std::string command = std::string(PERPDOT_CLI) + " " + arguments + " 2>&1";
+// Runs the perpdot binary (with `environment`, e.g. "PATH=/x", prepended through env(1)).
+Result perpdot(const std::string& arguments, const std::string& environment = "") {
+    const std::string prefix = environment.empty() ? "" : "/usr/bin/env " + environment + " ";
+    const std::string command = prefix + PERPDOT_CLI + " " + arguments + " 2>&1";
     std::FILE* pipe = popen(command.c_str(), "r");
     if (!pipe) return {-1, "popen failed"};
     std::string output;
@@ -106,6 +108,16 @@ TEST(CrosscheckCli, ReportWritesJsonCsvAndPlots) {
     } else {
         EXPECT_NE(r.output.find("gnuplot is not installed"), std::string::npos) << r.output;
     }
+}
+
+TEST(CrosscheckCli, ReportWithoutGnuplotSaysSoAndWritesTheRest) {
+    const fs::path dir = scratch("no_gnuplot");
+    const Result r = perpdot("crosscheck " + gates + "projectile.json --steps 10 --report " + dir.string(), "PATH=/nonexistent");
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("gnuplot is not installed"), std::string::npos) << r.output;
+    EXPECT_TRUE(fs::exists(dir / "report.json"));
+    EXPECT_TRUE(fs::exists(dir / "trajectories.csv"));
+    EXPECT_FALSE(fs::exists(dir / "energy.png"));
 }
 
 TEST(CrosscheckCli, RecordThenCompareRoundTrip) {

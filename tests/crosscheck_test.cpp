@@ -210,7 +210,7 @@ TEST(CrosscheckPhysics, FilteredAndSensorShapesNeverTouch) {
 
 // tests/crosscheck/joints.json: each joint of the scene holds its constraint. Checked on Box2D's side,
 // which proves the Scene -> b2World conversion (anchors, axes, reference angles, spring stiffness
-// from hertz and damping ratio); perpdot's trajectory goes through the same checks once its joints land.
+// from hertz and damping ratio), and on perpdot's.
 void expectJointsHold(const crosscheck::Trajectory& t, float tolerance) {
     auto body = [&](const std::string& name) {
         for (size_t i = 0; i < t.bodies.size(); ++i)
@@ -259,6 +259,10 @@ void expectJointsHold(const crosscheck::Trajectory& t, float tolerance) {
 
 TEST(CrosscheckBox2DScene, JointsHoldTheirConstraints) {
     expectJointsHold(crosscheck::record(gateScene("joints"), crosscheck::Engine::Box2D), 5e-3f);
+}
+
+TEST(CrosscheckPhysics, PerpdotJointsHoldTheirConstraints) {
+    expectJointsHold(crosscheck::record(gateScene("joints"), crosscheck::Engine::Perpdot), 5e-3f);
 }
 
 }  // namespace
