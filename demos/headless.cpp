@@ -14,6 +14,7 @@
 #include "camera.hpp"
 #include "perpdot/crosscheck.hpp"
 #include "perpdot/error.hpp"
+#include "perpdot/feature_scenes.hpp"
 #include "perpdot/scene.hpp"
 #include "sdl_draw.hpp"
 #include "sdl_handles.hpp"
@@ -126,7 +127,8 @@ int runHeadless(const Options& options) {
         return 1;
     }
 
-    SceneWorld sw = buildWorld(scene);
+    SceneWorld sw = buildWorldWithBehaviour(scene);
+    const SceneBehaviour* behaviour = findSceneBehaviour(scene.name);
     const Camera camera = fitCamera(sw.world, width, height);
     double stepSeconds = 0.0;
     for (int frame = 0; frame < options.frames; ++frame) {
@@ -136,6 +138,10 @@ int runHeadless(const Options& options) {
             stepSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         }
         drawWorld(renderer.get(), sw.world, camera, options.draw);
+        if (behaviour && behaviour->draw) {
+            SdlDraw draw(renderer.get(), camera);
+            behaviour->draw(sw, draw);
+        }
         SDL_RenderFlush(renderer.get());
         const std::string path = framePath(dir, frame);
         if (IMG_SavePNG(target.get(), path.c_str()) != 0) {

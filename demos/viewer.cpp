@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "perpdot/error.hpp"
+#include "perpdot/feature_scenes.hpp"
 #include "sdl_draw.hpp"
 #include "sdl_handles.hpp"
 
@@ -67,7 +68,7 @@ public:
 private:
     void load(int index, bool newScene) {
         state_.current = index;
-        state_.sim = std::make_unique<SceneWorld>(buildWorld(state_.scenes[index].make()));
+        state_.sim = std::make_unique<SceneWorld>(buildWorldWithBehaviour(state_.scenes[index].make()));
         SceneWorld& sim = *state_.sim;
         if (newScene) {
             state_.tweaks = {.gravity = sim.scene.gravity, .substeps = sim.world.settings().substeps};
@@ -195,6 +196,8 @@ private:
         const World& world = state_.sim->world;
         drawWorld(renderer_, world, camera_, state_.draw);
         SdlDraw draw(renderer_, camera_);
+        if (const SceneBehaviour* behaviour = findSceneBehaviour(state_.sim->scene.name); behaviour && behaviour->draw)
+            behaviour->draw(*state_.sim, draw);
         if (state_.showBox2D) {
             state_.box2d.update(*state_.sim);
             state_.box2d.draw(draw, *state_.sim);

@@ -191,6 +191,24 @@ TEST(DemoHeadless, BodyIsDrawnWhereTheWorldSaysItIs) {
     fs::remove_all(dir);
 }
 
+// The feature scenes' behaviours run in the demo: the laser's beam, drawn by its SceneBehaviour
+// and not by debugDraw, shows as beam-red pixels.
+TEST(DemoHeadless, FeatureSceneBehaviourDrawsTheLaser) {
+    const fs::path dir = tempDir();
+    const DemoRun run = runDemo("--headless laser --frames 2 --every 10 --size 320x240 --no-crosscheck --out '" + dir.string() + "'");
+    ASSERT_EQ(run.status, 0) << run.output;
+    const Image frame = loadPng(dir / frameName(1));
+    ASSERT_TRUE(frame.surface);
+    int beam = 0;
+    for (int y = 0; y < frame.height(); ++y)
+        for (int x = 0; x < frame.width(); ++x) {
+            const Color c = frame.at(x, y);
+            beam += c.r == 255 && c.g == 40 && c.b == 40;
+        }
+    EXPECT_GT(beam, 50) << "no laser beam drawn";
+    fs::remove_all(dir);
+}
+
 TEST(DemoHeadless, BadInputsExitNonZero) {
     const fs::path dir = tempDir();
     const std::string out = " --out '" + dir.string() + "'";

@@ -8,11 +8,7 @@
 namespace perpdot {
 namespace {
 
-SceneWorld buildFeatureScene(const std::string& name) {
-    SceneWorld sw = buildWorld(findScene(name));
-    if (const SceneBehaviour* behaviour = findSceneBehaviour(name); behaviour && behaviour->setup) behaviour->setup(sw);
-    return sw;
-}
+SceneWorld buildFeatureScene(const std::string& name) { return buildWorldWithBehaviour(findScene(name)); }
 
 void runScene(SceneWorld& sw, int steps) {
     for (int i = 0; i < steps; ++i) sw.step();

@@ -1,7 +1,7 @@
 // What a scene file cannot say about the built-in feature demos (one_way_platform, conveyor,
-// laser, sensor_zone): callbacks and per-frame queries. A viewer looks the scene up by name after
-// buildWorld(), calls setup() once (pre-solve callbacks, tangent speeds) and draw() every frame
-// (the laser's ray cast, the shapes inside a sensor zone).
+// laser, sensor_zone): callbacks and per-frame queries. buildWorldWithBehaviour() builds a scene
+// and runs its setup() once (pre-solve callbacks, tangent speeds); a viewer calls draw() every
+// frame (the laser's ray cast, the shapes inside a sensor zone).
 #pragma once
 
 #include <functional>
@@ -19,5 +19,8 @@ struct SceneBehaviour {
 
 // The behaviour of a built-in scene, or nullptr when the scene needs none.
 const SceneBehaviour* findSceneBehaviour(std::string_view sceneName);
+
+// buildWorld(scene), then the setup() of the behaviour named like the scene, if it has one.
+SceneWorld buildWorldWithBehaviour(const Scene& scene);
 
 }  // namespace perpdot

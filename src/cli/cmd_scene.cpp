@@ -12,6 +12,7 @@
 #include "cli/run_snapshot.hpp"
 #include "perpdot/crosscheck.hpp"
 #include "perpdot/error.hpp"
+#include "perpdot/feature_scenes.hpp"
 #include "perpdot/scene.hpp"
 #include "perpdot/state_hash.hpp"
 #include "scene/scene_limits.hpp"
@@ -89,7 +90,7 @@ int runCommand(Args args) {
     const RunOptions options = parseRunOptions(args);
     Scene scene = findScene(options.scene);
     if (options.steps) scene.steps = *options.steps;
-    SceneWorld built = buildWorld(scene);
+    SceneWorld built = buildWorldWithBehaviour(scene);
     if (!options.loadPath.empty()) loadRun(options.loadPath, built);  // continue from its step
     const int first = built.stepIndex + 1;
     if (options.saveAt && (options.saveAt->step < built.stepIndex || options.saveAt->step > scene.steps))

@@ -177,4 +177,10 @@ const SceneBehaviour* findSceneBehaviour(std::string_view sceneName) {
     return found == behaviours().end() ? nullptr : &found->second;
 }
 
+SceneWorld buildWorldWithBehaviour(const Scene& scene) {
+    SceneWorld built = buildWorld(scene);
+    if (const SceneBehaviour* behaviour = findSceneBehaviour(scene.name); behaviour && behaviour->setup) behaviour->setup(built);
+    return built;
+}
+
 }  // namespace perpdot
