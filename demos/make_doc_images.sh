@@ -21,6 +21,13 @@ shot rain 110 shapes
 shot offcenter_hit 80 shapes,com,velocities
 shot newtons_cradle 45 shapes,velocities
 shot vertical_stack 60 shapes,contacts,impulses
+shot pyramid 120 shapes
+shot chain 60 shapes,joints
+shot suspension_bridge 150 shapes,joints
+shot ragdoll 70 shapes,joints
+shot windmill 200 shapes,joints
+shot laser 90 shapes
+shot one_way_platform 80 shapes
 
 # a contact sheet: the dominoes falling, 16 frames a third of a second apart
 "$demo" --headless dominoes --frames 16 --every 20 --size 480x320 --no-crosscheck --out "$work/sheet" > /dev/null
