@@ -125,7 +125,8 @@ Scene rain() {
             case 1: shape = boxShape(size, uniform(0.6f, 1.0f) * size); break;
             default: shape = polygonShape({{-size, -0.6f * size}, {size, -0.6f * size}, {0.0f, size}}); break;
         }
-        const Vec2 position{-6.3f + 1.4f * (i % 10) + uniform(-0.25f, 0.25f), 4.0f + 1.2f * (i / 10) + uniform(0.0f, 0.3f)};
+        const int column = i % 10, row = i / 10;  // 15 rows of 10
+        const Vec2 position{-6.3f + 1.4f * column + uniform(-0.25f, 0.25f), 4.0f + 1.2f * row + uniform(0.0f, 0.3f)};
         addBody(s, {.position = position, .angle = uniform(-pi, pi), .shapes = {shape}});
     }
     return s;
