@@ -1,8 +1,9 @@
 // A 40-link chain of revolute joints holding a weight of a hundred links (2.5 times the chain).
-// Rigid rows take their full effective mass (no soft leak), so what stretch remains is what the
-// Gauss-Seidel passes leave unconverged down a chain with a 100:1 mass ratio at its end, and it
-// falls fast with substeps: measured worst stretch 2.41 % at 4 substeps, 0.44 % at 8, 0.084 % at 16.
-// The test runs at 8 substeps, the setting docs/joints.md recommends for heavy chains.
+// Rigid rows are soft in the biased pass, so under a load F a row settles F/(m_eff ω²) long, ω =
+// 2π·jointHertz (the fixed point of Δλ = −m_eff·massScale·(Ċ + biasRate·C) − impulseScale·λ):
+// the chain's stretch is (g/ω²) Σ load_k/m_eff,k, ~1/substeps² with the joint stiffness at its
+// cap of a quarter of the substep rate. At 4 substeps (60 Hz) it is 2.2 % settled, 6.5 % in the
+// first jerk; at 16 substeps (240 Hz) 16 times less (docs/joints.md).
 #include <gtest/gtest.h>
 
 #include <string>
@@ -16,7 +17,8 @@ using namespace joint_test;
 
 TEST(JointChain, FortyLinksUnderHeavyWeightStretchLessThanOnePercent) {
     WorldDef def;
-    def.substeps = 8;
+    def.substeps = 16;
+    def.jointHertz = 240.0f;
     World world(def);
     const float top = 30.0f, half = 0.25f;  // links 0.5 m long
     const int links = 40;
