@@ -152,7 +152,7 @@ Scene car() {
 // seven of the top row are static. Sleep off (per body, which the file format keeps).
 Scene jointGrid() {
     Scene s;
-    s.steps = 300;
+    s.steps = 500;
     const int n = 100;
     SceneShape circle = circleShape(0.4f);
     circle.filter.category = 0x0002;
