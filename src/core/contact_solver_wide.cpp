@@ -3,6 +3,7 @@
 // into lanes, runs the rows of contact_solver_wide.hpp once for all four, and scatters the
 // velocities back. Constraints no colour could take (a body touching more than 16 others) are
 // solved one by one with the same rows at F = float, after the blocks.
+#include <algorithm>
 #include <array>
 
 #include "core/world_impl.hpp"
@@ -117,21 +118,23 @@ void prepareContactBlocks(World::Impl& w) {
     const int count = static_cast<int>(w.constraints.size());
     w.contactColoring.reset(static_cast<int>(w.states.size()));
     w.contactColors.resize(w.constraints.size());
-    // Counting sort by colour; afterwards colour k is contactOrder[begin[k]..begin[k + 1]).
-    int begin[overflow + 2] = {};
+    // Counting sort by colour: colour k (overflow last) is contactOrder[start[k]..start[k + 1]).
+    int start[overflow + 2] = {};
     for (int index = 0; index < count; ++index) {
         const ContactConstraint& c = w.constraints[index];
         w.contactColors[index] = w.contactColoring.assign(c.indexA, c.indexB);
-        ++begin[w.contactColors[index] + 2];
+        ++start[w.contactColors[index] + 1];
     }
-    for (int color = 2; color <= overflow + 1; ++color) begin[color] += begin[color - 1];
+    for (int color = 1; color <= overflow + 1; ++color) start[color] += start[color - 1];
+    int next[overflow + 1];
+    std::copy(start, start + overflow + 1, next);
     w.contactOrder.resize(w.constraints.size());
-    for (int index = 0; index < count; ++index) w.contactOrder[begin[w.contactColors[index] + 1]++] = index;
+    for (int index = 0; index < count; ++index) w.contactOrder[next[w.contactColors[index]]++] = index;
 
     w.contactBlocks.clear();
     for (int color = 0; color < overflow; ++color) {
-        for (int k = begin[color]; k < begin[color + 1]; ++k) {
-            const int lane = (k - begin[color]) % 4;
+        for (int k = start[color]; k < start[color + 1]; ++k) {
+            const int lane = (k - start[color]) % 4;
             if (lane == 0) w.contactBlocks.emplace_back();
             ContactBlock& block = w.contactBlocks.back();
             const ContactConstraint& c = w.constraints[w.contactOrder[k]];
@@ -140,7 +143,7 @@ void prepareContactBlocks(World::Impl& w) {
             block.bodyB[lane] = c.indexB;
         }
     }
-    w.overflowConstraints.assign(w.contactOrder.begin() + begin[overflow], w.contactOrder.end());
+    w.overflowConstraints.assign(w.contactOrder.begin() + start[overflow], w.contactOrder.end());
     static const ContactRows<float> emptyLane;  // no mass, no active point: leaves the bodies alone
     for (ContactBlock& block : w.contactBlocks) {
         std::array<const ContactRows<float>*, 4> lanes;
