@@ -40,7 +40,7 @@ struct ContactRows {
 
 // Apply impulse P at the anchors where `active`: vA -= P/mA, ωA -= perpDot(rA,P)/IA, and + for B.
 template <class F>
-void applyImpulse(const ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, Vec2T<F> rA, Vec2T<F> rB, Vec2T<F> P,
+inline void applyImpulse(const ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, Vec2T<F> rA, Vec2T<F> rB, Vec2T<F> P,
                   simd::MaskOf<F> active) {
     using simd::select;
     a.v.x = select(active, a.v.x - c.invMassA * P.x, a.v.x);
@@ -53,14 +53,14 @@ void applyImpulse(const ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, Vec
 
 // Angular impulse λ on ωB − ωA where `active`: ωA -= λ/IA, ωB += λ/IB.
 template <class F>
-void applyAngularImpulse(const ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, F impulse, simd::MaskOf<F> active) {
+inline void applyAngularImpulse(const ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, F impulse, simd::MaskOf<F> active) {
     a.w = simd::select(active, a.w - c.invIA * impulse, a.w);
     b.w = simd::select(active, b.w + c.invIB * impulse, b.w);
 }
 
 // v_rel = v_B + ωB perp(rB) − (v_A + ωA perp(rA)).
 template <class F>
-Vec2T<F> relativeVelocity(const BodyLanes<F>& a, const BodyLanes<F>& b, Vec2T<F> rA, Vec2T<F> rB) {
+inline Vec2T<F> relativeVelocity(const BodyLanes<F>& a, const BodyLanes<F>& b, Vec2T<F> rA, Vec2T<F> rB) {
     return pointVelocity(b.v, b.w, rB) - pointVelocity(a.v, a.w, rA);
 }
 
