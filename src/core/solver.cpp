@@ -200,6 +200,7 @@ void World::Impl::solve(float h) {
         solveJoints(*this, ctx, false);
         solveContacts(*this, ctx, false);
     }
+    unpackContactBlocks(*this);
     applyRestitution(*this, ctx);
     storeJointImpulses(*this, ctx);
     storeContactImpulses(*this);

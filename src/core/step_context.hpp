@@ -4,19 +4,15 @@
 
 #include <vector>
 
+#include "core/lanes.hpp"
 #include "core/softness.hpp"
 #include "perpdot/math.hpp"
 
 namespace perpdot {
 
-// Per-substep state of a solver body. Slot 0 is the shared static body: it never moves, so
-// rows against static bodies need no branches.
-struct BodyState {
-    Vec2 v;       // linear velocity of the centre of mass
-    float w = 0;  // angular velocity ω
-    Vec2 dp;      // centre-of-mass displacement since the step began
-    Rot dq;       // rotation since the step began
-};
+// Per-substep state of a solver body: v, ω, Δp, Δq (lanes.hpp). Slot 0 is the shared static
+// body: it never moves, so rows against static bodies need no branches.
+using BodyState = BodyLanes<float>;
 
 // Velocity change a constrained body receives at the start of every substep:
 // v = dv + linearDamping·v, ω = dw + angularDamping·ω (a free body gets dv = 0, damping = 1).

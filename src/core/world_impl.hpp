@@ -10,6 +10,8 @@
 #include <vector>
 
 #include "collide/collision.hpp"
+#include "core/contact_solver_wide.hpp"
+#include "core/graph_color.hpp"
 #include "core/joint.hpp"
 #include "core/step_context.hpp"
 #include "perpdot/error.hpp"
@@ -89,25 +91,12 @@ struct Contact {
     ContactEdge edges[2];  // in bodyA's list (side 0) and bodyB's (side 1)
 };
 
-struct ContactConstraintPoint {
-    Vec2 anchorA, anchorB;     // fixed for the step: rA, rB
-    float baseSeparation = 0;  // separation minus (rB - rA)·n, so s = base + (ΔpB + rB' - ΔpA - rA')·n
-    float relativeVelocity = 0;  // v_rel·n before solving, for restitution
-    float normalImpulse = 0, tangentImpulse = 0, maxNormalImpulse = 0;
-    float normalMass = 0, tangentMass = 0;  // 1 / effectiveMass of each row
-};
-
-struct ContactConstraint {
+// A contact's rows for this step (ContactRows<float>, contact_solver_wide.hpp) and where they
+// came from: the bodies' solver slots and the contact.
+struct ContactConstraint : ContactRows<float> {
     int indexA = 0, indexB = 0;  // solver slots
     int contact = -1;
-    float invMassA = 0, invIA = 0, invMassB = 0, invIB = 0;
-    Vec2 normal;
-    float friction = 0, restitution = 0;
-    float rollingResistance = 0, tangentSpeed = 0;
-    float rollingMass = 0, rollingImpulse = 0;  // angular row: 1/(1/IA + 1/IB), accumulated λ
-    Softness softness;
     int pointCount = 0;
-    ContactConstraintPoint points[2];
 };
 
 // Identity of a broadphase pair in World::Impl::pairs.
@@ -163,6 +152,11 @@ struct World::Impl {
     std::vector<float> stepRotation;    // Δθ of states[i], summed over substeps
     std::vector<SubstepForces> substepForces;  // of states[i]
     std::vector<ContactConstraint> constraints;
+    GraphColoring contactColoring;               // colours of `constraints` (graph_color.hpp)
+    std::vector<ContactBlock> contactBlocks;     // four constraints of one colour each, in colour order
+    std::vector<int> contactColors;              // prepareContactBlocks scratch: colour of each constraint,
+    std::vector<int> contactOrder;               // and the constraints sorted by colour
+    std::vector<int> overflowConstraints;        // constraints no colour could take: solved one by one
     std::vector<int> islandParent;      // union-find scratch for sleeping, by body index
     std::vector<float> islandMinSleep;
     std::vector<int> islandHead;
@@ -206,10 +200,13 @@ struct World::Impl {
     void solveContinuous(int body, Vec2 c0, float a0);
 };
 
-// Contact solver stages (contact_solver.cpp).
+// Contact solver stages (contact_solver.cpp, and contact_solver_wide.cpp for the rows solved in
+// graph-coloured blocks of four).
 void prepareContacts(World::Impl& world, const StepContext& ctx);
+void prepareContactBlocks(World::Impl& world);
 void warmStartContacts(World::Impl& world, const StepContext& ctx);
 void solveContacts(World::Impl& world, const StepContext& ctx, bool useBias);
+void unpackContactBlocks(World::Impl& world);  // the blocks' accumulated impulses back into `constraints`
 void applyRestitution(World::Impl& world, const StepContext& ctx);
 void storeContactImpulses(World::Impl& world);
 void reportHitEvents(World::Impl& world);

@@ -1,0 +1,146 @@
+// The contact rows, written once over a lane type F: float solves one constraint (the overflow
+// colour, contact_solver.cpp), simd::Float4 solves four constraints of one graph colour at once
+// (contact_solver_wide.cpp). Each row is Hecker's collision impulse
+//   j = -(v_rel·n + bias) / (1/mA + 1/mB + perpDot(rA,n)²/IA + perpDot(rB,n)²/IB)
+// accumulated and clamped (λn ≥ 0, |λt| ≤ μ λn), softened by the substep's Softness.
+//
+// A lane that is not a real manifold point (`active` false: a one-point manifold's second point)
+// computes like the others but leaves the bodies untouched, selected away bit for bit.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "collide/collision.hpp"
+#include "core/lanes.hpp"
+#include "core/step_context.hpp"
+
+namespace perpdot {
+
+template <class F>
+struct ContactPointRows {
+    Vec2T<F> anchorA, anchorB;  // fixed for the step: rA, rB
+    F baseSeparation{};         // separation minus (rB - rA)·n, so s = base + (ΔpB + rB' - ΔpA - rA')·n
+    F relativeVelocity{};       // v_rel·n before solving, for restitution
+    F normalImpulse{}, tangentImpulse{}, maxNormalImpulse{};
+    F normalMass{}, tangentMass{};  // 1 / effectiveMass of each row
+    simd::MaskOf<F> active{};       // a manifold point (not the unused second point)
+};
+
+template <class F>
+struct ContactRows {
+    F invMassA{}, invIA{}, invMassB{}, invIB{};
+    Vec2T<F> normal;
+    F friction{}, restitution{};
+    F rollingResistance{}, tangentSpeed{};
+    F rollingMass{}, rollingImpulse{};  // angular row: 1/(1/IA + 1/IB), accumulated λ
+    F biasRate{}, massScale{}, impulseScale{};  // the row's Softness (softness.hpp)
+    ContactPointRows<F> points[2];
+};
+
+// Apply impulse P at the anchors where `active`: vA -= P/mA, ωA -= perpDot(rA,P)/IA, and + for B.
+template <class F>
+inline void applyImpulse(const ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, Vec2T<F> rA, Vec2T<F> rB, Vec2T<F> P,
+                  simd::MaskOf<F> active) {
+    using simd::select;
+    a.v.x = select(active, a.v.x - c.invMassA * P.x, a.v.x);
+    a.v.y = select(active, a.v.y - c.invMassA * P.y, a.v.y);
+    a.w = select(active, a.w - c.invIA * perpDot(rA, P), a.w);
+    b.v.x = select(active, b.v.x + c.invMassB * P.x, b.v.x);
+    b.v.y = select(active, b.v.y + c.invMassB * P.y, b.v.y);
+    b.w = select(active, b.w + c.invIB * perpDot(rB, P), b.w);
+}
+
+// Angular impulse λ on ωB − ωA where `active`: ωA -= λ/IA, ωB += λ/IB.
+template <class F>
+inline void applyAngularImpulse(const ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, F impulse, simd::MaskOf<F> active) {
+    a.w = simd::select(active, a.w - c.invIA * impulse, a.w);
+    b.w = simd::select(active, b.w + c.invIB * impulse, b.w);
+}
+
+// v_rel = v_B + ωB perp(rB) − (v_A + ωA perp(rA)).
+template <class F>
+inline Vec2T<F> relativeVelocity(const BodyLanes<F>& a, const BodyLanes<F>& b, Vec2T<F> rA, Vec2T<F> rB) {
+    return pointVelocity(b.v, b.w, rB) - pointVelocity(a.v, a.w, rA);
+}
+
+// Re-apply last step's accumulated impulses: λn n + λt perp(n) at each point, λr on the angle.
+template <class F>
+void warmStartContact(const ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b) {
+    const Vec2T<F> n = c.normal, t = perp(n);
+    for (const ContactPointRows<F>& cp : c.points)
+        applyImpulse(c, a, b, cp.anchorA, cp.anchorB, cp.normalImpulse * n + cp.tangentImpulse * t, cp.active);
+    applyAngularImpulse(c, a, b, c.rollingImpulse, c.rollingResistance > F(0.0f));
+}
+
+// One pass over a constraint's rows: non-penetration, then friction, then rolling resistance.
+template <class F>
+void solveContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, const StepContext& ctx, bool useBias) {
+    using simd::max;
+    using simd::select;
+    const Vec2T<F> n = c.normal;
+    const Vec2T<F> dp = b.dp - a.dp;
+
+    // Non-penetration: λn ≥ 0.
+    F totalNormalImpulse = 0.0f;
+    for (ContactPointRows<F>& cp : c.points) {
+        // Current separation without a new narrowphase: s = base + (ΔpB + rB' - ΔpA - rA')·n.
+        const Vec2T<F> rA = cp.anchorA, rB = cp.anchorB;
+        const F s = cp.baseSeparation + dot(dp + rotate(b.dq, rB) - rotate(a.dq, rA), n);
+        // Speculative (s > 0): bias = s/hs, a rigid row that may close the gap this substep, no more.
+        const simd::MaskOf<F> speculative = s > F(0.0f);
+        F bias = select(speculative, s * F(ctx.invHs), F(0.0f));
+        F massScale = 1.0f, impulseScale = 0.0f;
+        if (useBias) {
+            // Push out only what exceeds the linear slop, so resting contacts stay touching.
+            const F push = max(c.biasRate * simd::min(s + F(collide::linearSlop), F(0.0f)), F(-ctx.maxBiasVelocity));
+            bias = select(speculative, bias, push);
+            massScale = select(speculative, massScale, c.massScale);
+            impulseScale = select(speculative, impulseScale, c.impulseScale);
+        }
+        const F vn = dot(relativeVelocity(a, b, rA, rB), n);
+        F impulse = -cp.normalMass * massScale * (vn + bias) - impulseScale * cp.normalImpulse;
+        const F newImpulse = max(cp.normalImpulse + impulse, F(0.0f));
+        impulse = newImpulse - cp.normalImpulse;
+        cp.normalImpulse = newImpulse;
+        cp.maxNormalImpulse = max(cp.maxNormalImpulse, impulse);
+        totalNormalImpulse += select(cp.active, newImpulse, F(0.0f));
+        applyImpulse(c, a, b, rA, rB, impulse * n, cp.active);
+    }
+
+    // Coulomb friction along t = perp(n): |λt| ≤ μ λn. A conveyor's surfaces move clockwise
+    // around their shapes, which is −tangentSpeed along perp(n): the row drives v_rel·t to it.
+    const Vec2T<F> t = perp(n);
+    for (ContactPointRows<F>& cp : c.points) {
+        const Vec2T<F> rA = cp.anchorA, rB = cp.anchorB;
+        const F vt = dot(relativeVelocity(a, b, rA, rB), t) + c.tangentSpeed;
+        const F maxFriction = c.friction * cp.normalImpulse;
+        const F newImpulse = simd::clamp(cp.tangentImpulse - cp.tangentMass * vt, -maxFriction, maxFriction);
+        const F impulse = newImpulse - cp.tangentImpulse;
+        cp.tangentImpulse = newImpulse;
+        applyImpulse(c, a, b, rA, rB, impulse * t, cp.active);
+    }
+
+    // Rolling resistance: an angular row on ωB − ωA, |λr| ≤ rollingResistance·Σλn.
+    const F maxLambda = c.rollingResistance * totalNormalImpulse;
+    const F lambda = c.rollingImpulse;
+    c.rollingImpulse = simd::clamp(lambda - c.rollingMass * (b.w - a.w), -maxLambda, maxLambda);
+    applyAngularImpulse(c, a, b, c.rollingImpulse - lambda, c.rollingResistance > F(0.0f));
+}
+
+// Four constraints of one graph colour (no two share a dynamic body) as the lanes of one row set.
+struct ContactBlock {
+    ContactRows<simd::Float4> rows;
+    int constraint[4] = {-1, -1, -1, -1};  // index in World::Impl::constraints; -1: an empty lane
+    int bodyA[4] = {}, bodyB[4] = {};      // solver slots; an empty lane uses the static slot 0
+};
+
+// Four constraints' rows as lanes (an empty lane: a default ContactRows, which moves nothing).
+ContactRows<simd::Float4> packContactRows(const std::array<const ContactRows<float>*, 4>& lanes);
+// The state of four solver bodies as lanes.
+BodyLanes<simd::Float4> gatherBodies(const std::vector<BodyState>& states, const int (&slots)[4]);
+// Write back the velocities the rows changed (Δp and Δq are the integrator's). The static slot 0
+// is skipped: lanes share it and it never moves.
+void scatterVelocities(std::vector<BodyState>& states, const int (&slots)[4], const BodyLanes<simd::Float4>& lanes);
+
+}  // namespace perpdot

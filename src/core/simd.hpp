@@ -1,0 +1,128 @@
+// Float4: four float lanes for the wide contact solver. SSE2 on x86-64; elsewhere, or when
+// PERPDOT_NO_SIMD is defined, a plain struct of four floats with the same semantics.
+//
+// Only exactly rounded IEEE operations are offered (+, −, ×, negation, min, max, compare and
+// select: what the contact rows use): no FMA and no approximate reciprocal, so every lane computes
+// bit for bit what the scalar `float` code computes. The float overloads of min, max and select below give the scalar
+// (1-lane) case the very same semantics, so one template serves both.
+#pragma once
+
+#if !defined(PERPDOT_NO_SIMD) && (defined(__SSE2__) || defined(_M_X64))
+#define PERPDOT_SSE2 1
+#include <emmintrin.h>
+#endif
+
+namespace perpdot::simd {
+
+// The 1-lane case. max(a, b) = a > b ? a : b and min(a, b) = a < b ? a : b, as SSE's maxps/minps
+// define them (the second operand when the comparison is false, e.g. for ±0 or NaN).
+inline float min(float a, float b) { return a < b ? a : b; }
+inline float max(float a, float b) { return a > b ? a : b; }
+inline float select(bool mask, float ifTrue, float ifFalse) { return mask ? ifTrue : ifFalse; }
+
+#ifdef PERPDOT_SSE2
+
+struct Mask4 {
+    __m128 m;
+};
+
+struct Float4 {
+    __m128 v;
+
+    Float4() : v(_mm_setzero_ps()) {}
+    Float4(float s) : v(_mm_set1_ps(s)) {}  // implicit: a float broadcasts, so it mixes with lanes like a scalar
+    explicit Float4(__m128 m) : v(m) {}
+
+    static Float4 load(const float* p) { return Float4(_mm_loadu_ps(p)); }
+    void store(float* p) const { _mm_storeu_ps(p, v); }
+
+    friend Float4 operator+(Float4 a, Float4 b) { return Float4(_mm_add_ps(a.v, b.v)); }
+    friend Float4 operator-(Float4 a, Float4 b) { return Float4(_mm_sub_ps(a.v, b.v)); }
+    friend Float4 operator*(Float4 a, Float4 b) { return Float4(_mm_mul_ps(a.v, b.v)); }
+    friend Float4 operator-(Float4 a) { return Float4(_mm_xor_ps(a.v, _mm_set1_ps(-0.0f))); }  // flips the sign bit, as -x does
+    Float4& operator+=(Float4 b) { return *this = *this + b; }
+
+    friend Mask4 operator>(Float4 a, Float4 b) { return {_mm_cmpgt_ps(a.v, b.v)}; }
+};
+
+inline Float4 min(Float4 a, Float4 b) { return Float4(_mm_min_ps(a.v, b.v)); }
+inline Float4 max(Float4 a, Float4 b) { return Float4(_mm_max_ps(a.v, b.v)); }
+inline Float4 select(Mask4 mask, Float4 ifTrue, Float4 ifFalse) {
+    return Float4(_mm_or_ps(_mm_and_ps(mask.m, ifTrue.v), _mm_andnot_ps(mask.m, ifFalse.v)));
+}
+
+inline Mask4 maskFromBools(const bool lanes[4]) {
+    const auto bits = [&](int i) { return lanes[i] ? -1 : 0; };
+    return {_mm_castsi128_ps(_mm_set_epi32(bits(3), bits(2), bits(1), bits(0)))};
+}
+
+#else  // the portable fallback: the same operations lane by lane
+
+struct Mask4 {
+    bool m[4] = {};
+};
+
+struct Float4 {
+    float v[4] = {};
+
+    Float4() = default;
+    Float4(float s) : v{s, s, s, s} {}  // implicit: a float broadcasts, so it mixes with lanes like a scalar
+
+    static Float4 load(const float* p) {
+        Float4 r;
+        for (int i = 0; i < 4; ++i) r.v[i] = p[i];
+        return r;
+    }
+    void store(float* p) const {
+        for (int i = 0; i < 4; ++i) p[i] = v[i];
+    }
+
+    template <class Op>
+    static Float4 lanewise(Float4 a, Float4 b, Op op) {
+        Float4 r;
+        for (int i = 0; i < 4; ++i) r.v[i] = op(a.v[i], b.v[i]);
+        return r;
+    }
+    template <class Op>
+    static Mask4 compare(Float4 a, Float4 b, Op op) {
+        Mask4 r;
+        for (int i = 0; i < 4; ++i) r.m[i] = op(a.v[i], b.v[i]);
+        return r;
+    }
+
+    friend Float4 operator+(Float4 a, Float4 b) { return lanewise(a, b, [](float x, float y) { return x + y; }); }
+    friend Float4 operator-(Float4 a, Float4 b) { return lanewise(a, b, [](float x, float y) { return x - y; }); }
+    friend Float4 operator*(Float4 a, Float4 b) { return lanewise(a, b, [](float x, float y) { return x * y; }); }
+    friend Float4 operator-(Float4 a) { return lanewise(a, a, [](float x, float) { return -x; }); }
+    Float4& operator+=(Float4 b) { return *this = *this + b; }
+
+    friend Mask4 operator>(Float4 a, Float4 b) { return compare(a, b, [](float x, float y) { return x > y; }); }
+};
+
+inline Float4 min(Float4 a, Float4 b) { return Float4::lanewise(a, b, [](float x, float y) { return min(x, y); }); }
+inline Float4 max(Float4 a, Float4 b) { return Float4::lanewise(a, b, [](float x, float y) { return max(x, y); }); }
+inline Float4 select(Mask4 mask, Float4 ifTrue, Float4 ifFalse) {
+    Float4 r;
+    for (int i = 0; i < 4; ++i) r.v[i] = mask.m[i] ? ifTrue.v[i] : ifFalse.v[i];
+    return r;
+}
+
+inline Mask4 maskFromBools(const bool lanes[4]) {
+    Mask4 r;
+    for (int i = 0; i < 4; ++i) r.m[i] = lanes[i];
+    return r;
+}
+
+#endif
+
+// The mask type that comparisons of F give: bool for float, Mask4 for Float4.
+template <class F>
+using MaskOf = decltype(F{} > F{});
+
+// x limited to [lo, hi] (lo ≤ hi), lane by lane.
+template <class F>
+F clamp(F x, F lo, F hi) {
+    return min(max(x, lo), hi);
+}
+
+}  // namespace perpdot::simd

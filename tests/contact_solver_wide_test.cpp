@@ -1,0 +1,115 @@
+// The contact rows of src/core/contact_solver_wide.hpp solve four constraints in simd::Float4
+// lanes with bit for bit the results of solving them one at a time with F = float (no FMA, no
+// approximate reciprocal), including one-point manifolds, rolling resistance and empty lanes.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <bit>
+#include <cstdint>
+#include <vector>
+
+#include "core/contact_solver_wide.hpp"
+
+namespace perpdot {
+namespace {
+
+struct Random {
+    uint32_t x = 987654321u;
+    float operator()(float lo, float hi) {
+        x = x * 1664525u + 1013904223u;
+        return lo + (hi - lo) * static_cast<float>(x >> 8) / 16777216.0f;
+    }
+};
+
+ContactRows<float> randomRows(Random& r, int pointCount, bool rolling) {
+    ContactRows<float> c;
+    c.invMassA = r(0.1f, 2.0f);
+    c.invIA = r(0.1f, 4.0f);
+    c.invMassB = r(0.1f, 2.0f);
+    c.invIB = r(0.1f, 4.0f);
+    c.normal = normalize(Vec2{r(-1.0f, 1.0f), r(0.2f, 1.0f)});
+    c.friction = r(0.0f, 1.0f);
+    c.rollingResistance = rolling ? r(0.01f, 0.2f) : 0.0f;
+    c.rollingMass = rolling ? 1.0f / (c.invIA + c.invIB) : 0.0f;
+    c.rollingImpulse = rolling ? r(-0.1f, 0.1f) : 0.0f;
+    c.tangentSpeed = r(-0.5f, 0.5f);
+    c.biasRate = r(10.0f, 60.0f);
+    c.massScale = r(0.5f, 1.0f);
+    c.impulseScale = r(0.0f, 0.5f);
+    for (int i = 0; i < pointCount; ++i) {
+        ContactPointRows<float>& p = c.points[i];
+        p.active = true;
+        p.anchorA = {r(-0.5f, 0.5f), r(-0.5f, 0.5f)};
+        p.anchorB = {r(-0.5f, 0.5f), r(-0.5f, 0.5f)};
+        p.baseSeparation = r(-0.05f, 0.02f);
+        p.normalImpulse = r(0.0f, 1.0f);
+        p.tangentImpulse = r(-0.2f, 0.2f);
+        p.normalMass = r(0.2f, 2.0f);
+        p.tangentMass = r(0.2f, 2.0f);
+    }
+    return c;
+}
+
+BodyState randomBody(Random& r) {
+    const float angle = r(-0.1f, 0.1f);
+    return {{r(-2.0f, 2.0f), r(-2.0f, 2.0f)}, r(-3.0f, 3.0f), {r(-0.1f, 0.1f), r(-0.1f, 0.1f)}, Rot::fromAngle(angle)};
+}
+
+bool sameBits(float a, float b) { return std::bit_cast<uint32_t>(a) == std::bit_cast<uint32_t>(b); }
+
+TEST(ContactSolverWide, FourLanesEqualFourScalarSolves) {
+    StepContext ctx;
+    ctx.invHs = 240.0f;
+    Random r;
+    for (int round = 0; round < 50; ++round) {
+        // Lanes: a two-point manifold, a one-point one with rolling resistance, one against the
+        // static slot 0, and an empty lane (round % 2) or another two-point manifold.
+        const bool emptyLast = round % 2 == 0;
+        std::vector<BodyState> states(9);
+        for (int i = 1; i < 9; ++i) states[i] = randomBody(r);
+        std::array<ContactRows<float>, 4> rows = {randomRows(r, 2, false), randomRows(r, 1, true), randomRows(r, 2, false),
+                                                  emptyLast ? ContactRows<float>{} : randomRows(r, 2, true)};
+        rows[2].invMassA = rows[2].invIA = 0.0f;  // body A of lane 2 is static
+        const int bodyA[4] = {1, 3, 0, emptyLast ? 0 : 7};
+        const int bodyB[4] = {2, 4, 5, emptyLast ? 0 : 8};
+
+        std::vector<BodyState> scalar = states;
+        std::array<ContactRows<float>, 4> scalarRows = rows;
+        for (const bool useBias : {true, false}) {
+            for (int lane = 0; lane < (emptyLast ? 3 : 4); ++lane) {
+                warmStartContact(scalarRows[lane], scalar[bodyA[lane]], scalar[bodyB[lane]]);
+                solveContact(scalarRows[lane], scalar[bodyA[lane]], scalar[bodyB[lane]], ctx, useBias);
+            }
+        }
+
+        ContactRows<simd::Float4> wide = packContactRows({&rows[0], &rows[1], &rows[2], &rows[3]});
+        for (const bool useBias : {true, false}) {
+            BodyLanes<simd::Float4> a = gatherBodies(states, bodyA), b = gatherBodies(states, bodyB);
+            warmStartContact(wide, a, b);
+            solveContact(wide, a, b, ctx, useBias);
+            scatterVelocities(states, bodyA, a);
+            scatterVelocities(states, bodyB, b);
+        }
+
+        for (int i = 0; i < 9; ++i) {
+            EXPECT_TRUE(sameBits(states[i].v.x, scalar[i].v.x)) << "round " << round << " body " << i;
+            EXPECT_TRUE(sameBits(states[i].v.y, scalar[i].v.y)) << "round " << round << " body " << i;
+            EXPECT_TRUE(sameBits(states[i].w, scalar[i].w)) << "round " << round << " body " << i;
+        }
+        float normal[4], tangent[4], rolling[4];
+        wide.rollingImpulse.store(rolling);
+        for (int lane = 0; lane < 4; ++lane) EXPECT_TRUE(sameBits(rolling[lane], scalarRows[lane].rollingImpulse)) << lane;
+        for (int i = 0; i < 2; ++i) {
+            wide.points[i].normalImpulse.store(normal);
+            wide.points[i].tangentImpulse.store(tangent);
+            for (int lane = 0; lane < 4; ++lane) {
+                if (!rows[lane].points[i].active) continue;
+                EXPECT_TRUE(sameBits(normal[lane], scalarRows[lane].points[i].normalImpulse)) << lane;
+                EXPECT_TRUE(sameBits(tangent[lane], scalarRows[lane].points[i].tangentImpulse)) << lane;
+            }
+        }
+    }
+}
+
+}  // namespace
+}  // namespace perpdot
