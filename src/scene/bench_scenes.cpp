@@ -142,6 +142,7 @@ std::vector<BuiltinScene> benchScenes() {
          benchTumbler},
         {"smash", "benchmark: zero gravity, an 8 m box at 40 m/s smashes a block of 9,600 boxes, sleep off, 300 steps",
          smash},
+        ragdollRainScene(),
         {"spinner",
          "benchmark: a 40 m bar turned at 5 rad/s by a motor stirs 6,000 shapes in a chain loop, sleep off, 500 steps",
          spinner},
