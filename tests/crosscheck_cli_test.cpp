@@ -184,4 +184,12 @@ TEST(CrosscheckCli, BenchPrintsBothEngines) {
     EXPECT_NE(r.output.find("x "), std::string::npos) << r.output;  // the ratio column, e.g. 0.80x
 }
 
+TEST(CrosscheckCli, BenchPrintsEachScenesStabilityFigure) {
+    const Result r = perpdot("bench smash --steps 5 --repeat 1");
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("stability p / b2"), std::string::npos) << r.output;  // the column's header
+    EXPECT_NE(r.output.find("momentum error: "), std::string::npos) << r.output;  // smash's figure, both engines
+    EXPECT_NE(r.output.find(" of p0"), std::string::npos) << r.output;
+}
+
 }  // namespace

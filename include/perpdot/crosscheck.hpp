@@ -125,13 +125,17 @@ struct TimingOptions {
 struct EngineTiming {
     double msPerStep = 0.0;  // median over the repeats
     int contacts = 0;        // touching contacts after the last step
-    float topDrop = 0.0f;    // how far the initially highest dynamic body fell, metres
+    float stability = 0.0f;  // the scene's stability figure after the last step (Timing::stabilityLabel)
 };
 struct Timing {
     std::string scene;
-    int bodies = 0;  // non-static
+    int bodies = 0;  // non-static, alive after the last step (a scene's script may spawn and destroy)
     int steps = 0;
     EngineTiming perpdot, box2d;
+    // What EngineTiming::stability measures for this scene (docs/crosscheck.md): "top fell" (m),
+    // "escaped" (bodies), "momentum error" (of p0, the initial momentum) or "below floor" (bodies).
+    std::string stabilityLabel;
+    std::string stabilityUnit;
 };
 Timing time(const Scene& scene, const TimingOptions& options = {});
 

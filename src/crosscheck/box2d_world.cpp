@@ -254,25 +254,34 @@ b2Joint* createJoint(b2World& world, const SceneJoint& j, b2Body* a, b2Body* b) 
 Box2DScene::Box2DScene(const Scene& scene)
     : scene_(scene), world_(std::make_unique<b2World>(toB2(scene.gravity))) {
     world_->SetAllowSleeping(scene.enableSleep);
-    for (const SceneBody& b : scene_.bodies) {
-        const b2BodyDef def = bodyDef(b);
-        b2Body* body = world_->CreateBody(&def);
-        for (const SceneShape& s : b.shapes) createFixture(body, s);
-        roundedMass(body, b);
-        bodies_.push_back(body);
-    }
+    bodies_ = add(scene_);
     const NameIndex index(scene_);
-    for (size_t i = 0; i < scene_.joints.size(); ++i) {
-        const SceneJoint& j = scene_.joints[i];
-        const std::string where = "joints[" + std::to_string(i) + "]";
-        b2Body* a = bodies_[index(j.bodyA, where + ".body_a")];
-        b2Body* b = bodies_[index(j.bodyB, where + ".body_b")];
-        createJoint(*world_, j, a, b);
-    }
     for (size_t i = 0; i < scene_.actions.size(); ++i) {
         actionBodies_.push_back(bodies_[index(scene_.actions[i].body, "actions[" + std::to_string(i) + "].body")]);
     }
 }
+
+std::vector<b2Body*> Box2DScene::add(const Scene& fragment) {
+    std::vector<b2Body*> bodies;
+    for (const SceneBody& b : fragment.bodies) {
+        const b2BodyDef def = bodyDef(b);
+        b2Body* body = world_->CreateBody(&def);
+        for (const SceneShape& s : b.shapes) createFixture(body, s);
+        roundedMass(body, b);
+        bodies.push_back(body);
+    }
+    const NameIndex index(fragment);
+    for (size_t i = 0; i < fragment.joints.size(); ++i) {
+        const SceneJoint& j = fragment.joints[i];
+        const std::string where = "joints[" + std::to_string(i) + "]";
+        b2Body* a = bodies[index(j.bodyA, where + ".body_a")];
+        b2Body* b = bodies[index(j.bodyB, where + ".body_b")];
+        createJoint(*world_, j, a, b);
+    }
+    return bodies;
+}
+
+void Box2DScene::destroy(b2Body* body) { world_->DestroyBody(body); }
 
 void Box2DScene::applyActions(int step) {
     for (size_t i = 0; i < scene_.actions.size(); ++i) {

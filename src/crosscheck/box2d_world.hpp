@@ -21,6 +21,12 @@ public:
     void step();
     int stepIndex() const { return stepIndex_; }
 
+    // Creates a fragment's bodies and joints (its joints name its own bodies) in the running world;
+    // returns its bodies in fragment order. The scene's own bodies stay what body() returns.
+    std::vector<b2Body*> add(const Scene& fragment);
+    // Destroys a body made by add(), with its fixtures, joints and contacts.
+    void destroy(b2Body* body);
+
     const Scene& scene() const { return scene_; }
     b2Body* body(int sceneIndex) const { return bodies_[size_t(sceneIndex)]; }
 

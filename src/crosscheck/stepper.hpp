@@ -8,6 +8,7 @@
 
 #include "perpdot/crosscheck.hpp"
 #include "perpdot/scene.hpp"
+#include "scene/scene_script.hpp"
 
 namespace perpdot::crosscheck {
 
@@ -23,15 +24,21 @@ struct BodySample {
 class Stepper {
 public:
     virtual ~Stepper() = default;
-    // Applies the scene's actions for the next step index, then advances one time step.
+    // Runs the scene's script (scene_script.hpp) and applies the scene's actions for the next step
+    // index, then advances one time step.
     virtual void step() = 0;
     // The scene's non-static bodies, in scene order.
     virtual void sample(std::vector<BodySample>& out) const = 0;
+    // Every non-static body alive: the scene's, then those its script spawned, oldest spawn first.
+    virtual void sampleAll(std::vector<BodySample>& out) const = 0;
     // Touching contacts, sensors excluded.
     virtual int contactCount() const = 0;
 };
 
+// The scene in `engine`, with the script of the built-in scene of its name (makeSceneScript), if any.
 std::unique_ptr<Stepper> makeStepper(Engine engine, const Scene& scene);
+// The scene in `engine`, run by `script` (may be nullptr: none).
+std::unique_ptr<Stepper> makeStepper(Engine engine, const Scene& scene, std::unique_ptr<SceneScript> script);
 
 // The scene body's name, or its default `body<index>` when unnamed.
 std::string bodyName(const Scene& scene, size_t index);

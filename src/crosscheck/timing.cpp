@@ -1,9 +1,10 @@
-// `perpdot bench`: the same scene timed in perpdot and in Box2D, median of a few repeats.
-// Building a world is not timed; the engines take turns going first so neither always runs on
-// a cold cache or a warmed-up CPU clock.
+// `perpdot bench`: the same scene timed in perpdot and in Box2D, median of a few repeats, with
+// each engine's stability figure (stability.hpp). Building a world is not timed; the engines take
+// turns going first so neither always runs on a cold cache or a warmed-up CPU clock.
 #include <algorithm>
 #include <chrono>
 
+#include "crosscheck/stability.hpp"
 #include "crosscheck/stepper.hpp"
 #include "perpdot/crosscheck.hpp"
 #include "perpdot/error.hpp"
@@ -11,37 +12,25 @@
 namespace perpdot::crosscheck {
 namespace {
 
-// Index among the scene's non-static bodies of the dynamic body that starts highest; -1: none.
-int topBody(const Scene& scene) {
-    int top = -1, moving = 0;
-    float topY = 0.0f;
-    for (const SceneBody& b : scene.bodies) {
-        if (b.type == BodyType::Static) continue;
-        if (b.type == BodyType::Dynamic && (top < 0 || b.position.y > topY)) top = moving, topY = b.position.y;
-        ++moving;
-    }
-    return top;
-}
-
 struct Run {
     double msPerStep;
     int contacts;
-    float topDrop;
+    int bodies;
+    float stability;
 };
 
-Run timeOnce(Engine engine, const Scene& scene, int steps, int top) {
+Run timeOnce(Engine engine, const Scene& scene, int steps, const StabilityProbe& probe) {
     const auto stepper = makeStepper(engine, scene);
-    std::vector<BodySample> samples;
-    stepper->sample(samples);
-    const float y0 = top >= 0 ? samples[size_t(top)].state.position.y : 0.0f;
+    std::vector<BodySample> first, last;
+    stepper->sampleAll(first);
 
     const auto start = std::chrono::steady_clock::now();
     for (int i = 0; i < steps; ++i) stepper->step();
     const auto stop = std::chrono::steady_clock::now();
 
-    stepper->sample(samples);
+    stepper->sampleAll(last);
     const double ms = std::chrono::duration<double, std::milli>(stop - start).count();
-    return {steps > 0 ? ms / steps : 0.0, stepper->contactCount(), top >= 0 ? y0 - samples[size_t(top)].state.position.y : 0.0f};
+    return {steps > 0 ? ms / steps : 0.0, stepper->contactCount(), int(last.size()), probe.measure(first, last)};
 }
 
 double median(std::vector<double> values) {
@@ -55,17 +44,19 @@ double median(std::vector<double> values) {
 Timing time(const Scene& scene, const TimingOptions& options) {
     if (options.repeats < 1) throw Error("repeats: must be at least 1");
     const int steps = options.steps < 0 ? scene.steps : options.steps;
-    const int top = topBody(scene);
-    Timing timing{.scene = scene.name, .bodies = int(movingBodyNames(scene).size()), .steps = steps, .perpdot = {}, .box2d = {}};
+    const StabilityProbe probe(scene);
+    Timing timing{.scene = scene.name, .bodies = 0, .steps = steps, .perpdot = {}, .box2d = {},
+                  .stabilityLabel = probe.label(), .stabilityUnit = probe.unit()};
     std::vector<double> perpdotMs, box2dMs;
     for (int r = 0; r < options.repeats; ++r) {
         const bool perpdotFirst = r % 2 == 0;
         for (const Engine engine : {perpdotFirst ? Engine::Perpdot : Engine::Box2D, perpdotFirst ? Engine::Box2D : Engine::Perpdot}) {
-            const Run run = timeOnce(engine, scene, steps, top);
+            const Run run = timeOnce(engine, scene, steps, probe);
             EngineTiming& out = engine == Engine::Perpdot ? timing.perpdot : timing.box2d;
             (engine == Engine::Perpdot ? perpdotMs : box2dMs).push_back(run.msPerStep);
             out.contacts = run.contacts;
-            out.topDrop = run.topDrop;
+            out.stability = run.stability;
+            if (engine == Engine::Perpdot) timing.bodies = run.bodies;
         }
     }
     timing.perpdot.msPerStep = median(perpdotMs);

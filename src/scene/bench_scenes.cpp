@@ -1,10 +1,15 @@
 // The large scenes of the benchmarks, built as Box2D v3's benchmark suite builds them
-// (sleeping off, so every step solves every body).
+// (sleeping off, so every step solves every body; dt = 1/60).
+#include <cmath>
+#include <string>
+
 #include "scene/builtin_registry.hpp"
 #include "scene/scene_builders.hpp"
 
 namespace perpdot {
 namespace {
+
+constexpr float degrees = pi / 180.0f;
 
 // 100 boxes in the bottom row: 100·101/2 = 5,050 boxes on a 200 m ground.
 Scene largePyramid() {
@@ -37,6 +42,94 @@ Scene manyPyramids() {
     return s;
 }
 
+// A 20 m hollow box (four 1 m thick walls, density 50) turned at 25°/s by a revolute motor about
+// its centre, 10 m up, tumbling 45 × 45 = 2,025 boxes of 0.25 m laid out 0.4 m apart inside it.
+Scene benchTumbler() {
+    Scene s;
+    s.steps = 750;
+    const Vec2 center{0.0f, 10.0f};
+    const float half = 10.0f, wall = 0.5f;
+    addBody(s, {.name = "ground", .type = BodyType::Static});
+    SceneBody& container = addBody(s, {.name = "container", .position = center, .allowSleep = false,
+                                       .shapes = {boxShape(wall, half, {half, 0.0f}), boxShape(wall, half, {-half, 0.0f}),
+                                                  boxShape(half, wall, {0.0f, half}), boxShape(half, wall, {0.0f, -half})}});
+    for (SceneShape& shape : container.shapes) shape.density = 50.0f;
+    SceneJoint motor{.type = JointType::Revolute, .bodyA = "ground", .bodyB = "container", .anchor = center};
+    motor.enableMotor = true, motor.motorSpeed = 25.0f * degrees, motor.maxMotorTorque = 1.0e8f;
+    s.joints.push_back(motor);
+    const int grid = 45;
+    const float spacing = 0.4f, start = -0.5f * spacing * grid;
+    for (int i = 0; i < grid; ++i)
+        for (int j = 0; j < grid; ++j)
+            addBody(s, {.position = {start + spacing * j, center.y + start + spacing * i}, .allowSleep = false,
+                        .shapes = {boxShape(0.125f, 0.125f)}});
+    return s;
+}
+
+// Zero gravity: an 8 m box of density 8 at 40 m/s into a touching block of 120 × 80 boxes of
+// 0.4 m (9,600). Nothing outside acts on the bodies, so their total momentum must stay the box's.
+Scene smash() {
+    Scene s;
+    s.steps = 300;
+    s.gravity = {0.0f, 0.0f};
+    SceneShape ram = boxShape(4.0f, 4.0f);
+    ram.density = 8.0f;
+    addBody(s, {.name = "ram", .position = {-20.0f, 0.0f}, .linearVelocity = {40.0f, 0.0f}, .allowSleep = false,
+                .shapes = {ram}});
+    const int columns = 120, rows = 80;
+    const float d = 0.4f;
+    for (int i = 0; i < columns; ++i)
+        for (int j = 0; j < rows; ++j)
+            addBody(s, {.position = {30.0f + d * i, d * (j - 0.5f * rows)}, .allowSleep = false,
+                        .shapes = {boxShape(0.5f * d, 0.5f * d)}});
+    return s;
+}
+
+// A closed chain loop of radius 40 (360 points, wound clockwise so its one-sided segments face
+// inwards) with a 40 m rounded bar turned at 5 rad/s by a revolute motor, stirring 6,000 boxes,
+// circles and hexagons. Box2D v3 stirs 3,038 larger, overlapping shapes; these fit their 0.5 m grid.
+Scene spinner() {
+    Scene s;
+    s.steps = 500;
+    const Vec2 loopCenter{0.0f, 32.0f};
+    const float loopRadius = 40.0f;
+    const int points = 360;
+    SceneShape loop{.kind = SceneShape::Kind::Chain, .loop = true, .friction = 0.1f};
+    for (int i = 0; i < points; ++i) {
+        const float a = -2.0f * pi * static_cast<float>(i) / points;
+        loop.vertices.push_back({loopCenter.x + loopRadius * std::cos(a), loopCenter.y + loopRadius * std::sin(a)});
+    }
+    addBody(s, {.name = "container", .type = BodyType::Static, .shapes = {loop}});
+
+    const Vec2 pivot{0.0f, 12.0f};
+    const float barHalfWidth = 0.4f, barHalfLength = 20.0f;
+    SceneShape bar = polygonShape({{-barHalfWidth, -barHalfLength}, {barHalfWidth, -barHalfLength},
+                                   {barHalfWidth, barHalfLength}, {-barHalfWidth, barHalfLength}},
+                                  0.2f);
+    bar.friction = 0.0f;
+    addBody(s, {.name = "bar", .position = pivot, .allowSleep = false, .shapes = {bar}});
+    SceneJoint motor{.type = JointType::Revolute, .bodyA = "container", .bodyB = "bar", .anchor = pivot};
+    motor.enableMotor = true, motor.motorSpeed = 5.0f, motor.maxMotorTorque = 40000.0f;
+    s.joints.push_back(motor);
+
+    std::vector<Vec2> hexagon;
+    for (int k = 0; k < 6; ++k) hexagon.push_back({0.22f * std::cos(k * pi / 3.0f), 0.22f * std::sin(k * pi / 3.0f)});
+    const SceneShape kinds[] = {boxShape(0.2f, 0.2f), circleShape(0.2f), polygonShape(hexagon)};
+    const int count = 6000;
+    const float spacing = 0.5f, halfRow = 23.0f, barClearance = 0.75f;
+    float x = -halfRow, y = 2.0f;
+    for (int i = 0; i < count; ++i) {
+        SceneShape shape = kinds[i % 3];
+        shape.friction = 0.1f, shape.restitution = 0.1f, shape.density = 0.25f;
+        addBody(s, {.position = {x, y}, .allowSleep = false, .shapes = {shape}});
+        do {  // next grid point, leaving the upright bar free
+            x += spacing;
+            if (x > halfRow) x = -halfRow, y += spacing;
+        } while (std::abs(x - pivot.x) < barClearance);
+    }
+    return s;
+}
+
 }  // namespace
 
 std::vector<BuiltinScene> benchScenes() {
@@ -44,6 +137,15 @@ std::vector<BuiltinScene> benchScenes() {
         {"large_pyramid", "benchmark: a pyramid 100 boxes wide (5,050 boxes), sleep off, 500 steps", largePyramid},
         {"many_pyramids", "benchmark: 20 x 20 pyramids of base 10 (22,000 boxes) on 20 shelves, sleep off, 200 steps",
          manyPyramids},
+        {"bench_tumbler",
+         "benchmark: a 20 m hollow box turned at 25 deg/s by a revolute motor tumbles 2,025 boxes, sleep off, 750 steps",
+         benchTumbler},
+        {"smash", "benchmark: zero gravity, an 8 m box at 40 m/s smashes a block of 9,600 boxes, sleep off, 300 steps",
+         smash},
+        ragdollRainScene(),
+        {"spinner",
+         "benchmark: a 40 m bar turned at 5 rad/s by a motor stirs 6,000 shapes in a chain loop, sleep off, 500 steps",
+         spinner},
     };
 }
 

@@ -1,9 +1,11 @@
 // A Scene built into perpdot's World, and the scene's scripted actions applied step by step.
+#include "scene/build_world.hpp"
+
 #include <string>
 #include <unordered_map>
+#include <utility>
 
 #include "perpdot/error.hpp"
-#include "perpdot/scene.hpp"
 
 namespace perpdot {
 namespace {
@@ -44,16 +46,17 @@ struct JointFrame {
     float referenceAngle = 0.0f;  // θB - θA at creation: the joint's zero angle
 };
 
-JointFrame jointFrame(const SceneJoint& j, const SceneWorld& built, const std::unordered_map<std::string, size_t>& index) {
+JointFrame jointFrame(const SceneJoint& j, const World& world, const Scene& scene, const std::vector<BodyId>& bodies,
+                      const std::unordered_map<std::string, size_t>& index) {
     const auto body = [&](const std::string& name) -> size_t {
         const auto it = index.find(name);
         if (it == index.end()) throw Error("no body named \"" + name + "\"");
         return it->second;
     };
     const size_t a = body(j.bodyA), b = body(j.bodyB);
-    JointFrame f{.bodyA = built.bodies[a], .bodyB = built.bodies[b]};
-    f.frameA = built.world.transform(f.bodyA);
-    f.frameB = built.world.transform(f.bodyB);
+    JointFrame f{.bodyA = bodies[a], .bodyB = bodies[b]};
+    f.frameA = world.transform(f.bodyA);
+    f.frameB = world.transform(f.bodyB);
     if (j.anchor) {
         f.localAnchorA = invTransformPoint(f.frameA, *j.anchor);
         f.localAnchorB = invTransformPoint(f.frameB, j.anchorB.value_or(*j.anchor));
@@ -61,7 +64,7 @@ JointFrame jointFrame(const SceneJoint& j, const SceneWorld& built, const std::u
         f.localAnchorA = j.localAnchorA.value_or(Vec2{});
         f.localAnchorB = j.localAnchorB.value_or(Vec2{});
     }
-    f.referenceAngle = built.scene.bodies[b].angle - built.scene.bodies[a].angle;
+    f.referenceAngle = scene.bodies[b].angle - scene.bodies[a].angle;
     return f;
 }
 
@@ -113,21 +116,18 @@ std::string element(const char* list, size_t i) { return std::string(list) + "["
 
 }  // namespace
 
-SceneWorld buildWorld(const Scene& scene) {
-    WorldDef def{.gravity = scene.gravity, .enableSleep = scene.enableSleep};
-    if (scene.solver.substeps) def.substeps = *scene.solver.substeps;
-    SceneWorld built{.world = World(def), .scene = scene};
-
+SceneBodies addToWorld(World& world, const Scene& scene) {
+    SceneBodies built;
     std::unordered_map<std::string, size_t> index;
     for (size_t i = 0; i < scene.bodies.size(); ++i) {
         const SceneBody& b = scene.bodies[i];
         std::string path = element("bodies", i);
         try {
             if (!index.emplace(b.name, i).second) throw Error("duplicate body name \"" + b.name + "\"");
-            built.bodies.push_back(built.world.createBody(bodyDef(b)));
+            built.bodies.push_back(world.createBody(bodyDef(b)));
             for (size_t k = 0; k < b.shapes.size(); ++k) {
                 path = element("bodies", i) + "." + element("shapes", k);
-                createShape(built.world, built.bodies.back(), b.shapes[k]);
+                createShape(world, built.bodies.back(), b.shapes[k]);
             }
         } catch (const Error& e) {
             throw Error(path + ": " + e.what());
@@ -136,7 +136,7 @@ SceneWorld buildWorld(const Scene& scene) {
     for (size_t i = 0; i < scene.joints.size(); ++i) {
         try {
             const SceneJoint& j = scene.joints[i];
-            built.joints.push_back(createJoint(built.world, j, jointFrame(j, built, index)));
+            built.joints.push_back(createJoint(world, j, jointFrame(j, world, scene, built.bodies, index)));
         } catch (const Error& e) {
             throw Error(element("joints", i) + ": " + e.what());
         }
@@ -144,6 +144,16 @@ SceneWorld buildWorld(const Scene& scene) {
     for (size_t i = 0; i < scene.actions.size(); ++i)
         if (!index.contains(scene.actions[i].body))
             throw Error(element("actions", i) + ".body: no body named \"" + scene.actions[i].body + "\"");
+    return built;
+}
+
+SceneWorld buildWorld(const Scene& scene) {
+    WorldDef def{.gravity = scene.gravity, .enableSleep = scene.enableSleep};
+    if (scene.solver.substeps) def.substeps = *scene.solver.substeps;
+    SceneWorld built{.world = World(def), .scene = scene};
+    SceneBodies added = addToWorld(built.world, scene);
+    built.bodies = std::move(added.bodies);
+    built.joints = std::move(added.joints);
     return built;
 }
 

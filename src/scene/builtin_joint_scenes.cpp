@@ -4,6 +4,7 @@
 #include <string>
 
 #include "scene/builtin_registry.hpp"
+#include "scene/ragdoll_figure.hpp"
 #include "scene/scene_builders.hpp"
 
 namespace perpdot {
@@ -81,40 +82,12 @@ Scene suspensionBridge() {
     return s;
 }
 
-// A limp human figure of boxes: limited revolute joints at neck, shoulders, elbows, hips, knees.
+// A limp human figure of boxes (ragdoll_figure.hpp), spinning as it falls to the ground.
 Scene ragdoll() {
     Scene s;
     addGround(s, 20.0f);
-    const float y = 6.0f;
-    addBody(s, {.name = "torso", .position = {0.0f, y}, .angularVelocity = 2.0f, .shapes = {boxShape(0.25f, 0.5f)}});
-    addBody(s, {.name = "head", .position = {0.0f, y + 0.8f}, .shapes = {circleShape(0.25f)}});
-    SceneJoint neck = revolute("torso", "head", {0.0f, y + 0.55f});
-    neck.enableLimit = true, neck.lowerAngle = -0.5f, neck.upperAngle = 0.5f;
-    s.joints.push_back(neck);
-    for (float side : {-1.0f, 1.0f}) {
-        const std::string tag = side < 0 ? "_left" : "_right";
-        const float x = 0.35f * side;
-        addBody(s, {.name = "upper_arm" + tag, .position = {x, y + 0.15f}, .shapes = {boxShape(0.1f, 0.3f)}});
-        addBody(s, {.name = "lower_arm" + tag, .position = {x, y - 0.45f}, .shapes = {boxShape(0.08f, 0.3f)}});
-        addBody(s, {.name = "upper_leg" + tag, .position = {0.12f * side, y - 0.85f}, .shapes = {boxShape(0.11f, 0.35f)}});
-        addBody(s, {.name = "lower_leg" + tag, .position = {0.12f * side, y - 1.55f}, .shapes = {boxShape(0.09f, 0.35f)}});
-        const struct {
-            const char *a, *b;
-            Vec2 anchor;
-            float lower, upper;
-        } limbs[] = {
-            {"torso", "upper_arm", {x, y + 0.45f}, -2.5f, 2.5f},
-            {"upper_arm", "lower_arm", {x, y - 0.15f}, side < 0 ? 0.0f : -2.5f, side < 0 ? 2.5f : 0.0f},
-            {"torso", "upper_leg", {0.12f * side, y - 0.5f}, -1.5f, 1.5f},
-            {"upper_leg", "lower_leg", {0.12f * side, y - 1.2f}, -2.5f, 0.0f},
-        };
-        for (const auto& limb : limbs) {
-            const std::string a = limb.a == std::string("torso") ? "torso" : limb.a + tag;
-            SceneJoint j = revolute(a, limb.b + tag, limb.anchor);
-            j.enableLimit = true, j.lowerAngle = limb.lower, j.upperAngle = limb.upper;
-            s.joints.push_back(j);
-        }
-    }
+    addRagdoll(s, {0.0f, 6.0f});
+    s.bodies[1].angularVelocity = 2.0f;  // the torso; bodies[0] is the ground
     return s;
 }
 
