@@ -91,7 +91,7 @@ Joint& checkedJoint(const World::Impl& w, JointId id) {
     return const_cast<Joint&>(s.joints[id.index]);
 }
 
-JointPair pairOf(World::Impl& w, const Joint& j) {
+JointPair pairOf(World::Impl& w, const PreparedJoint& j) {
     std::vector<BodyState>& states = w.states;
     return {states[j.indexA], states[j.indexB], j.mass, w.stepRotation[j.indexB] - w.stepRotation[j.indexA]};
 }
@@ -161,22 +161,27 @@ JointId jointId(const World::Impl& w, const Joint& joint) {
 void prepareJoints(World::Impl& w, const StepContext& ctx) {
     JointStore& s = store(w);
     s.active.clear();
+    s.prepared.clear();
     s.invHs = ctx.invHs;
     for (int index = 0; index < static_cast<int>(s.joints.size()); ++index) {
-        Joint& j = s.joints[index];
-        if (!j.alive) continue;
-        const Body& a = w.bodies[j.bodyA];
-        const Body& b = w.bodies[j.bodyB];
+        const Joint& joint = s.joints[index];
+        if (!joint.alive) continue;
+        const Body& a = w.bodies[joint.bodyA];
+        const Body& b = w.bodies[joint.bodyB];
         if (a.solverIndex == 0 && b.solverIndex == 0) continue;  // both static or asleep
+        s.active.push_back(index);
+        PreparedJoint& j = s.prepared.emplace_back();
+        j.type = joint.type;
+        j.data = joint.data;
         j.indexA = a.solverIndex;
         j.indexB = b.solverIndex;
         // A body outside the solver (static, or held asleep) is immovable for this step.
         j.mass = {a.solverIndex ? a.invMass : 0.0f, a.solverIndex ? a.invInertia : 0.0f,
                   b.solverIndex ? b.invMass : 0.0f, b.solverIndex ? b.invInertia : 0.0f};
-        j.anchorA = rotate(a.xf.q, j.localAnchorA - a.localCenter);
-        j.anchorB = rotate(b.xf.q, j.localAnchorB - b.localCenter);
+        j.anchorA = rotate(a.xf.q, joint.localAnchorA - a.localCenter);
+        j.anchorB = rotate(b.xf.q, joint.localAnchorB - b.localCenter);
         j.deltaCenter = b.center - a.center;
-        j.deltaAngle = b.angle - a.angle - j.referenceAngle;
+        j.deltaAngle = b.angle - a.angle - joint.referenceAngle;
         switch (j.type) {
             case JointType::Revolute: prepareRevolute(j, ctx, a.xf.q); break;
             case JointType::Prismatic: preparePrismatic(j, ctx, a.xf.q); break;
@@ -186,15 +191,12 @@ void prepareJoints(World::Impl& w, const StepContext& ctx) {
             case JointType::Motor: prepareMotor(j, ctx, a.xf.q); break;
             case JointType::Mouse: prepareMouse(j, ctx, a.xf.q); break;
         }
-        s.active.push_back(index);
     }
 }
 
 // Every substep begins by re-applying the accumulated impulses (Box2D v3's soft step).
 void warmStartJoints(World::Impl& w, const StepContext&) {
-    JointStore& s = store(w);
-    for (int index : s.active) {
-        Joint& j = s.joints[index];
+    for (PreparedJoint& j : store(w).prepared) {
         JointPair p = pairOf(w, j);
         switch (j.type) {
             case JointType::Revolute: warmStartRevolute(j, p); break;
@@ -209,9 +211,7 @@ void warmStartJoints(World::Impl& w, const StepContext&) {
 }
 
 void solveJoints(World::Impl& w, const StepContext& ctx, bool useBias) {
-    JointStore& s = store(w);
-    for (int index : s.active) {
-        Joint& j = s.joints[index];
+    for (PreparedJoint& j : store(w).prepared) {
         JointPair p = pairOf(w, j);
         switch (j.type) {
             case JointType::Revolute: solveRevolute(j, p, ctx, useBias); break;
@@ -225,8 +225,11 @@ void solveJoints(World::Impl& w, const StepContext& ctx, bool useBias) {
     }
 }
 
-// The accumulated impulses live in the joints themselves, ready for the next step's warm start.
-void storeJointImpulses(World::Impl&, const StepContext&) {}
+// The accumulated impulses go back to the joints, ready for the next step's warm start.
+void storeJointImpulses(World::Impl& w, const StepContext&) {
+    JointStore& s = store(w);
+    for (size_t k = 0; k < s.active.size(); ++k) s.joints[s.active[k]].data = s.prepared[k].data;
+}
 
 bool jointAllowsCollision(const World::Impl& w, int bodyA, int bodyB) {
     if (w.bodies[bodyA].jointCount == 0 || w.bodies[bodyB].jointCount == 0) return true;
