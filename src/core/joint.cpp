@@ -158,18 +158,41 @@ JointId jointId(const World::Impl& w, const Joint& joint) {
 
 // --- Solver stages ---
 
-void prepareJoints(World::Impl& w, const StepContext& ctx) {
-    JointStore& s = store(w);
-    s.active.clear();
-    s.prepared.clear();
-    s.invHs = ctx.invHs;
+namespace {
+
+// The active joints sorted by graph colour (graph_color.hpp), stably: consecutive joints of one
+// colour share no moving body, so a pass never waits for the velocities the previous joint wrote.
+void orderByColor(World::Impl& w, JointStore& s) {
+    s.coloring.reset(static_cast<int>(w.states.size()));
+    s.colored.clear();
+    s.colors.clear();
+    std::array<int, GraphColoring::colorCount + 2> start{};  // start[c + 1] counts colour c first
     for (int index = 0; index < static_cast<int>(s.joints.size()); ++index) {
         const Joint& joint = s.joints[index];
         if (!joint.alive) continue;
+        const int slotA = w.bodies[joint.bodyA].solverIndex, slotB = w.bodies[joint.bodyB].solverIndex;
+        if (slotA == 0 && slotB == 0) continue;  // both static or asleep
+        const int color = s.coloring.assign(slotA, slotB);
+        s.colored.push_back(index);
+        s.colors.push_back(color);
+        ++start[color + 1];
+    }
+    for (size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
+    s.active.resize(s.colored.size());
+    for (size_t k = 0; k < s.colored.size(); ++k) s.active[start[s.colors[k]]++] = s.colored[k];
+}
+
+}  // namespace
+
+void prepareJoints(World::Impl& w, const StepContext& ctx) {
+    JointStore& s = store(w);
+    s.invHs = ctx.invHs;
+    orderByColor(w, s);
+    s.prepared.clear();
+    for (int index : s.active) {
+        const Joint& joint = s.joints[index];
         const Body& a = w.bodies[joint.bodyA];
         const Body& b = w.bodies[joint.bodyB];
-        if (a.solverIndex == 0 && b.solverIndex == 0) continue;  // both static or asleep
-        s.active.push_back(index);
         PreparedJoint& j = s.prepared.emplace_back();
         j.type = joint.type;
         j.data = joint.data;

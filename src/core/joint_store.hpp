@@ -5,10 +5,12 @@
 // values written by prepare, and the accumulated impulses kept for warm starting.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <type_traits>
 #include <vector>
 
+#include "core/graph_color.hpp"
 #include "core/joint.hpp"
 #include "core/softness.hpp"
 #include "core/step_context.hpp"
@@ -140,6 +142,10 @@ struct JointStore {
     std::vector<int> bodyHead;           // by body index: first edge key of its joint list, -1 if none
     std::vector<int> active;             // joints prepared this step: active[k] is prepared[k]'s index
     std::vector<PreparedJoint> prepared;
+    // Scratch of prepareJoints, kept to reuse its memory.
+    GraphColoring coloring;
+    std::vector<int> colored;  // active joints in store order, with their colours in `colors`
+    std::vector<int> colors;
     float invHs = 0;                     // of the last step, for reaction forces
 };
 
