@@ -47,9 +47,11 @@ void unlinkEdge(World::Impl& w, int contact, int side, int bodyIndex) {
 }  // namespace
 
 void World::Impl::updatePairs() {
-    // Every proxy that moved out of its fat AABB (or is new) looks for overlapping proxies.
+    // Every proxy that moved out of its fat AABB (or is new) looks for overlapping proxies, unless
+    // its filter rejects every shape (addPair would drop all it finds).
     newPairs.clear();
     for (int proxy : movedProxies) {
+        if (pairsWithNothing(shapes[collision.proxyKey(proxy).shape].filter)) continue;
         collision.query(collision.fatAABB(proxy), [&](int other) {
             // When both moved, only the pair's lower proxy reports it.
             if (other == proxy || (other < proxy && collision.wasMoved(other))) return true;

@@ -91,7 +91,7 @@ Joint& checkedJoint(const World::Impl& w, JointId id) {
     return const_cast<Joint&>(s.joints[id.index]);
 }
 
-JointPair pairOf(World::Impl& w, const Joint& j) {
+JointPair pairOf(World::Impl& w, const PreparedJoint& j) {
     std::vector<BodyState>& states = w.states;
     return {states[j.indexA], states[j.indexB], j.mass, w.stepRotation[j.indexB] - w.stepRotation[j.indexA]};
 }
@@ -158,25 +158,53 @@ JointId jointId(const World::Impl& w, const Joint& joint) {
 
 // --- Solver stages ---
 
+namespace {
+
+// The active joints sorted by graph colour (graph_color.hpp), stably: consecutive joints of one
+// colour share no moving body, so a pass never waits for the velocities the previous joint wrote.
+void orderByColor(World::Impl& w, JointStore& s) {
+    s.coloring.reset(static_cast<int>(w.states.size()));
+    s.colored.clear();
+    s.colors.clear();
+    std::array<int, GraphColoring::colorCount + 2> start{};  // start[c + 1] counts colour c first
+    for (int index = 0; index < static_cast<int>(s.joints.size()); ++index) {
+        const Joint& joint = s.joints[index];
+        if (!joint.alive) continue;
+        const int slotA = w.bodies[joint.bodyA].solverIndex, slotB = w.bodies[joint.bodyB].solverIndex;
+        if (slotA == 0 && slotB == 0) continue;  // both static or asleep
+        const int color = s.coloring.assign(slotA, slotB);
+        s.colored.push_back(index);
+        s.colors.push_back(color);
+        ++start[color + 1];
+    }
+    for (size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
+    s.active.resize(s.colored.size());
+    for (size_t k = 0; k < s.colored.size(); ++k) s.active[start[s.colors[k]]++] = s.colored[k];
+}
+
+}  // namespace
+
 void prepareJoints(World::Impl& w, const StepContext& ctx) {
     JointStore& s = store(w);
-    s.active.clear();
     s.invHs = ctx.invHs;
-    for (int index = 0; index < static_cast<int>(s.joints.size()); ++index) {
-        Joint& j = s.joints[index];
-        if (!j.alive) continue;
-        const Body& a = w.bodies[j.bodyA];
-        const Body& b = w.bodies[j.bodyB];
-        if (a.solverIndex == 0 && b.solverIndex == 0) continue;  // both static or asleep
+    orderByColor(w, s);
+    s.prepared.clear();
+    for (int index : s.active) {
+        const Joint& joint = s.joints[index];
+        const Body& a = w.bodies[joint.bodyA];
+        const Body& b = w.bodies[joint.bodyB];
+        PreparedJoint& j = s.prepared.emplace_back();
+        j.type = joint.type;
+        j.data = joint.data;
         j.indexA = a.solverIndex;
         j.indexB = b.solverIndex;
         // A body outside the solver (static, or held asleep) is immovable for this step.
         j.mass = {a.solverIndex ? a.invMass : 0.0f, a.solverIndex ? a.invInertia : 0.0f,
                   b.solverIndex ? b.invMass : 0.0f, b.solverIndex ? b.invInertia : 0.0f};
-        j.anchorA = rotate(a.xf.q, j.localAnchorA - a.localCenter);
-        j.anchorB = rotate(b.xf.q, j.localAnchorB - b.localCenter);
+        j.anchorA = rotate(a.xf.q, joint.localAnchorA - a.localCenter);
+        j.anchorB = rotate(b.xf.q, joint.localAnchorB - b.localCenter);
         j.deltaCenter = b.center - a.center;
-        j.deltaAngle = b.angle - a.angle - j.referenceAngle;
+        j.deltaAngle = b.angle - a.angle - joint.referenceAngle;
         switch (j.type) {
             case JointType::Revolute: prepareRevolute(j, ctx, a.xf.q); break;
             case JointType::Prismatic: preparePrismatic(j, ctx, a.xf.q); break;
@@ -186,15 +214,12 @@ void prepareJoints(World::Impl& w, const StepContext& ctx) {
             case JointType::Motor: prepareMotor(j, ctx, a.xf.q); break;
             case JointType::Mouse: prepareMouse(j, ctx, a.xf.q); break;
         }
-        s.active.push_back(index);
     }
 }
 
 // Every substep begins by re-applying the accumulated impulses (Box2D v3's soft step).
 void warmStartJoints(World::Impl& w, const StepContext&) {
-    JointStore& s = store(w);
-    for (int index : s.active) {
-        Joint& j = s.joints[index];
+    for (PreparedJoint& j : store(w).prepared) {
         JointPair p = pairOf(w, j);
         switch (j.type) {
             case JointType::Revolute: warmStartRevolute(j, p); break;
@@ -209,9 +234,7 @@ void warmStartJoints(World::Impl& w, const StepContext&) {
 }
 
 void solveJoints(World::Impl& w, const StepContext& ctx, bool useBias) {
-    JointStore& s = store(w);
-    for (int index : s.active) {
-        Joint& j = s.joints[index];
+    for (PreparedJoint& j : store(w).prepared) {
         JointPair p = pairOf(w, j);
         switch (j.type) {
             case JointType::Revolute: solveRevolute(j, p, ctx, useBias); break;
@@ -225,8 +248,11 @@ void solveJoints(World::Impl& w, const StepContext& ctx, bool useBias) {
     }
 }
 
-// The accumulated impulses live in the joints themselves, ready for the next step's warm start.
-void storeJointImpulses(World::Impl&, const StepContext&) {}
+// The accumulated impulses go back to the joints, ready for the next step's warm start.
+void storeJointImpulses(World::Impl& w, const StepContext&) {
+    JointStore& s = store(w);
+    for (size_t k = 0; k < s.active.size(); ++k) s.joints[s.active[k]].data = s.prepared[k].data;
+}
 
 bool jointAllowsCollision(const World::Impl& w, int bodyA, int bodyB) {
     if (w.bodies[bodyA].jointCount == 0 || w.bodies[bodyB].jointCount == 0) return true;

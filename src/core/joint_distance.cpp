@@ -26,7 +26,7 @@ JointId World::createJoint(const DistanceJointDef& def) {
     return jointId(*impl_, j);
 }
 
-void prepareDistance(Joint& j, const StepContext& ctx, Rot) {
+void prepareDistance(PreparedJoint& j, const StepContext& ctx, Rot) {
     DistanceJoint& s = j.data.distance;
     s.axis = normalize(j.deltaCenter + j.anchorB - j.anchorA);
     s.axialMass = effectiveMass(j.mass, linearRow(j.anchorA, j.anchorB, s.axis));
@@ -34,13 +34,13 @@ void prepareDistance(Joint& j, const StepContext& ctx, Rot) {
     if (!ctx.enableWarmStarting) s.impulse = s.lowerImpulse = s.upperImpulse = 0.0f;
 }
 
-void warmStartDistance(Joint& j, JointPair& p) {
+void warmStartDistance(PreparedJoint& j, JointPair& p) {
     const DistanceJoint& s = j.data.distance;
     const JointFrame f = currentFrame(j, p);
     applyRow(p, linearRow(f.rA, f.rB, normalize(f.d)), s.impulse + s.lowerImpulse - s.upperImpulse);
 }
 
-void solveDistance(Joint& j, JointPair& p, const StepContext& ctx, bool useBias) {
+void solveDistance(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool useBias) {
     DistanceJoint& s = j.data.distance;
     const JointFrame f = currentFrame(j, p);
     const float length = std::sqrt(lengthSquared(f.d));

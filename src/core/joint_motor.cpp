@@ -26,7 +26,7 @@ JointId World::createJoint(const MotorJointDef& def) {
     return jointId(*impl_, j);
 }
 
-void prepareMotor(Joint& j, const StepContext& ctx, Rot) {
+void prepareMotor(PreparedJoint& j, const StepContext& ctx, Rot) {
     MotorJoint& s = j.data.motor;
     s.axialMass = effectiveMass(j.mass, angularRow);
     if (!ctx.enableWarmStarting) {
@@ -35,14 +35,14 @@ void prepareMotor(Joint& j, const StepContext& ctx, Rot) {
     }
 }
 
-void warmStartMotor(Joint& j, JointPair& p) {
+void warmStartMotor(PreparedJoint& j, JointPair& p) {
     const MotorJoint& s = j.data.motor;
     const JointFrame f = currentFrame(j, p);
     applyPoint(p, f.rA, f.rB, s.linearImpulse);
     applyRow(p, angularRow, s.angularImpulse);
 }
 
-void solveMotor(Joint& j, JointPair& p, const StepContext& ctx, bool) {
+void solveMotor(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool) {
     MotorJoint& s = j.data.motor;
     const float rate = s.correctionFactor * ctx.invH;
     solveMotorRow(p, angularRow, s.axialMass, -rate * currentAngle(j, p), s.maxTorque * ctx.hs, s.angularImpulse);

@@ -25,19 +25,19 @@ JointId World::createJoint(const MouseJointDef& def) {
     return jointId(*impl_, j);
 }
 
-void prepareMouse(Joint& j, const StepContext& ctx, Rot) {
+void prepareMouse(PreparedJoint& j, const StepContext& ctx, Rot) {
     MouseJoint& s = j.data.mouse;
     j.mass.mA = j.mass.iA = 0.0f;  // the mouse pulls B only
     s.softness = makeSoftness(s.hertz, s.dampingRatio, ctx.hs);
     if (!ctx.enableWarmStarting) s.linearImpulse = {};
 }
 
-void warmStartMouse(Joint& j, JointPair& p) {
+void warmStartMouse(PreparedJoint& j, JointPair& p) {
     const JointFrame f = currentFrame(j, p);
     applyPoint(p, f.rA, f.rB, j.data.mouse.linearImpulse);
 }
 
-void solveMouse(Joint& j, JointPair& p, const StepContext& ctx, bool) {
+void solveMouse(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool) {
     MouseJoint& s = j.data.mouse;
     const JointFrame f = currentFrame(j, p);
     solvePointRows(p, f.rA, f.rB, f.d, s.softness, s.linearImpulse, s.maxForce * ctx.hs);

@@ -29,7 +29,7 @@ JointId World::createJoint(const PrismaticJointDef& def) {
     return jointId(*impl_, j);
 }
 
-void preparePrismatic(Joint& j, const StepContext& ctx, Rot qA) {
+void preparePrismatic(PreparedJoint& j, const StepContext& ctx, Rot qA) {
     PrismaticJoint& s = j.data.prismatic;
     s.axisA = rotate(qA, s.localAxisA);
     const Vec2 d = j.deltaCenter + j.anchorB - j.anchorA;
@@ -47,7 +47,7 @@ struct SliderRows {
     float translation, offset;  // along the axis, and off it
 };
 
-SliderRows sliderRows(const Joint& j, const JointPair& p) {
+SliderRows sliderRows(const PreparedJoint& j, const JointPair& p) {
     const JointFrame f = currentFrame(j, p);
     const Vec2 axis = rotate(p.a.dq, j.data.prismatic.axisA);
     return {linearRow(f.rA + f.d, f.rB, axis), linearRow(f.rA + f.d, f.rB, perp(axis)), dot(axis, f.d),
@@ -56,7 +56,7 @@ SliderRows sliderRows(const Joint& j, const JointPair& p) {
 
 }  // namespace
 
-void warmStartPrismatic(Joint& j, JointPair& p) {
+void warmStartPrismatic(PreparedJoint& j, JointPair& p) {
     const PrismaticJoint& s = j.data.prismatic;
     const SliderRows rows = sliderRows(j, p);
     applyRow(p, rows.axial, s.motorImpulse + s.lowerImpulse - s.upperImpulse);
@@ -64,7 +64,7 @@ void warmStartPrismatic(Joint& j, JointPair& p) {
     applyRow(p, angularRow, s.impulse.y);
 }
 
-void solvePrismatic(Joint& j, JointPair& p, const StepContext& ctx, bool useBias) {
+void solvePrismatic(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool useBias) {
     PrismaticJoint& s = j.data.prismatic;
     const SliderRows rows = sliderRows(j, p);
     if (s.enableMotor) solveMotorRow(p, rows.axial, s.axialMass, s.motorSpeed, s.maxMotorForce * ctx.hs, s.motorImpulse);

@@ -26,7 +26,7 @@ JointId World::createJoint(const RevoluteJointDef& def) {
     return jointId(*impl_, j);
 }
 
-void prepareRevolute(Joint& j, const StepContext& ctx, Rot) {
+void prepareRevolute(PreparedJoint& j, const StepContext& ctx, Rot) {
     RevoluteJoint& r = j.data.revolute;
     r.axialMass = effectiveMass(j.mass, angularRow);
     if (!ctx.enableWarmStarting) {
@@ -35,14 +35,14 @@ void prepareRevolute(Joint& j, const StepContext& ctx, Rot) {
     }
 }
 
-void warmStartRevolute(Joint& j, JointPair& p) {
+void warmStartRevolute(PreparedJoint& j, JointPair& p) {
     const RevoluteJoint& r = j.data.revolute;
     const JointFrame f = currentFrame(j, p);
     applyPoint(p, f.rA, f.rB, r.linearImpulse);
     applyRow(p, angularRow, r.motorImpulse + r.lowerImpulse - r.upperImpulse);
 }
 
-void solveRevolute(Joint& j, JointPair& p, const StepContext& ctx, bool useBias) {
+void solveRevolute(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool useBias) {
     RevoluteJoint& r = j.data.revolute;
     if (r.enableMotor) solveMotorRow(p, angularRow, r.axialMass, r.motorSpeed, r.maxMotorTorque * ctx.hs, r.motorImpulse);
     if (r.enableLimit) {

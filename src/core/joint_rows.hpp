@@ -139,12 +139,12 @@ struct JointFrame {
     Vec2 rA, rB, d;
 };
 
-inline JointFrame currentFrame(const Joint& j, const JointPair& p) {
+inline JointFrame currentFrame(const PreparedJoint& j, const JointPair& p) {
     const Vec2 rA = rotate(p.a.dq, j.anchorA), rB = rotate(p.b.dq, j.anchorB);
     return {rA, rB, (p.b.dp - p.a.dp) + j.deltaCenter + (rB - rA)};
 }
 
 // The joint angle now: θB − θA − referenceAngle.
-inline float currentAngle(const Joint& j, const JointPair& p) { return j.deltaAngle + p.rotation; }
+inline float currentAngle(const PreparedJoint& j, const JointPair& p) { return j.deltaAngle + p.rotation; }
 
 }  // namespace perpdot

@@ -5,10 +5,12 @@
 // values written by prepare, and the accumulated impulses kept for warm starting.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <type_traits>
 #include <vector>
 
+#include "core/graph_color.hpp"
 #include "core/joint.hpp"
 #include "core/softness.hpp"
 #include "core/step_context.hpp"
@@ -117,24 +119,34 @@ struct Joint {
     Vec2 localAnchorA, localAnchorB;  // in each body's origin frame
     float referenceAngle = 0;  // θB − θA at zero joint angle (motor joint: angularOffset)
     void* userData = nullptr;
+    JointData data;
+};
+static_assert(std::is_trivially_copyable_v<Joint>, "the joint store is snapshotted bytewise");
 
-    // Written by prepareJoints for the step.
+// A joint as the substep passes see it, written by prepareJoints: the solver slots, the frame at
+// step start and a working copy of the type data (its impulses go back to the Joint at the end
+// of the step). Packed contiguously so that each pass streams only this, not the whole Joint.
+struct PreparedJoint {
+    JointType type = JointType::Revolute;
     int indexA = 0, indexB = 0;  // solver slots
     JointMass mass;
     Vec2 anchorA, anchorB;  // rA, rB: from each centre of mass to its anchor, at step start
     Vec2 deltaCenter;       // cB − cA at step start
     float deltaAngle = 0;   // θB − θA − referenceAngle at step start
-
     JointData data;
 };
-static_assert(std::is_trivially_copyable_v<Joint>, "the joint store is snapshotted bytewise");
 
 struct JointStore {
     std::vector<Joint> joints;
     std::vector<int> freeList;
-    std::vector<int> bodyHead;  // by body index: first edge key of its joint list, -1 if none
-    std::vector<int> active;    // joints prepared this step
-    float invHs = 0;            // of the last step, for reaction forces
+    std::vector<int> bodyHead;           // by body index: first edge key of its joint list, -1 if none
+    std::vector<int> active;             // joints prepared this step: active[k] is prepared[k]'s index
+    std::vector<PreparedJoint> prepared;
+    // Scratch of prepareJoints, kept to reuse its memory.
+    GraphColoring coloring;
+    std::vector<int> colored;  // active joints in store order, with their colours in `colors`
+    std::vector<int> colors;
+    float invHs = 0;                     // of the last step, for reaction forces
 };
 
 // Impulses on B per substep, turned into force and torque by the caller (× 1/hs).
@@ -152,10 +164,10 @@ void requireFinite(bool ok, const char* what);  // Error "<what> must be finite"
 
 // Per-type stages (joint_<type>.cpp). prepare runs after the common frame (anchors, masses,
 // deltaCenter, deltaAngle) is set; qA is body A's rotation at step start.
-#define PERPDOT_JOINT_STAGES(Name)                                                     \
-    void prepare##Name(Joint& joint, const StepContext& ctx, Rot qA);                 \
-    void warmStart##Name(Joint& joint, JointPair& pair);                               \
-    void solve##Name(Joint& joint, JointPair& pair, const StepContext& ctx, bool useBias); \
+#define PERPDOT_JOINT_STAGES(Name)                                                             \
+    void prepare##Name(PreparedJoint& joint, const StepContext& ctx, Rot qA);                 \
+    void warmStart##Name(PreparedJoint& joint, JointPair& pair);                               \
+    void solve##Name(PreparedJoint& joint, JointPair& pair, const StepContext& ctx, bool useBias); \
     JointReaction reaction##Name(const Joint& joint);
 PERPDOT_JOINT_STAGES(Revolute)
 PERPDOT_JOINT_STAGES(Prismatic)

@@ -20,7 +20,7 @@ JointId World::createJoint(const WeldJointDef& def) {
     return jointId(*impl_, j);
 }
 
-void prepareWeld(Joint& j, const StepContext& ctx, Rot) {
+void prepareWeld(PreparedJoint& j, const StepContext& ctx, Rot) {
     WeldJoint& s = j.data.weld;
     s.axialMass = effectiveMass(j.mass, angularRow);
     s.angularSoftness = makeSoftness(s.hertz, s.dampingRatio, ctx.hs);
@@ -30,14 +30,14 @@ void prepareWeld(Joint& j, const StepContext& ctx, Rot) {
     }
 }
 
-void warmStartWeld(Joint& j, JointPair& p) {
+void warmStartWeld(PreparedJoint& j, JointPair& p) {
     const WeldJoint& s = j.data.weld;
     const JointFrame f = currentFrame(j, p);
     applyPoint(p, f.rA, f.rB, s.linearImpulse);
     applyRow(p, angularRow, s.angularImpulse);
 }
 
-void solveWeld(Joint& j, JointPair& p, const StepContext& ctx, bool useBias) {
+void solveWeld(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool useBias) {
     WeldJoint& s = j.data.weld;
     const Softness angular = s.hertz > 0.0f ? s.angularSoftness : rigidSoftness(ctx, useBias);
     solveRow(p, angularRow, s.axialMass, currentAngle(j, p), angular, s.angularImpulse);

@@ -28,7 +28,7 @@ JointId World::createJoint(const WheelJointDef& def) {
     return jointId(*impl_, j);
 }
 
-void prepareWheel(Joint& j, const StepContext& ctx, Rot qA) {
+void prepareWheel(PreparedJoint& j, const StepContext& ctx, Rot qA) {
     WheelJoint& s = j.data.wheel;
     s.axisA = rotate(qA, s.localAxisA);
     const Vec2 d = j.deltaCenter + j.anchorB - j.anchorA;
@@ -45,7 +45,7 @@ struct WheelRows {
     float translation, offset;
 };
 
-WheelRows wheelRows(const Joint& j, const JointPair& p) {
+WheelRows wheelRows(const PreparedJoint& j, const JointPair& p) {
     const JointFrame f = currentFrame(j, p);
     const Vec2 axis = rotate(p.a.dq, j.data.wheel.axisA);
     return {linearRow(f.rA + f.d, f.rB, axis), linearRow(f.rA + f.d, f.rB, perp(axis)), dot(axis, f.d),
@@ -54,7 +54,7 @@ WheelRows wheelRows(const Joint& j, const JointPair& p) {
 
 }  // namespace
 
-void warmStartWheel(Joint& j, JointPair& p) {
+void warmStartWheel(PreparedJoint& j, JointPair& p) {
     const WheelJoint& s = j.data.wheel;
     const WheelRows rows = wheelRows(j, p);
     applyRow(p, rows.axial, s.springImpulse);
@@ -62,7 +62,7 @@ void warmStartWheel(Joint& j, JointPair& p) {
     applyRow(p, angularRow, s.motorImpulse);
 }
 
-void solveWheel(Joint& j, JointPair& p, const StepContext& ctx, bool useBias) {
+void solveWheel(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool useBias) {
     WheelJoint& s = j.data.wheel;
     if (s.enableMotor) solveMotorRow(p, angularRow, s.motorMass, s.motorSpeed, s.maxMotorTorque * ctx.hs, s.motorImpulse);
     WheelRows rows = wheelRows(j, p);

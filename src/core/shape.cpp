@@ -113,6 +113,7 @@ int World::Impl::addShape(BodyId bodyId, const ShapeDef& def) {
     s.enableSensorEvents = def.enableSensorEvents;
     s.enablePreSolveEvents = def.enablePreSolveEvents;
     s.filter = def.filter;
+    noteFilter(def.filter);
     s.userData = def.userData;
     bodies[bodyId.index].shapes.push_back(index);
     return index;

@@ -371,6 +371,7 @@ void World::restore(std::span<const uint8_t> bytes) {
         s.alive = shapeAlive[i] = in.boolean();
         if (!s.alive) continue;
         readShape(in, s, savedProxies[i], bodyCount);
+        w.noteFilter(s.filter);
         if (!bodyAlive[s.body]) in.fail("shape " + std::to_string(i) + " belongs to a dead body");
     }
     w.freeShapes = readFreeList(in, shapeAlive, "free shape");

@@ -144,6 +144,8 @@ struct World::Impl {
     size_t contactEndReported = 0, sensorEndReported = 0;
     PreSolveFn preSolve;
     bool anyHitEvents = false;  // a shape with enableHitEvents was ever created: look for hits
+    // Every category and every mask bit of the shapes ever created (never cleared).
+    uint16_t shapeCategories = 0, shapeMasks = 0;
     std::vector<int> bullets;  // continuous.cpp scratch: bullets wait until the others are final
 
     // Solver arrays, rebuilt each step without reallocating.
@@ -183,6 +185,15 @@ struct World::Impl {
     void destroyProxies(int shape);
     void synchronizeProxies(int body, Vec2 displacement);
     void updatePairs();
+    void noteFilter(const Filter& f) {
+        shapeCategories |= f.category;
+        shapeMasks |= f.mask;
+    }
+    // shouldCollide(f, g) is false for every shape's g: outside a positive group (which collides
+    // whatever the masks), f's mask meets no category or f's category no mask.
+    bool pairsWithNothing(const Filter& f) const {
+        return f.group <= 0 && ((f.mask & shapeCategories) == 0 || (f.category & shapeMasks) == 0);
+    }
     void addPair(int proxyA, int proxyB);
     void updateContacts();
     void destroyContact(int contact);
