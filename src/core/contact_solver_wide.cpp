@@ -3,7 +3,6 @@
 // into lanes, runs the rows of contact_solver_wide.hpp once for all four, and scatters the
 // velocities back. Constraints no colour could take (a body touching more than 16 others) are
 // solved one by one with the same rows at F = float, after the blocks.
-#include <algorithm>
 #include <array>
 
 #include "core/world_impl.hpp"
@@ -118,18 +117,11 @@ void prepareContactBlocks(World::Impl& w) {
     const int count = static_cast<int>(w.constraints.size());
     w.contactColoring.reset(static_cast<int>(w.states.size()));
     w.contactColors.resize(w.constraints.size());
-    // Counting sort by colour: colour k (overflow last) is contactOrder[start[k]..start[k + 1]).
-    int start[overflow + 2] = {};
     for (int index = 0; index < count; ++index) {
         const ContactConstraint& c = w.constraints[index];
         w.contactColors[index] = w.contactColoring.assign(c.indexA, c.indexB);
-        ++start[w.contactColors[index] + 1];
     }
-    for (int color = 1; color <= overflow + 1; ++color) start[color] += start[color - 1];
-    int next[overflow + 1];
-    std::copy(start, start + overflow + 1, next);
-    w.contactOrder.resize(w.constraints.size());
-    for (int index = 0; index < count; ++index) w.contactOrder[next[w.contactColors[index]]++] = index;
+    const ColorStarts start = sortByColor(w.contactColors, w.contactOrder);
 
     w.contactBlocks.clear();
     for (int color = 0; color < overflow; ++color) {

@@ -20,4 +20,14 @@ int GraphColoring::assign(int bodyA, int bodyB) {
     return color;
 }
 
+ColorStarts sortByColor(const std::vector<int>& colors, std::vector<int>& order) {
+    ColorStarts start{};
+    for (int color : colors) ++start[color + 1];
+    for (size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
+    ColorStarts next = start;
+    order.resize(colors.size());
+    for (size_t k = 0; k < colors.size(); ++k) order[next[colors[k]]++] = static_cast<int>(k);
+    return start;
+}
+
 }  // namespace perpdot

@@ -3,6 +3,7 @@
 // after another. Static bodies never move, so any number of constraints of a colour may touch one.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -22,5 +23,12 @@ public:
 private:
     std::vector<uint16_t> used_;  // per body: bit k set when a constraint of colour k touches it
 };
+
+// Where each colour begins in a list sorted by colour: colour c (overflow last) is [start[c], start[c + 1]).
+using ColorStarts = std::array<int, GraphColoring::colorCount + 2>;
+
+// Counting sort: `order` becomes the positions 0..n-1 of `colors` grouped by colour, each colour in
+// its original order (stable, so the solve order stays deterministic).
+ColorStarts sortByColor(const std::vector<int>& colors, std::vector<int>& order);
 
 }  // namespace perpdot

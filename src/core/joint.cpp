@@ -166,20 +166,16 @@ void orderByColor(World::Impl& w, JointStore& s) {
     s.coloring.reset(static_cast<int>(w.states.size()));
     s.colored.clear();
     s.colors.clear();
-    std::array<int, GraphColoring::colorCount + 2> start{};  // start[c + 1] counts colour c first
     for (int index = 0; index < static_cast<int>(s.joints.size()); ++index) {
         const Joint& joint = s.joints[index];
         if (!joint.alive) continue;
         const int slotA = w.bodies[joint.bodyA].solverIndex, slotB = w.bodies[joint.bodyB].solverIndex;
         if (slotA == 0 && slotB == 0) continue;  // both static or asleep
-        const int color = s.coloring.assign(slotA, slotB);
         s.colored.push_back(index);
-        s.colors.push_back(color);
-        ++start[color + 1];
+        s.colors.push_back(s.coloring.assign(slotA, slotB));
     }
-    for (size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
-    s.active.resize(s.colored.size());
-    for (size_t k = 0; k < s.colored.size(); ++k) s.active[start[s.colors[k]]++] = s.colored[k];
+    sortByColor(s.colors, s.active);
+    for (int& position : s.active) position = s.colored[position];
 }
 
 }  // namespace
