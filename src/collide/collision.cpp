@@ -283,7 +283,7 @@ b2Sweep toB2(const Sweep& s) {
     return out;
 }
 
-float timeOfImpact(const b2DistanceProxy& a, const Sweep& sweepA, const b2DistanceProxy& b, const Sweep& sweepB) {
+float pieceTimeOfImpact(const b2DistanceProxy& a, const Sweep& sweepA, const b2DistanceProxy& b, const Sweep& sweepB) {
     b2TOIInput input;
     input.proxyA = a;
     input.proxyB = b;
@@ -297,6 +297,30 @@ float timeOfImpact(const b2DistanceProxy& a, const Sweep& sweepA, const b2Distan
         case b2TOIOutput::e_overlapped: return 0.0f;
         default: return 1.0f;
     }
+}
+
+// The part of a sweep between fractions t1 and t2 (poses move linearly in t: c = c1 + t (c2 − c1)).
+Sweep between(const Sweep& s, float t1, float t2) {
+    return {s.localCenter, s.c1 + t1 * (s.c2 - s.c1), s.c1 + t2 * (s.c2 - s.c1), s.a1 + t1 * (s.a2 - s.a1),
+            s.a1 + t2 * (s.a2 - s.a1)};
+}
+
+// b2TimeOfImpact advances along a separating axis that turns with the shapes; over a large turn
+// it can step past an impact and report the shapes apart at the end. So a sweep turning more than
+// maxPieceTurn is searched in pieces of at most that turn (up to maxPieces), first piece first.
+constexpr float maxPieceTurn = 0.25f * b2_pi;
+constexpr int maxPieces = 16;
+
+float timeOfImpact(const b2DistanceProxy& a, const Sweep& sweepA, const b2DistanceProxy& b, const Sweep& sweepB) {
+    const float turn = std::max(std::fabs(sweepA.a2 - sweepA.a1), std::fabs(sweepB.a2 - sweepB.a1));
+    const int pieces = std::clamp(static_cast<int>(std::ceil(turn / maxPieceTurn)), 1, maxPieces);
+    if (pieces == 1) return pieceTimeOfImpact(a, sweepA, b, sweepB);  // the sweep itself, unrounded
+    for (int k = 0; k < pieces; ++k) {
+        const float t1 = static_cast<float>(k) / pieces, t2 = static_cast<float>(k + 1) / pieces;
+        const float toi = pieceTimeOfImpact(a, between(sweepA, t1, t2), b, between(sweepB, t1, t2));
+        if (toi < 1.0f) return t1 + toi * (t2 - t1);
+    }
+    return 1.0f;
 }
 
 }  // namespace

@@ -40,20 +40,23 @@ bool segmentOf(const ShapeData& s, int child, const Transform& xf, Vec2& p1, Vec
     return false;
 }
 
-// A sweep across a segment is needed only when the moving shape's centre starts in front of it
-// and ends closer than safetyFactor·extent (or behind it). This keeps a body sliding along a floor
-// of segments from pausing at every seam. Chains are one-sided: their front is the right of v1→v2.
-bool crossesSegment(Vec2 p1, Vec2 p2, bool oneSided, Vec2 start, Vec2 end, float extent) {
+// How the centre's path meets a segment. A sweep is needed only when the centre starts in front of
+// it and ends within `reach` of it (Nears: some point of the shape, turned any way, may touch) or
+// behind it (Crosses). Chains are one-sided: their front is the right of v1→v2.
+enum class SegmentPass { Misses, Nears, Crosses };
+
+SegmentPass passOfCentre(Vec2 p1, Vec2 p2, bool oneSided, Vec2 start, Vec2 end, float reach) {
     const Vec2 e = p2 - p1;
     const float len = length(e);
-    if (len == 0.0f) return false;
+    if (len == 0.0f) return SegmentPass::Misses;
     float d1 = -perpDot(e, start - p1) / len;  // distance in front (right side)
     float d2 = -perpDot(e, end - p1) / len;
     if (!oneSided && d1 < 0.0f) {
         d1 = -d1;
         d2 = -d2;
     }
-    return d1 > 0.0f && d2 < safetyFactor * extent;
+    if (d1 <= 0.0f || d2 >= reach) return SegmentPass::Misses;
+    return d2 < 0.0f ? SegmentPass::Crosses : SegmentPass::Nears;
 }
 
 }  // namespace
@@ -93,14 +96,20 @@ void World::Impl::solveContinuous(int index, Vec2 c0, float a0) {
                 !jointAllowsCollision(*this, index, other.body))
                 return true;
             Vec2 p1, p2;
-            if (segmentOf(other, key.child, ob.xf, p1, p2) &&
-                !crossesSegment(p1, p2, other.type == ShapeType::Chain, middle(start), middle(end), shape.minExtent))
-                return true;
+            SegmentPass pass = SegmentPass::Nears;  // what a non-segment shape is treated as
+            if (segmentOf(other, key.child, ob.xf, p1, p2)) {
+                pass = passOfCentre(p1, p2, other.type == ShapeType::Chain, middle(start), middle(end), shape.maxExtent);
+                if (pass == SegmentPass::Misses) return true;
+            }
             // The other body stands still at its final pose.
             const collide::Sweep still{ob.localCenter, ob.center, ob.center, ob.angle, ob.angle};
             float toi = collision.timeOfImpact({s, 0}, sweep, key, still);
-            // Already touching at the start: the shape's core (a quarter of its extent) must still not pass.
-            if (toi == 0.0f) toi = collision.coreTimeOfImpact(s, 0.25f * shape.minExtent, sweep, key, still);
+            // The shape's core (a circle of a quarter of its extent, which turning does not change)
+            // must still not pass when the shape was already touching at the start, or when the
+            // centre crossed the segment but b2TimeOfImpact saw no impact: a shape turning by
+            // radians in one step can defeat its separating-axis advance.
+            if (toi == 0.0f || (toi >= 1.0f && pass == SegmentPass::Crosses))
+                toi = collision.coreTimeOfImpact(s, 0.25f * shape.minExtent, sweep, key, still);
             if (toi > 0.0f && toi < t) t = toi;
             return true;
         });
