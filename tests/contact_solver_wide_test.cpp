@@ -38,7 +38,6 @@ ContactRows<float> randomRows(Random& r, int pointCount, bool rolling) {
     c.impulseScale = r(0.0f, 0.5f);
     for (int i = 0; i < pointCount; ++i) {
         ContactPointRows<float>& p = c.points[i];
-        p.active = true;
         p.anchorA = {r(-0.5f, 0.5f), r(-0.5f, 0.5f)};
         p.anchorB = {r(-0.5f, 0.5f), r(-0.5f, 0.5f)};
         p.baseSeparation = r(-0.05f, 0.02f);
@@ -103,7 +102,6 @@ TEST(ContactSolverWide, FourLanesEqualFourScalarSolves) {
             wide.points[i].normalImpulse.store(normal);
             wide.points[i].tangentImpulse.store(tangent);
             for (int lane = 0; lane < 4; ++lane) {
-                if (!rows[lane].points[i].active) continue;
                 EXPECT_TRUE(sameBits(normal[lane], scalarRows[lane].points[i].normalImpulse)) << lane;
                 EXPECT_TRUE(sameBits(tangent[lane], scalarRows[lane].points[i].tangentImpulse)) << lane;
             }

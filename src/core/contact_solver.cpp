@@ -55,7 +55,6 @@ void prepareContacts(World::Impl& w, const StepContext& ctx) {
         for (int i = 0; i < contact.pointCount; ++i) {
             const ContactPointState& p = contact.points[i];
             ContactPointRows<float>& cp = c.points[i];
-            cp.active = true;
             cp.anchorA = p.anchorA;
             cp.anchorB = p.anchorB;
             cp.baseSeparation = p.separation - dot(p.anchorB - p.anchorA, n);
@@ -91,7 +90,7 @@ void applyRestitution(World::Impl& w, const StepContext& ctx) {
             impulse = newImpulse - cp.normalImpulse;
             cp.normalImpulse = newImpulse;
             cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, impulse);
-            applyImpulse(c, a, b, rA, rB, impulse * c.normal, true);
+            applyImpulse(c, a, b, rA, rB, impulse * c.normal);
         }
     }
 }

@@ -4,6 +4,8 @@
 // velocities back. Constraints no colour could take (a body touching more than 16 others) are
 // solved one by one with the same rows at F = float, after the blocks.
 #include <array>
+#include <cstddef>
+#include <type_traits>
 
 #include "core/world_impl.hpp"
 
@@ -52,29 +54,20 @@ ContactRows<Float4> packContactRows(const std::array<const ContactRows<float>*, 
         p.maxNormalImpulse = lanesOf(lanes, [i](const C& c) { return c.points[i].maxNormalImpulse; });
         p.normalMass = lanesOf(lanes, [i](const C& c) { return c.points[i].normalMass; });
         p.tangentMass = lanesOf(lanes, [i](const C& c) { return c.points[i].tangentMass; });
-        const bool active[4] = {lanes[0]->points[i].active, lanes[1]->points[i].active, lanes[2]->points[i].active,
-                                lanes[3]->points[i].active};
-        p.active = simd::maskFromBools(active);
     }
     return r;
 }
 
+// A BodyState is seven floats, v.x v.y ω dp.x dp.y dq.c dq.s: read as two overlapping rows of four.
+static_assert(std::is_standard_layout_v<BodyState> && sizeof(BodyState) == 7 * sizeof(float));
+
 BodyLanes<Float4> gatherBodies(const std::vector<BodyState>& states, const int (&slots)[4]) {
-    float vx[4], vy[4], w[4], dpx[4], dpy[4], dqc[4], dqs[4];
-    for (int i = 0; i < 4; ++i) {
-        const BodyState& s = states[slots[i]];
-        vx[i] = s.v.x;
-        vy[i] = s.v.y;
-        w[i] = s.w;
-        dpx[i] = s.dp.x;
-        dpy[i] = s.dp.y;
-        dqc[i] = s.dq.c;
-        dqs[i] = s.dq.s;
-    }
-    return {{Float4::load(vx), Float4::load(vy)},
-            Float4::load(w),
-            {Float4::load(dpx), Float4::load(dpy)},
-            {Float4::load(dqc), Float4::load(dqs)}};
+    const std::byte* rows[4];
+    for (int i = 0; i < 4; ++i) rows[i] = reinterpret_cast<const std::byte*>(&states[slots[i]]);
+    Float4 head[4], tail[4];
+    simd::transposeLoad(rows, 0, head);                  // v.x, v.y, ω, dp.x
+    simd::transposeLoad(rows, 3 * sizeof(float), tail);  // dp.x, dp.y, dq.c, dq.s
+    return {{head[0], head[1]}, head[2], {tail[0], tail[1]}, {tail[2], tail[3]}};
 }
 
 void scatterVelocities(std::vector<BodyState>& states, const int (&slots)[4], const BodyLanes<Float4>& lanes) {

@@ -4,8 +4,8 @@
 //   j = -(v_rel·n + bias) / (1/mA + 1/mB + perpDot(rA,n)²/IA + perpDot(rB,n)²/IB)
 // accumulated and clamped (λn ≥ 0, |λt| ≤ μ λn), softened by the substep's Softness.
 //
-// A lane that is not a real manifold point (`active` false: a one-point manifold's second point)
-// computes like the others but leaves the bodies untouched, selected away bit for bit.
+// A lane that is not a real manifold point (a one-point manifold's second point, an empty lane of
+// a block) has zero masses and zero impulses: its rows compute like the others and apply zero.
 #pragma once
 
 #include <array>
@@ -23,8 +23,7 @@ struct ContactPointRows {
     F baseSeparation{};         // separation minus (rB - rA)·n, so s = base + (ΔpB + rB' - ΔpA - rA')·n
     F relativeVelocity{};       // v_rel·n before solving, for restitution
     F normalImpulse{}, tangentImpulse{}, maxNormalImpulse{};
-    F normalMass{}, tangentMass{};  // 1 / effectiveMass of each row
-    simd::MaskOf<F> active{};       // a manifold point (not the unused second point)
+    F normalMass{}, tangentMass{};  // 1 / effectiveMass of each row; 0 for no manifold point
 };
 
 template <class F>
@@ -38,24 +37,20 @@ struct ContactRows {
     ContactPointRows<F> points[2];
 };
 
-// Apply impulse P at the anchors where `active`: vA -= P/mA, ωA -= perpDot(rA,P)/IA, and + for B.
+// Apply impulse P at the anchors: vA -= P/mA, ωA -= perpDot(rA,P)/IA, and + for B.
 template <class F>
-inline void applyImpulse(const ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, Vec2T<F> rA, Vec2T<F> rB, Vec2T<F> P,
-                  simd::MaskOf<F> active) {
-    using simd::select;
-    a.v.x = select(active, a.v.x - c.invMassA * P.x, a.v.x);
-    a.v.y = select(active, a.v.y - c.invMassA * P.y, a.v.y);
-    a.w = select(active, a.w - c.invIA * perpDot(rA, P), a.w);
-    b.v.x = select(active, b.v.x + c.invMassB * P.x, b.v.x);
-    b.v.y = select(active, b.v.y + c.invMassB * P.y, b.v.y);
-    b.w = select(active, b.w + c.invIB * perpDot(rB, P), b.w);
+inline void applyImpulse(const ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, Vec2T<F> rA, Vec2T<F> rB, Vec2T<F> P) {
+    a.v = a.v - c.invMassA * P;
+    a.w = a.w - c.invIA * perpDot(rA, P);
+    b.v = b.v + c.invMassB * P;
+    b.w = b.w + c.invIB * perpDot(rB, P);
 }
 
-// Angular impulse λ on ωB − ωA where `active`: ωA -= λ/IA, ωB += λ/IB.
+// Angular impulse λ on ωB − ωA: ωA -= λ/IA, ωB += λ/IB.
 template <class F>
-inline void applyAngularImpulse(const ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, F impulse, simd::MaskOf<F> active) {
-    a.w = simd::select(active, a.w - c.invIA * impulse, a.w);
-    b.w = simd::select(active, b.w + c.invIB * impulse, b.w);
+inline void applyAngularImpulse(const ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, F impulse) {
+    a.w = a.w - c.invIA * impulse;
+    b.w = b.w + c.invIB * impulse;
 }
 
 // v_rel = v_B + ωB perp(rB) − (v_A + ωA perp(rA)).
@@ -69,8 +64,8 @@ template <class F>
 void warmStartContact(const ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b) {
     const Vec2T<F> n = c.normal, t = perp(n);
     for (const ContactPointRows<F>& cp : c.points)
-        applyImpulse(c, a, b, cp.anchorA, cp.anchorB, cp.normalImpulse * n + cp.tangentImpulse * t, cp.active);
-    applyAngularImpulse(c, a, b, c.rollingImpulse, c.rollingResistance > F(0.0f));
+        applyImpulse(c, a, b, cp.anchorA, cp.anchorB, cp.normalImpulse * n + cp.tangentImpulse * t);
+    applyAngularImpulse(c, a, b, c.rollingImpulse);
 }
 
 // One pass over a constraint's rows: non-penetration, then friction, then rolling resistance.
@@ -104,8 +99,8 @@ void solveContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, const Ste
         impulse = newImpulse - cp.normalImpulse;
         cp.normalImpulse = newImpulse;
         cp.maxNormalImpulse = max(cp.maxNormalImpulse, impulse);
-        totalNormalImpulse += select(cp.active, newImpulse, F(0.0f));
-        applyImpulse(c, a, b, rA, rB, impulse * n, cp.active);
+        totalNormalImpulse += newImpulse;
+        applyImpulse(c, a, b, rA, rB, impulse * n);
     }
 
     // Coulomb friction along t = perp(n): |λt| ≤ μ λn. A conveyor's surfaces move clockwise
@@ -118,14 +113,14 @@ void solveContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, const Ste
         const F newImpulse = simd::clamp(cp.tangentImpulse - cp.tangentMass * vt, -maxFriction, maxFriction);
         const F impulse = newImpulse - cp.tangentImpulse;
         cp.tangentImpulse = newImpulse;
-        applyImpulse(c, a, b, rA, rB, impulse * t, cp.active);
+        applyImpulse(c, a, b, rA, rB, impulse * t);
     }
 
     // Rolling resistance: an angular row on ωB − ωA, |λr| ≤ rollingResistance·Σλn.
     const F maxLambda = c.rollingResistance * totalNormalImpulse;
     const F lambda = c.rollingImpulse;
     c.rollingImpulse = simd::clamp(lambda - c.rollingMass * (b.w - a.w), -maxLambda, maxLambda);
-    applyAngularImpulse(c, a, b, c.rollingImpulse - lambda, c.rollingResistance > F(0.0f));
+    applyAngularImpulse(c, a, b, c.rollingImpulse - lambda);
 }
 
 // Four constraints of one graph colour (no two share a dynamic body) as the lanes of one row set.

@@ -7,6 +7,9 @@
 // (1-lane) case the very same semantics, so one template serves both.
 #pragma once
 
+#include <cstddef>
+#include <cstring>
+
 #if !defined(PERPDOT_NO_SIMD) && (defined(__SSE2__) || defined(_M_X64))
 #define PERPDOT_SSE2 1
 #include <emmintrin.h>
@@ -51,9 +54,12 @@ inline Float4 select(Mask4 mask, Float4 ifTrue, Float4 ifFalse) {
     return Float4(_mm_or_ps(_mm_and_ps(mask.m, ifTrue.v), _mm_andnot_ps(mask.m, ifFalse.v)));
 }
 
-inline Mask4 maskFromBools(const bool lanes[4]) {
-    const auto bits = [&](int i) { return lanes[i] ? -1 : 0; };
-    return {_mm_castsi128_ps(_mm_set_epi32(bits(3), bits(2), bits(1), bits(0)))};
+// Four rows of four floats, each at rows[i] + offset bytes, as lanes: out[j] lane i = row i's float j.
+inline void transposeLoad(const std::byte* const rows[4], std::size_t offset, Float4 out[4]) {
+    __m128 r[4];
+    for (int i = 0; i < 4; ++i) r[i] = _mm_loadu_ps(reinterpret_cast<const float*>(rows[i] + offset));
+    _MM_TRANSPOSE4_PS(r[0], r[1], r[2], r[3]);
+    for (int j = 0; j < 4; ++j) out[j] = Float4(r[j]);
 }
 
 #else  // the portable fallback: the same operations lane by lane
@@ -107,10 +113,12 @@ inline Float4 select(Mask4 mask, Float4 ifTrue, Float4 ifFalse) {
     return r;
 }
 
-inline Mask4 maskFromBools(const bool lanes[4]) {
-    Mask4 r;
-    for (int i = 0; i < 4; ++i) r.m[i] = lanes[i];
-    return r;
+inline void transposeLoad(const std::byte* const rows[4], std::size_t offset, Float4 out[4]) {
+    for (int i = 0; i < 4; ++i) {
+        float row[4];
+        std::memcpy(row, rows[i] + offset, sizeof row);
+        for (int j = 0; j < 4; ++j) out[j].v[i] = row[j];
+    }
 }
 
 #endif
