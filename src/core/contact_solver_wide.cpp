@@ -3,6 +3,7 @@
 // into lanes, runs the rows of contact_solver_wide.hpp once for all four, and scatters the
 // velocities back. Constraints no colour could take (a body touching more than 16 others) are
 // solved one by one with the same rows at F = float, after the blocks.
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <type_traits>
@@ -13,47 +14,21 @@ namespace perpdot {
 
 using simd::Float4;
 
-namespace {
-
-// The lanes of one float of four constraints.
-template <class Field>
-Float4 lanesOf(const std::array<const ContactRows<float>*, 4>& lanes, Field field) {
-    float x[4];
-    for (int i = 0; i < 4; ++i) x[i] = field(*lanes[i]);
-    return Float4::load(x);
-}
-
-}  // namespace
+// ContactRows<float> is nothing but floats, and ContactRows<Float4> is the same fields as Float4s
+// in the same order: packing four constraints is a 4×4 transpose of every run of four floats.
+constexpr std::size_t rowFloats = sizeof(ContactRows<float>) / sizeof(float);
+static_assert(std::is_standard_layout_v<ContactRows<float>> && std::is_standard_layout_v<ContactRows<Float4>>);
+static_assert(sizeof(ContactRows<float>) == rowFloats * sizeof(float) &&
+              sizeof(ContactRows<Float4>) == rowFloats * sizeof(Float4) && rowFloats >= 4);
 
 ContactRows<Float4> packContactRows(const std::array<const ContactRows<float>*, 4>& lanes) {
-    using C = ContactRows<float>;
     ContactRows<Float4> r;
-    r.invMassA = lanesOf(lanes, [](const C& c) { return c.invMassA; });
-    r.invIA = lanesOf(lanes, [](const C& c) { return c.invIA; });
-    r.invMassB = lanesOf(lanes, [](const C& c) { return c.invMassB; });
-    r.invIB = lanesOf(lanes, [](const C& c) { return c.invIB; });
-    r.normal.x = lanesOf(lanes, [](const C& c) { return c.normal.x; });
-    r.normal.y = lanesOf(lanes, [](const C& c) { return c.normal.y; });
-    r.friction = lanesOf(lanes, [](const C& c) { return c.friction; });
-    r.rollingResistance = lanesOf(lanes, [](const C& c) { return c.rollingResistance; });
-    r.tangentSpeed = lanesOf(lanes, [](const C& c) { return c.tangentSpeed; });
-    r.rollingMass = lanesOf(lanes, [](const C& c) { return c.rollingMass; });
-    r.rollingImpulse = lanesOf(lanes, [](const C& c) { return c.rollingImpulse; });
-    r.biasRate = lanesOf(lanes, [](const C& c) { return c.biasRate; });
-    r.massScale = lanesOf(lanes, [](const C& c) { return c.massScale; });
-    r.impulseScale = lanesOf(lanes, [](const C& c) { return c.impulseScale; });
-    for (int i = 0; i < 2; ++i) {
-        ContactPointRows<Float4>& p = r.points[i];
-        p.anchorA.x = lanesOf(lanes, [i](const C& c) { return c.points[i].anchorA.x; });
-        p.anchorA.y = lanesOf(lanes, [i](const C& c) { return c.points[i].anchorA.y; });
-        p.anchorB.x = lanesOf(lanes, [i](const C& c) { return c.points[i].anchorB.x; });
-        p.anchorB.y = lanesOf(lanes, [i](const C& c) { return c.points[i].anchorB.y; });
-        p.baseSeparation = lanesOf(lanes, [i](const C& c) { return c.points[i].baseSeparation; });
-        p.normalImpulse = lanesOf(lanes, [i](const C& c) { return c.points[i].normalImpulse; });
-        p.tangentImpulse = lanesOf(lanes, [i](const C& c) { return c.points[i].tangentImpulse; });
-        p.maxNormalImpulse = lanesOf(lanes, [i](const C& c) { return c.points[i].maxNormalImpulse; });
-        p.normalMass = lanesOf(lanes, [i](const C& c) { return c.points[i].normalMass; });
-        p.tangentMass = lanesOf(lanes, [i](const C& c) { return c.points[i].tangentMass; });
+    auto* out = reinterpret_cast<Float4*>(&r);
+    const std::byte* rows[4];
+    for (int i = 0; i < 4; ++i) rows[i] = reinterpret_cast<const std::byte*>(lanes[i]);
+    for (std::size_t k = 0; k < rowFloats; k += 4) {
+        const std::size_t first = std::min(k, rowFloats - 4);  // the last run overlaps the one before
+        simd::transposeLoad(rows, first * sizeof(float), out + first);
     }
     return r;
 }
