@@ -81,7 +81,8 @@ TEST(ContactSolverWide, FourLanesEqualFourScalarSolves) {
             }
         }
 
-        ContactRows<simd::Float4> wide = packContactRows({&rows[0], &rows[1], &rows[2], &rows[3]});
+        ContactRows<simd::Float4> wide;
+        packContactRows({&rows[0], &rows[1], &rows[2], &rows[3]}, wide);
         for (const bool useBias : {true, false}) {
             BodyLanes<simd::Float4> a = gatherBodies(states, bodyA), b = gatherBodies(states, bodyB);
             warmStartContact(wide, a, b);

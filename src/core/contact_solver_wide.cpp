@@ -21,16 +21,14 @@ static_assert(std::is_standard_layout_v<ContactRows<float>> && std::is_standard_
 static_assert(sizeof(ContactRows<float>) == rowFloats * sizeof(float) &&
               sizeof(ContactRows<Float4>) == rowFloats * sizeof(Float4) && rowFloats >= 4);
 
-ContactRows<Float4> packContactRows(const std::array<const ContactRows<float>*, 4>& lanes) {
-    ContactRows<Float4> r;
-    auto* out = reinterpret_cast<Float4*>(&r);
+void packContactRows(const std::array<const ContactRows<float>*, 4>& lanes, ContactRows<Float4>& packed) {
+    auto* out = reinterpret_cast<Float4*>(&packed);
     const std::byte* rows[4];
     for (int i = 0; i < 4; ++i) rows[i] = reinterpret_cast<const std::byte*>(lanes[i]);
     for (std::size_t k = 0; k < rowFloats; k += 4) {
         const std::size_t first = std::min(k, rowFloats - 4);  // the last run overlaps the one before
         simd::transposeLoad(rows, first * sizeof(float), out + first);
     }
-    return r;
 }
 
 // A BodyState is seven floats, v.x v.y ω dp.x dp.y dq.c dq.s: read as two overlapping rows of four.
@@ -92,24 +90,27 @@ void prepareContactBlocks(World::Impl& w) {
     const ColorStarts start = sortByColor(w.contactColors, w.contactOrder);
 
     w.contactBlocks.clear();
+    // Blocks of four constraints of one colour; the last block of a colour may have empty lanes.
+    int blockCount = 0;
+    for (int color = 0; color < overflow; ++color) blockCount += (start[color + 1] - start[color] + 3) / 4;
+    w.contactBlocks.resize(static_cast<size_t>(blockCount));  // reused memory: every field is rewritten
+    static const ContactRows<float> emptyLane;  // no mass, no impulse: leaves the bodies alone
+    ContactBlock* block = w.contactBlocks.data();
     for (int color = 0; color < overflow; ++color) {
-        for (int k = start[color]; k < start[color + 1]; ++k) {
-            const int lane = (k - start[color]) % 4;
-            if (lane == 0) w.contactBlocks.emplace_back();
-            ContactBlock& block = w.contactBlocks.back();
-            const ContactConstraint& c = w.constraints[w.contactOrder[k]];
-            block.constraint[lane] = w.contactOrder[k];
-            block.bodyA[lane] = c.indexA;
-            block.bodyB[lane] = c.indexB;
+        for (int k = start[color]; k < start[color + 1]; k += 4, ++block) {
+            std::array<const ContactRows<float>*, 4> lanes;
+            for (int lane = 0; lane < 4; ++lane) {
+                const int index = k + lane < start[color + 1] ? w.contactOrder[k + lane] : -1;
+                const ContactConstraint* c = index < 0 ? nullptr : &w.constraints[index];
+                block->constraint[lane] = index;
+                block->bodyA[lane] = c ? c->indexA : 0;
+                block->bodyB[lane] = c ? c->indexB : 0;
+                lanes[lane] = c ? c : &emptyLane;
+            }
+            packContactRows(lanes, block->rows);
         }
     }
     w.overflowConstraints.assign(w.contactOrder.begin() + start[overflow], w.contactOrder.end());
-    static const ContactRows<float> emptyLane;  // no mass, no active point: leaves the bodies alone
-    for (ContactBlock& block : w.contactBlocks) {
-        std::array<const ContactRows<float>*, 4> lanes;
-        for (int i = 0; i < 4; ++i) lanes[i] = block.constraint[i] < 0 ? &emptyLane : &w.constraints[block.constraint[i]];
-        block.rows = packContactRows(lanes);
-    }
 }
 
 void warmStartContacts(World::Impl& w, const StepContext& ctx) {

@@ -131,7 +131,7 @@ struct ContactBlock {
 };
 
 // Four constraints' rows as lanes (an empty lane: a default ContactRows, which moves nothing).
-ContactRows<simd::Float4> packContactRows(const std::array<const ContactRows<float>*, 4>& lanes);
+void packContactRows(const std::array<const ContactRows<float>*, 4>& lanes, ContactRows<simd::Float4>& packed);
 // The state of four solver bodies as lanes.
 BodyLanes<simd::Float4> gatherBodies(const std::vector<BodyState>& states, const int (&slots)[4]);
 // Write back the velocities the rows changed (Δp and Δq are the integrator's). The static slot 0
