@@ -85,6 +85,24 @@ TEST(FeaturesContinuous, FastBallDoesNotTunnelAOneSidedChainFromItsFront) {
     EXPECT_NEAR(world.position(ball).y, 0.1f, 0.02f);
 }
 
+TEST(FeaturesContinuous, FastBoxSlidesAlongAChainFloorWithoutPausingAtSeams) {
+    // A 0.2 m box slides without friction at 30 m/s (0.5 m a step: continuous collision is on for
+    // it) over a chain floor with a vertex every 0.5 m. Its corners come within its maximum extent
+    // of every edge, so every edge is swept; resting on the floor it touches at t = 0 and only its
+    // core is swept, which never reaches the floor: once settled it covers 30 m a second.
+    World world;
+    std::vector<Vec2> floor;
+    for (int i = 160; i >= -20; --i) floor.push_back({0.5f * static_cast<float>(i), 0.0f});  // right to left: top side
+    world.createShape(features::addStatic(world, {}), {.friction = 0.0f}, Chain{floor});
+    const BodyId box = features::addDynamic(world, {0.0f, 0.1f}, {30.0f, 0.0f});
+    world.createShape(box, {.friction = 0.0f}, makeBox(0.1f, 0.1f));
+    features::run(world, 10);
+    const Vec2 settled = world.position(box);
+    features::run(world, 60);
+    EXPECT_NEAR(world.position(box).x - settled.x, 30.0f, 0.01f);
+    EXPECT_NEAR(world.position(box).y, settled.y, 0.005f);  // still on the floor
+}
+
 TEST(FeaturesContinuous, FastSpinningHexagonDoesNotTunnelAOneSidedChain) {
     // A 0.22 m hexagon at 60 m/s spinning at 180 rad/s (3 rad a step), as the spinner benchmark's
     // bar flings them. With that much turning b2TimeOfImpact can report the hexagon separated at
