@@ -184,6 +184,17 @@ TEST(CrosscheckCli, BenchPrintsBothEngines) {
     EXPECT_NE(r.output.find("x "), std::string::npos) << r.output;  // the ratio column, e.g. 0.80x
 }
 
+TEST(CrosscheckCli, BenchTimesOneEngineAloneWhenAsked) {
+    Result r = perpdot("bench " + gates + "stack.json --steps 10 --repeat 1 --engine perpdot");
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_EQ(r.output.find("x "), std::string::npos) << r.output;  // no ratio without Box2D
+    EXPECT_NE(r.output.find("top fell: "), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(" / - m"), std::string::npos) << r.output;  // Box2D's stability not measured
+    r = perpdot("bench " + gates + "stack.json --steps 10 --repeat 1 --engine bullet");
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find("--engine: expected perpdot or box2d"), std::string::npos) << r.output;
+}
+
 TEST(CrosscheckCli, BenchPrintsEachScenesStabilityFigure) {
     const Result r = perpdot("bench smash --steps 5 --repeat 1");
     EXPECT_EQ(r.status, 0) << r.output;

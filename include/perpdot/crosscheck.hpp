@@ -121,6 +121,7 @@ int firstDiverged(const std::vector<BodyMetrics>& bodies);
 struct TimingOptions {
     int steps = -1;   // -1: the scene's
     int repeats = 3;  // the median is reported
+    bool perpdot = true, box2d = true;  // which engines run; one left out keeps a zero EngineTiming
 };
 struct EngineTiming {
     double msPerStep = 0.0;  // median over the repeats

@@ -14,15 +14,6 @@
 #include "perpdot/scene.hpp"
 
 namespace perpdot::cli {
-namespace {
-
-crosscheck::Engine parseEngine(const std::string& name) {
-    if (name == "perpdot") return crosscheck::Engine::Perpdot;
-    if (name == "box2d") return crosscheck::Engine::Box2D;
-    throw UsageError{"--engine: expected perpdot or box2d, got '" + name + "'"};
-}
-
-}  // namespace
 
 int recordCommand(Args args) {
     const Flags flags(args, {"--out", "--engine", "--steps"});

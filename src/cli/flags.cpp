@@ -53,4 +53,10 @@ float Flags::number(const std::string& name, float fallback, float min) const {
     return value;
 }
 
+crosscheck::Engine parseEngine(const std::string& name) {
+    if (name == "perpdot") return crosscheck::Engine::Perpdot;
+    if (name == "box2d") return crosscheck::Engine::Box2D;
+    throw UsageError{"--engine: expected perpdot or box2d, got '" + name + "'"};
+}
+
 }  // namespace perpdot::cli

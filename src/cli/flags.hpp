@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "perpdot/crosscheck.hpp"
 
 namespace perpdot::cli {
 
@@ -27,5 +28,8 @@ private:
     std::vector<std::string> positional_;
     std::map<std::string, std::string> values_;
 };
+
+// `--engine perpdot|box2d`; UsageError for anything else.
+crosscheck::Engine parseEngine(const std::string& name);
 
 }  // namespace perpdot::cli

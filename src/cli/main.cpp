@@ -17,7 +17,7 @@ const Command commands[] = {
     {"crosscheck", "perpdot crosscheck SCENE|FILE [--steps N] [--tolerance METRES] [--angle-tolerance RAD] [--report DIR]", crosscheckCommand},
     {"record", "perpdot record SCENE|FILE --out FILE.csv [--engine perpdot|box2d] [--steps N]", recordCommand},
     {"compare", "perpdot compare SCENE|FILE --against FILE.csv [--tolerance METRES] [--angle-tolerance RAD]", compareCommand},
-    {"bench", "perpdot bench [SCENE...] [--steps N] [--repeat R]", benchCommand},
+    {"bench", "perpdot bench [SCENE...] [--steps N] [--repeat R] [--engine perpdot|box2d]", benchCommand},
 };
 
 void printUsage(std::FILE* out) {

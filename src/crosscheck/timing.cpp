@@ -43,6 +43,7 @@ double median(std::vector<double> values) {
 
 Timing time(const Scene& scene, const TimingOptions& options) {
     if (options.repeats < 1) throw Error("repeats: must be at least 1");
+    if (!options.perpdot && !options.box2d) throw Error("engines: at least one must run");
     const int steps = options.steps < 0 ? scene.steps : options.steps;
     const StabilityProbe probe(scene);
     Timing timing{.scene = scene.name, .bodies = 0, .steps = steps, .perpdot = {}, .box2d = {},
@@ -51,16 +52,17 @@ Timing time(const Scene& scene, const TimingOptions& options) {
     for (int r = 0; r < options.repeats; ++r) {
         const bool perpdotFirst = r % 2 == 0;
         for (const Engine engine : {perpdotFirst ? Engine::Perpdot : Engine::Box2D, perpdotFirst ? Engine::Box2D : Engine::Perpdot}) {
+            if (!(engine == Engine::Perpdot ? options.perpdot : options.box2d)) continue;
             const Run run = timeOnce(engine, scene, steps, probe);
             EngineTiming& out = engine == Engine::Perpdot ? timing.perpdot : timing.box2d;
             (engine == Engine::Perpdot ? perpdotMs : box2dMs).push_back(run.msPerStep);
             out.contacts = run.contacts;
             out.stability = run.stability;
-            if (engine == Engine::Perpdot) timing.bodies = run.bodies;
+            if (engine == Engine::Perpdot || !options.perpdot) timing.bodies = run.bodies;
         }
     }
-    timing.perpdot.msPerStep = median(perpdotMs);
-    timing.box2d.msPerStep = median(box2dMs);
+    if (options.perpdot) timing.perpdot.msPerStep = median(perpdotMs);
+    if (options.box2d) timing.box2d.msPerStep = median(box2dMs);
     return timing;
 }
 
