@@ -118,7 +118,7 @@ void World::Impl::addPair(int proxyA, int proxyB) {
     c.sensor = sa->sensor || sb->sensor;
     linkEdge(*this, index, 0, c.bodyA);
     linkEdge(*this, index, 1, c.bodyB);
-    pairs.emplace(key, index);
+    pairs.insert(key);
 }
 
 void World::Impl::destroyContact(int index) {
