@@ -151,6 +151,7 @@ struct World::Impl {
     // Solver arrays, rebuilt each step without reallocating.
     std::vector<BodyState> states;
     std::vector<int> awakeBodies;       // body index of states[i + 1]
+    std::vector<uint8_t> touchingBodies;  // by body index: has a touching contact (integrateVelocities)
     std::vector<float> stepRotation;    // Δθ of states[i], summed over substeps
     std::vector<SubstepForces> substepForces;  // of states[i]
     std::vector<ContactConstraint> constraints;
