@@ -53,8 +53,10 @@ void World::Impl::updatePairs() {
     for (int proxy : movedProxies) {
         if (pairsWithNothing(shapes[collision.proxyKey(proxy).shape].filter)) continue;
         collision.query(collision.fatAABB(proxy), [&](int other) {
-            // When both moved, only the pair's lower proxy reports it.
+            // When both moved, only the pair's lower proxy reports it. Pairs that have a contact
+            // are most of what a large moving proxy finds: they are dropped here, before the sort.
             if (other == proxy || (other < proxy && collision.wasMoved(other))) return true;
+            if (pairs.contains(proxyPairKey(proxy, other))) return true;
             NewPair p{collision.proxyKey(proxy), collision.proxyKey(other), proxy, other};
             if (std::tie(p.b.shape, p.b.child) < std::tie(p.a.shape, p.a.child)) {
                 std::swap(p.a, p.b);
@@ -118,7 +120,7 @@ void World::Impl::addPair(int proxyA, int proxyB) {
     c.sensor = sa->sensor || sb->sensor;
     linkEdge(*this, index, 0, c.bodyA);
     linkEdge(*this, index, 1, c.bodyB);
-    pairs.emplace(key, index);
+    pairs.insert(key);
 }
 
 void World::Impl::destroyContact(int index) {

@@ -445,7 +445,7 @@ void World::restore(std::span<const uint8_t> bytes) {
         c.proxyA = w.shapes[c.a.shape].proxies[c.a.child];
         c.proxyB = w.shapes[c.b.shape].proxies[c.b.child];
         c.pairKey = proxyPairKey(c.proxyA, c.proxyB);
-        if (!w.pairs.emplace(c.pairKey, i).second) in.fail("two contacts for one pair");
+        if (!w.pairs.insert(c.pairKey)) in.fail("two contacts for one pair");
     }
 
     fresh->preSolve = std::move(impl_->preSolve);  // a setting of this World, not of the state

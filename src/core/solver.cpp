@@ -36,11 +36,12 @@ void World::step(float timeStep) {
 
 namespace {
 
-bool isConstrained(const World::Impl& w, const Body& b) {
-    if (b.jointCount > 0) return true;
-    for (int edge = b.contactHead; edge >= 0; edge = w.contacts[edge >> 1].edges[edge & 1].next)
-        if (w.contacts[edge >> 1].touching) return true;
-    return false;
+// Marks the bodies with a touching contact: one pass over the contact pool, rather than a walk of
+// each body's contact list (a turning container has thousands, most of them not touching).
+void markTouching(World::Impl& w) {
+    w.touchingBodies.assign(w.bodies.size(), 0);
+    for (const Contact& c : w.contacts)
+        if (c.alive && c.touching) w.touchingBodies[c.bodyA] = w.touchingBodies[c.bodyB] = 1;
 }
 
 // Gather awake bodies into the solver arrays and integrate forces: whole step for free bodies,
@@ -51,6 +52,7 @@ void integrateVelocities(World::Impl& w, const StepContext& ctx) {
     w.substepForces.resize(1);
     w.substepForces[0] = SubstepForces{};
     w.awakeBodies.clear();
+    markTouching(w);
     for (int i = 0; i < static_cast<int>(w.bodies.size()); ++i) {
         Body& b = w.bodies[i];
         b.solverIndex = 0;
@@ -62,7 +64,7 @@ void integrateVelocities(World::Impl& w, const StepContext& ctx) {
         SubstepForces f;
         if (b.type == BodyType::Dynamic) {
             const Vec2 force = (b.gravityScale * b.mass) * w.def.gravity + b.force;
-            if (isConstrained(w, b)) {
+            if (b.jointCount > 0 || w.touchingBodies[i]) {
                 f.dv = (ctx.hs * b.invMass) * force;
                 f.dw = ctx.hs * b.invInertia * b.torque;
                 f.linearDamping = 1.0f / (1.0f + ctx.hs * b.linearDamping);

@@ -5,11 +5,11 @@
 #include <algorithm>
 #include <cstdint>
 #include <string>
-#include <unordered_map>
 #include <variant>
 #include <vector>
 
 #include "collide/collision.hpp"
+#include "collide/pair_set.hpp"
 #include "core/contact_solver_wide.hpp"
 #include "core/graph_color.hpp"
 #include "core/joint.hpp"
@@ -99,7 +99,7 @@ struct ContactConstraint : ContactRows<float> {
     int pointCount = 0;
 };
 
-// Identity of a broadphase pair in World::Impl::pairs.
+// Identity of a broadphase pair in World::Impl::pairs (never 0: the two proxies differ).
 inline uint64_t proxyPairKey(int proxyA, int proxyB) {
     const auto lo = static_cast<uint32_t>(std::min(proxyA, proxyB));
     const auto hi = static_cast<uint32_t>(std::max(proxyA, proxyB));
@@ -126,7 +126,7 @@ struct World::Impl {
     std::vector<int> freeShapes;
     std::vector<Contact> contacts;
     std::vector<int> freeContacts;
-    std::unordered_map<uint64_t, int> pairs;  // broadphase pair -> contact
+    collide::PairSet pairs;  // broadphase pairs that have a contact
     std::vector<int> movedProxies;
     collide::CollisionSystem collision;
     JointStorePtr joints;
@@ -151,6 +151,7 @@ struct World::Impl {
     // Solver arrays, rebuilt each step without reallocating.
     std::vector<BodyState> states;
     std::vector<int> awakeBodies;       // body index of states[i + 1]
+    std::vector<uint8_t> touchingBodies;  // by body index: has a touching contact (integrateVelocities)
     std::vector<float> stepRotation;    // Δθ of states[i], summed over substeps
     std::vector<SubstepForces> substepForces;  // of states[i]
     std::vector<ContactConstraint> constraints;

@@ -1,0 +1,31 @@
+// The set of broadphase pairs that have a contact, keyed by the two proxy ids packed into 64 bits
+// (proxyPairKey). Open addressing in one flat array: linear probing from a multiplicative hash,
+// deletion by shifting the probe run back (no tombstones). It grows to the peak pair count and
+// then never allocates, however many pairs come and go.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace perpdot::collide {
+
+class PairSet {
+public:
+    bool contains(uint64_t key) const;
+    bool insert(uint64_t key);  // false if already present
+    void erase(uint64_t key);   // no-op if absent
+    size_t size() const { return count_; }
+
+private:
+    static constexpr uint64_t empty = 0;  // proxyPairKey is never 0: its two ids differ
+    size_t home(uint64_t key) const;
+    size_t slotOf(uint64_t key) const;  // the key's slot, or the empty slot ending its probe run
+    void grow();
+
+    std::vector<uint64_t> slots_;
+    size_t count_ = 0;
+    int shift_ = 64;  // 64 - log2(slot count)
+};
+
+}  // namespace perpdot::collide
