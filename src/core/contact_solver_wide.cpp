@@ -59,37 +59,6 @@ ContactRows<Float4> packContactRows(const std::array<const ContactRows<float>*, 
     return r;
 }
 
-BodyLanes<Float4> gatherBodies(const std::vector<BodyState>& states, const int (&slots)[4]) {
-    float vx[4], vy[4], w[4], dpx[4], dpy[4], dqc[4], dqs[4];
-    for (int i = 0; i < 4; ++i) {
-        const BodyState& s = states[slots[i]];
-        vx[i] = s.v.x;
-        vy[i] = s.v.y;
-        w[i] = s.w;
-        dpx[i] = s.dp.x;
-        dpy[i] = s.dp.y;
-        dqc[i] = s.dq.c;
-        dqs[i] = s.dq.s;
-    }
-    return {{Float4::load(vx), Float4::load(vy)},
-            Float4::load(w),
-            {Float4::load(dpx), Float4::load(dpy)},
-            {Float4::load(dqc), Float4::load(dqs)}};
-}
-
-void scatterVelocities(std::vector<BodyState>& states, const int (&slots)[4], const BodyLanes<Float4>& lanes) {
-    float vx[4], vy[4], w[4];
-    lanes.v.x.store(vx);
-    lanes.v.y.store(vy);
-    lanes.w.store(w);
-    for (int i = 0; i < 4; ++i) {
-        if (slots[i] == 0) continue;
-        BodyState& s = states[slots[i]];
-        s.v = {vx[i], vy[i]};
-        s.w = w[i];
-    }
-}
-
 namespace {
 
 // Run `rows(blockRows, a, b)` on every block, then `rows(constraint, a, b)` on every overflow constraint.
