@@ -1,10 +1,11 @@
 // The joint store and the World's joint API: creation and destruction with generational ids,
 // per-body joint lists (for collideConnected and destroyBody), and the solver stages, which
-// dispatch to the joint types (joint_<type>.cpp) by switch.
+// dispatch to the joint types (joint_<type>.cpp) by switch, revolute joints without motor or limit
+// four at a time (joint_solver_wide.hpp).
 #include <cmath>
 #include <string>
 
-#include "core/joint_rows.hpp"
+#include "core/joint_solver_wide.hpp"
 #include "core/world_impl.hpp"
 
 namespace perpdot {
@@ -91,11 +92,6 @@ Joint& checkedJoint(const World::Impl& w, JointId id) {
     return const_cast<Joint&>(s.joints[id.index]);
 }
 
-JointPair pairOf(World::Impl& w, const PreparedJoint& j) {
-    std::vector<BodyState>& states = w.states;
-    return {states[j.indexA], states[j.indexB], j.mass, w.stepRotation[j.indexB] - w.stepRotation[j.indexA]};
-}
-
 JointReaction reactionOf(const Joint& j) {
     switch (j.type) {
         case JointType::Revolute: return reactionRevolute(j);
@@ -160,9 +156,12 @@ JointId jointId(const World::Impl& w, const Joint& joint) {
 
 namespace {
 
-// The active joints sorted by graph colour (graph_color.hpp), stably: consecutive joints of one
-// colour share no moving body, so a pass never waits for the velocities the previous joint wrote.
-void orderByColor(World::Impl& w, JointStore& s) {
+using simd::Float4;
+
+// The awake joints coloured in store order (graph_color.hpp): consecutive joints of one colour
+// share no moving body, so a pass never waits for the velocities the previous joint wrote, and
+// four of them can be solved in SIMD lanes. Returns where each colour begins in s.byColor.
+ColorStarts colorJoints(World::Impl& w, JointStore& s) {
     s.coloring.reset(static_cast<int>(w.states.size()));
     s.colored.clear();
     s.colors.clear();
@@ -174,8 +173,95 @@ void orderByColor(World::Impl& w, JointStore& s) {
         s.colored.push_back(index);
         s.colors.push_back(s.coloring.assign(slotA, slotB));
     }
-    sortByColor(s.colors, s.active);
-    for (int& position : s.active) position = s.colored[position];
+    return sortByColor(s.colors, s.byColor);
+}
+
+// The frame at step start and a working copy of the type data, then the type's own prepare.
+void prepareJoint(PreparedJoint& j, const World::Impl& w, const Joint& joint, const StepContext& ctx) {
+    const Body& a = w.bodies[joint.bodyA];
+    const Body& b = w.bodies[joint.bodyB];
+    j.type = joint.type;
+    j.data = joint.data;
+    j.indexA = a.solverIndex;
+    j.indexB = b.solverIndex;
+    // A body outside the solver (static, or held asleep) is immovable for this step.
+    j.mass = {a.solverIndex ? a.invMass : 0.0f, a.solverIndex ? a.invInertia : 0.0f,
+              b.solverIndex ? b.invMass : 0.0f, b.solverIndex ? b.invInertia : 0.0f};
+    j.anchorA = rotate(a.xf.q, joint.localAnchorA - a.localCenter);
+    j.anchorB = rotate(b.xf.q, joint.localAnchorB - b.localCenter);
+    j.deltaCenter = b.center - a.center;
+    j.deltaAngle = b.angle - a.angle - joint.referenceAngle;
+    switch (j.type) {
+        case JointType::Revolute: prepareRevolute(j, ctx, a.xf.q); break;
+        case JointType::Prismatic: preparePrismatic(j, ctx, a.xf.q); break;
+        case JointType::Distance: prepareDistance(j, ctx, a.xf.q); break;
+        case JointType::Weld: prepareWeld(j, ctx, a.xf.q); break;
+        case JointType::Wheel: prepareWheel(j, ctx, a.xf.q); break;
+        case JointType::Motor: prepareMotor(j, ctx, a.xf.q); break;
+        case JointType::Mouse: prepareMouse(j, ctx, a.xf.q); break;
+    }
+}
+
+// Revolute joints of one colour, four to a block (the last block's spare lanes stay empty).
+class BlockPacker {
+public:
+    explicit BlockPacker(std::vector<RevoluteBlock>& blocks) : blocks_(blocks) {}
+
+    void add(int index, const PreparedJoint& j) {
+        if (count_ == 0) blocks_.emplace_back();
+        RevoluteBlock& block = blocks_.back();
+        block.joint[count_] = index;
+        block.bodyA[count_] = j.indexA;
+        block.bodyB[count_] = j.indexB;
+        rows_[count_] = revoluteRows(j);
+        mass_[count_] = j.mass;
+        if (++count_ == 4) flush();
+    }
+
+    void flush() {
+        if (count_ == 0) return;
+        for (int lane = count_; lane < 4; ++lane) {
+            rows_[lane] = {};
+            mass_[lane] = {};
+        }
+        blocks_.back().rows = packRevoluteRows(rows_);
+        blocks_.back().mass = packJointMasses(mass_);
+        count_ = 0;
+    }
+
+private:
+    std::vector<RevoluteBlock>& blocks_;
+    std::array<RevoluteRows<float>, 4> rows_;
+    std::array<JointMass, 4> mass_;
+    int count_ = 0;
+};
+
+JointPair pairOf(World::Impl& w, const PreparedJoint& j) {
+    std::vector<BodyState>& states = w.states;
+    return {states[j.indexA], states[j.indexB], j.mass, w.stepRotation[j.indexB] - w.stepRotation[j.indexA]};
+}
+
+// Colour by colour: `wide(rows, pair)` on the colour's blocks, then `scalar(joint, pair)` on its
+// other joints. Joints of one colour share no moving body, so their order within it is free.
+template <class Wide, class Scalar>
+void forEachJoint(World::Impl& w, Wide wide, Scalar scalar) {
+    JointStore& s = store(w);
+    std::vector<BodyState>& states = w.states;
+    for (int color = 0; color <= GraphColoring::overflow; ++color) {
+        for (int k = s.blockStart[color]; k < s.blockStart[color + 1]; ++k) {
+            RevoluteBlock& block = s.revoluteBlocks[k];
+            BodyLanes<Float4> a = gatherBodies(states, block.bodyA), b = gatherBodies(states, block.bodyB);
+            JointPairT<Float4> p{a, b, block.mass};
+            wide(block.rows, p);
+            scatterVelocities(states, block.bodyA, a);
+            scatterVelocities(states, block.bodyB, b);
+        }
+        for (int k = s.preparedStart[color]; k < s.preparedStart[color + 1]; ++k) {
+            PreparedJoint& j = s.prepared[k];
+            JointPair p = pairOf(w, j);
+            scalar(j, p);
+        }
+    }
 }
 
 }  // namespace
@@ -183,70 +269,70 @@ void orderByColor(World::Impl& w, JointStore& s) {
 void prepareJoints(World::Impl& w, const StepContext& ctx) {
     JointStore& s = store(w);
     s.invHs = ctx.invHs;
-    orderByColor(w, s);
+    const ColorStarts start = colorJoints(w, s);
+    s.revoluteBlocks.clear();
     s.prepared.clear();
-    for (int index : s.active) {
-        const Joint& joint = s.joints[index];
-        const Body& a = w.bodies[joint.bodyA];
-        const Body& b = w.bodies[joint.bodyB];
-        PreparedJoint& j = s.prepared.emplace_back();
-        j.type = joint.type;
-        j.data = joint.data;
-        j.indexA = a.solverIndex;
-        j.indexB = b.solverIndex;
-        // A body outside the solver (static, or held asleep) is immovable for this step.
-        j.mass = {a.solverIndex ? a.invMass : 0.0f, a.solverIndex ? a.invInertia : 0.0f,
-                  b.solverIndex ? b.invMass : 0.0f, b.solverIndex ? b.invInertia : 0.0f};
-        j.anchorA = rotate(a.xf.q, joint.localAnchorA - a.localCenter);
-        j.anchorB = rotate(b.xf.q, joint.localAnchorB - b.localCenter);
-        j.deltaCenter = b.center - a.center;
-        j.deltaAngle = b.angle - a.angle - joint.referenceAngle;
-        switch (j.type) {
-            case JointType::Revolute: prepareRevolute(j, ctx, a.xf.q); break;
-            case JointType::Prismatic: preparePrismatic(j, ctx, a.xf.q); break;
-            case JointType::Distance: prepareDistance(j, ctx, a.xf.q); break;
-            case JointType::Weld: prepareWeld(j, ctx, a.xf.q); break;
-            case JointType::Wheel: prepareWheel(j, ctx, a.xf.q); break;
-            case JointType::Motor: prepareMotor(j, ctx, a.xf.q); break;
-            case JointType::Mouse: prepareMouse(j, ctx, a.xf.q); break;
+    s.active.clear();
+    BlockPacker packer(s.revoluteBlocks);
+    PreparedJoint lane;
+    for (int color = 0; color <= GraphColoring::overflow; ++color) {
+        s.blockStart[color] = static_cast<int>(s.revoluteBlocks.size());
+        s.preparedStart[color] = static_cast<int>(s.prepared.size());
+        for (int k = start[color]; k < start[color + 1]; ++k) {
+            const int index = s.colored[s.byColor[k]];
+            const Joint& joint = s.joints[index];
+            if (color != GraphColoring::overflow && solvesInLanes(joint)) {
+                prepareJoint(lane, w, joint, ctx);
+                packer.add(index, lane);
+            } else {
+                prepareJoint(s.prepared.emplace_back(), w, joint, ctx);
+                s.active.push_back(index);
+            }
         }
+        packer.flush();
     }
+    s.blockStart[GraphColoring::overflow + 1] = static_cast<int>(s.revoluteBlocks.size());
+    s.preparedStart[GraphColoring::overflow + 1] = static_cast<int>(s.prepared.size());
 }
 
 // Every substep begins by re-applying the accumulated impulses (Box2D v3's soft step).
 void warmStartJoints(World::Impl& w, const StepContext&) {
-    for (PreparedJoint& j : store(w).prepared) {
-        JointPair p = pairOf(w, j);
-        switch (j.type) {
-            case JointType::Revolute: warmStartRevolute(j, p); break;
-            case JointType::Prismatic: warmStartPrismatic(j, p); break;
-            case JointType::Distance: warmStartDistance(j, p); break;
-            case JointType::Weld: warmStartWeld(j, p); break;
-            case JointType::Wheel: warmStartWheel(j, p); break;
-            case JointType::Motor: warmStartMotor(j, p); break;
-            case JointType::Mouse: warmStartMouse(j, p); break;
-        }
-    }
+    forEachJoint(
+        w, [](RevoluteRows<Float4>& rows, JointPairT<Float4>& p) { warmStartRevoluteRows(rows, p); },
+        [](PreparedJoint& j, JointPair& p) {
+            switch (j.type) {
+                case JointType::Revolute: warmStartRevolute(j, p); break;
+                case JointType::Prismatic: warmStartPrismatic(j, p); break;
+                case JointType::Distance: warmStartDistance(j, p); break;
+                case JointType::Weld: warmStartWeld(j, p); break;
+                case JointType::Wheel: warmStartWheel(j, p); break;
+                case JointType::Motor: warmStartMotor(j, p); break;
+                case JointType::Mouse: warmStartMouse(j, p); break;
+            }
+        });
 }
 
 void solveJoints(World::Impl& w, const StepContext& ctx, bool useBias) {
-    for (PreparedJoint& j : store(w).prepared) {
-        JointPair p = pairOf(w, j);
-        switch (j.type) {
-            case JointType::Revolute: solveRevolute(j, p, ctx, useBias); break;
-            case JointType::Prismatic: solvePrismatic(j, p, ctx, useBias); break;
-            case JointType::Distance: solveDistance(j, p, ctx, useBias); break;
-            case JointType::Weld: solveWeld(j, p, ctx, useBias); break;
-            case JointType::Wheel: solveWheel(j, p, ctx, useBias); break;
-            case JointType::Motor: solveMotor(j, p, ctx, useBias); break;
-            case JointType::Mouse: solveMouse(j, p, ctx, useBias); break;
-        }
-    }
+    const Softness soft = rigidSoftness(ctx, useBias);
+    forEachJoint(
+        w, [&](RevoluteRows<Float4>& rows, JointPairT<Float4>& p) { solveRevolutePoint(rows, p, soft); },
+        [&](PreparedJoint& j, JointPair& p) {
+            switch (j.type) {
+                case JointType::Revolute: solveRevolute(j, p, ctx, useBias); break;
+                case JointType::Prismatic: solvePrismatic(j, p, ctx, useBias); break;
+                case JointType::Distance: solveDistance(j, p, ctx, useBias); break;
+                case JointType::Weld: solveWeld(j, p, ctx, useBias); break;
+                case JointType::Wheel: solveWheel(j, p, ctx, useBias); break;
+                case JointType::Motor: solveMotor(j, p, ctx, useBias); break;
+                case JointType::Mouse: solveMouse(j, p, ctx, useBias); break;
+            }
+        });
 }
 
 // The accumulated impulses go back to the joints, ready for the next step's warm start.
 void storeJointImpulses(World::Impl& w, const StepContext&) {
     JointStore& s = store(w);
+    for (const RevoluteBlock& block : s.revoluteBlocks) unpackRevoluteImpulses(block, s.joints);
     for (size_t k = 0; k < s.active.size(); ++k) s.joints[s.active[k]].data = s.prepared[k].data;
 }
 

@@ -1,8 +1,8 @@
-// Float4: four float lanes for the wide contact solver. SSE2 on x86-64; elsewhere, or when
+// Float4: four float lanes for the wide contact and joint solvers. SSE2 on x86-64; elsewhere, or when
 // PERPDOT_NO_SIMD is defined, a plain struct of four floats with the same semantics.
 //
-// Only exactly rounded IEEE operations are offered (+, −, ×, negation, min, max, compare and
-// select: what the contact rows use): no FMA and no approximate reciprocal, so every lane computes
+// Only exactly rounded IEEE operations are offered (+, −, ×, ÷, negation, min, max, compare and
+// select: what the contact and joint rows use): no FMA and no approximate reciprocal, so every lane computes
 // bit for bit what the scalar `float` code computes. The float overloads of min, max and select below give the scalar
 // (1-lane) case the very same semantics, so one template serves both.
 #pragma once
@@ -39,10 +39,12 @@ struct Float4 {
     friend Float4 operator+(Float4 a, Float4 b) { return Float4(_mm_add_ps(a.v, b.v)); }
     friend Float4 operator-(Float4 a, Float4 b) { return Float4(_mm_sub_ps(a.v, b.v)); }
     friend Float4 operator*(Float4 a, Float4 b) { return Float4(_mm_mul_ps(a.v, b.v)); }
+    friend Float4 operator/(Float4 a, Float4 b) { return Float4(_mm_div_ps(a.v, b.v)); }
     friend Float4 operator-(Float4 a) { return Float4(_mm_xor_ps(a.v, _mm_set1_ps(-0.0f))); }  // flips the sign bit, as -x does
     Float4& operator+=(Float4 b) { return *this = *this + b; }
 
     friend Mask4 operator>(Float4 a, Float4 b) { return {_mm_cmpgt_ps(a.v, b.v)}; }
+    friend Mask4 operator!=(Float4 a, Float4 b) { return {_mm_cmpneq_ps(a.v, b.v)}; }
 };
 
 inline Float4 min(Float4 a, Float4 b) { return Float4(_mm_min_ps(a.v, b.v)); }
@@ -93,10 +95,12 @@ struct Float4 {
     friend Float4 operator+(Float4 a, Float4 b) { return lanewise(a, b, [](float x, float y) { return x + y; }); }
     friend Float4 operator-(Float4 a, Float4 b) { return lanewise(a, b, [](float x, float y) { return x - y; }); }
     friend Float4 operator*(Float4 a, Float4 b) { return lanewise(a, b, [](float x, float y) { return x * y; }); }
+    friend Float4 operator/(Float4 a, Float4 b) { return lanewise(a, b, [](float x, float y) { return x / y; }); }
     friend Float4 operator-(Float4 a) { return lanewise(a, a, [](float x, float) { return -x; }); }
     Float4& operator+=(Float4 b) { return *this = *this + b; }
 
     friend Mask4 operator>(Float4 a, Float4 b) { return compare(a, b, [](float x, float y) { return x > y; }); }
+    friend Mask4 operator!=(Float4 a, Float4 b) { return compare(a, b, [](float x, float y) { return x != y; }); }
 };
 
 inline Float4 min(Float4 a, Float4 b) { return Float4::lanewise(a, b, [](float x, float y) { return min(x, y); }); }
