@@ -158,24 +158,6 @@ namespace {
 
 using simd::Float4;
 
-// The awake joints coloured in store order (graph_color.hpp): consecutive joints of one colour
-// share no moving body, so a pass never waits for the velocities the previous joint wrote, and
-// four of them can be solved in SIMD lanes. Returns where each colour begins in s.byColor.
-ColorStarts colorJoints(World::Impl& w, JointStore& s) {
-    s.coloring.reset(static_cast<int>(w.states.size()));
-    s.colored.clear();
-    s.colors.clear();
-    for (int index = 0; index < static_cast<int>(s.joints.size()); ++index) {
-        const Joint& joint = s.joints[index];
-        if (!joint.alive) continue;
-        const int slotA = w.bodies[joint.bodyA].solverIndex, slotB = w.bodies[joint.bodyB].solverIndex;
-        if (slotA == 0 && slotB == 0) continue;  // both static or asleep
-        s.colored.push_back(index);
-        s.colors.push_back(s.coloring.assign(slotA, slotB));
-    }
-    return sortByColor(s.colors, s.byColor);
-}
-
 // The frame at step start and a working copy of the type data, then the type's own prepare.
 void prepareJoint(PreparedJoint& j, const World::Impl& w, const Joint& joint, const StepContext& ctx) {
     const Body& a = w.bodies[joint.bodyA];
@@ -202,40 +184,6 @@ void prepareJoint(PreparedJoint& j, const World::Impl& w, const Joint& joint, co
     }
 }
 
-// Revolute joints of one colour, four to a block (the last block's spare lanes stay empty).
-class BlockPacker {
-public:
-    explicit BlockPacker(std::vector<RevoluteBlock>& blocks) : blocks_(blocks) {}
-
-    void add(int index, const PreparedJoint& j) {
-        if (count_ == 0) blocks_.emplace_back();
-        RevoluteBlock& block = blocks_.back();
-        block.joint[count_] = index;
-        block.bodyA[count_] = j.indexA;
-        block.bodyB[count_] = j.indexB;
-        rows_[count_] = revoluteRows(j);
-        mass_[count_] = j.mass;
-        if (++count_ == 4) flush();
-    }
-
-    void flush() {
-        if (count_ == 0) return;
-        for (int lane = count_; lane < 4; ++lane) {
-            rows_[lane] = {};
-            mass_[lane] = {};
-        }
-        blocks_.back().rows = packRevoluteRows(rows_);
-        blocks_.back().mass = packJointMasses(mass_);
-        count_ = 0;
-    }
-
-private:
-    std::vector<RevoluteBlock>& blocks_;
-    std::array<RevoluteRows<float>, 4> rows_;
-    std::array<JointMass, 4> mass_;
-    int count_ = 0;
-};
-
 JointPair pairOf(World::Impl& w, const PreparedJoint& j) {
     std::vector<BodyState>& states = w.states;
     return {states[j.indexA], states[j.indexB], j.mass, w.stepRotation[j.indexB] - w.stepRotation[j.indexA]};
@@ -256,8 +204,8 @@ void forEachJoint(World::Impl& w, Wide wide, Scalar scalar) {
             scatterVelocities(states, block.bodyA, a);
             scatterVelocities(states, block.bodyB, b);
         }
-        for (int k = s.preparedStart[color]; k < s.preparedStart[color + 1]; ++k) {
-            PreparedJoint& j = s.prepared[k];
+        for (int k = s.scalarStart[color]; k < s.scalarStart[color + 1]; ++k) {
+            PreparedJoint& j = s.prepared[s.scalarOrder[k]];
             JointPair p = pairOf(w, j);
             scalar(j, p);
         }
@@ -266,33 +214,61 @@ void forEachJoint(World::Impl& w, Wide wide, Scalar scalar) {
 
 }  // namespace
 
+// Two sweeps. In store order, the order of the joints' and bodies' memory: colour the awake joints
+// (graph_color.hpp: consecutive joints of one colour share no moving body, so a pass never waits
+// for the velocities the previous joint wrote, and four can share SIMD lanes) and prepare them.
+// Then colour by colour: revolute joints without motor or limit four to a block, the others
+// listed for the scalar passes.
 void prepareJoints(World::Impl& w, const StepContext& ctx) {
+    constexpr int overflow = GraphColoring::overflow;
     JointStore& s = store(w);
     s.invHs = ctx.invHs;
-    const ColorStarts start = colorJoints(w, s);
-    s.revoluteBlocks.clear();
+    s.coloring.reset(static_cast<int>(w.states.size()));
+    s.awake.clear();
+    s.colors.clear();
     s.prepared.clear();
-    s.active.clear();
-    BlockPacker packer(s.revoluteBlocks);
-    PreparedJoint lane;
-    for (int color = 0; color <= GraphColoring::overflow; ++color) {
+    for (int index = 0; index < static_cast<int>(s.joints.size()); ++index) {
+        const Joint& joint = s.joints[index];
+        if (!joint.alive) continue;
+        const int slotA = w.bodies[joint.bodyA].solverIndex, slotB = w.bodies[joint.bodyB].solverIndex;
+        if (slotA == 0 && slotB == 0) continue;  // both static or asleep
+        s.awake.push_back(index);
+        s.colors.push_back(s.coloring.assign(slotA, slotB));
+        prepareJoint(s.prepared.emplace_back(), w, joint, ctx);
+    }
+    const ColorStarts start = sortByColor(s.colors, s.byColor);
+
+    s.revoluteBlocks.clear();
+    s.scalarOrder.clear();
+    static const PreparedJoint emptyLane;  // static slots, no mass
+    std::array<const PreparedJoint*, 4> lanes;
+    std::array<int, 4> joints;
+    for (int color = 0; color <= overflow; ++color) {
         s.blockStart[color] = static_cast<int>(s.revoluteBlocks.size());
-        s.preparedStart[color] = static_cast<int>(s.prepared.size());
+        s.scalarStart[color] = static_cast<int>(s.scalarOrder.size());
+        int count = 0;
         for (int k = start[color]; k < start[color + 1]; ++k) {
-            const int index = s.colored[s.byColor[k]];
-            const Joint& joint = s.joints[index];
-            if (color != GraphColoring::overflow && solvesInLanes(joint)) {
-                prepareJoint(lane, w, joint, ctx);
-                packer.add(index, lane);
-            } else {
-                prepareJoint(s.prepared.emplace_back(), w, joint, ctx);
-                s.active.push_back(index);
+            const int position = s.byColor[k];
+            if (color == overflow || !solvesInLanes(s.prepared[position])) {
+                s.scalarOrder.push_back(position);
+                continue;
+            }
+            lanes[count] = &s.prepared[position];
+            joints[count] = s.awake[position];
+            if (++count == 4) {
+                s.revoluteBlocks.push_back(packRevoluteBlock(lanes, joints));
+                count = 0;
             }
         }
-        packer.flush();
+        if (count == 0) continue;
+        for (int lane = count; lane < 4; ++lane) {
+            lanes[lane] = &emptyLane;
+            joints[lane] = -1;
+        }
+        s.revoluteBlocks.push_back(packRevoluteBlock(lanes, joints));
     }
-    s.blockStart[GraphColoring::overflow + 1] = static_cast<int>(s.revoluteBlocks.size());
-    s.preparedStart[GraphColoring::overflow + 1] = static_cast<int>(s.prepared.size());
+    s.blockStart[overflow + 1] = static_cast<int>(s.revoluteBlocks.size());
+    s.scalarStart[overflow + 1] = static_cast<int>(s.scalarOrder.size());
 }
 
 // Every substep begins by re-applying the accumulated impulses (Box2D v3's soft step).
@@ -333,7 +309,7 @@ void solveJoints(World::Impl& w, const StepContext& ctx, bool useBias) {
 void storeJointImpulses(World::Impl& w, const StepContext&) {
     JointStore& s = store(w);
     for (const RevoluteBlock& block : s.revoluteBlocks) unpackRevoluteImpulses(block, s.joints);
-    for (size_t k = 0; k < s.active.size(); ++k) s.joints[s.active[k]].data = s.prepared[k].data;
+    for (int position : s.scalarOrder) s.joints[s.awake[position]].data = s.prepared[position].data;
 }
 
 bool jointAllowsCollision(const World::Impl& w, int bodyA, int bodyB) {

@@ -41,7 +41,12 @@ void solveRevolutePoint(RevoluteRows<F>& r, JointPairT<F>& p, const Softness& so
     solvePointRows(p, f.rA, f.rB, f.d, soft, r.linearImpulse);
 }
 
-// Four revolute joints without motor or limit, of one graph colour (no two share a dynamic body).
+// A revolute joint without motor or limit: its rows are the point rows alone.
+inline bool solvesInLanes(const PreparedJoint& j) {
+    return j.type == JointType::Revolute && !j.data.revolute.enableMotor && !j.data.revolute.enableLimit;
+}
+
+// Four revolute joints of one graph colour (no two share a dynamic body) as the lanes of one row set.
 struct RevoluteBlock {
     RevoluteRows<simd::Float4> rows;
     JointMassT<simd::Float4> mass;
@@ -49,15 +54,9 @@ struct RevoluteBlock {
     int bodyA[4] = {}, bodyB[4] = {};  // solver slots; an empty lane uses the static slot 0
 };
 
-// A revolute joint with neither motor nor limit: its rows are the point rows alone.
-inline bool solvesInLanes(const Joint& j) {
-    return j.type == JointType::Revolute && !j.data.revolute.enableMotor && !j.data.revolute.enableLimit;
-}
-
-// Four joints' rows and masses as lanes (an empty lane: default rows and zero masses, which move
-// nothing).
-RevoluteRows<simd::Float4> packRevoluteRows(const std::array<RevoluteRows<float>, 4>& lanes);
-JointMassT<simd::Float4> packJointMasses(const std::array<JointMass, 4>& lanes);
+// Four prepared joints as lanes; joints[i] = -1 marks an empty lane, whose PreparedJoint should
+// have no mass (it then moves nothing).
+RevoluteBlock packRevoluteBlock(const std::array<const PreparedJoint*, 4>& lanes, const std::array<int, 4>& joints);
 // Each lane's accumulated point impulse back to its joint.
 void unpackRevoluteImpulses(const RevoluteBlock& block, std::vector<Joint>& joints);
 

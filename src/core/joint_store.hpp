@@ -143,22 +143,23 @@ struct PreparedJoint {
 
 struct RevoluteBlock;  // four revolute joints in SIMD lanes (joint_solver_wide.hpp)
 
-// The awake joints of a step, colour by colour: colour c is revoluteBlocks[blockStart[c] ..
-// blockStart[c + 1]) solved four at a time, then prepared[preparedStart[c] .. preparedStart[c + 1])
-// one at a time (the other joints, and every joint no colour could take).
 struct JointStore {
     std::vector<Joint> joints;
     std::vector<int> freeList;
     std::vector<int> bodyHead;           // by body index: first edge key of its joint list, -1 if none
-    std::vector<RevoluteBlock> revoluteBlocks;
+    // The step's awake joints, prepared in store order: prepared[k] is joints[awake[k]].
+    std::vector<int> awake;
     std::vector<PreparedJoint> prepared;
-    std::vector<int> active;             // prepared[k] is joints[active[k]]
-    ColorStarts blockStart{}, preparedStart{};
+    // The passes' order, colour by colour: colour c is revoluteBlocks[blockStart[c] .. blockStart[c + 1])
+    // four at a time, then prepared[scalarOrder[k]] for k in [scalarStart[c], scalarStart[c + 1])
+    // one at a time (the other joints, and every joint no colour could take).
+    std::vector<RevoluteBlock> revoluteBlocks;
+    std::vector<int> scalarOrder;
+    ColorStarts blockStart{}, scalarStart{};
     // Scratch of prepareJoints, kept to reuse its memory.
     GraphColoring coloring;
-    std::vector<int> colored;  // awake joints in store order, with their colours in `colors`
-    std::vector<int> colors;
-    std::vector<int> byColor;  // positions in `colored`, sorted by colour
+    std::vector<int> colors;   // of prepared[k]
+    std::vector<int> byColor;  // positions in `prepared`, sorted by colour
     float invHs = 0;                     // of the last step, for reaction forces
 };
 
