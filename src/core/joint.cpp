@@ -226,16 +226,18 @@ void prepareJoints(World::Impl& w, const StepContext& ctx) {
     s.coloring.reset(static_cast<int>(w.states.size()));
     s.awake.clear();
     s.colors.clear();
-    s.prepared.clear();
+    // prepareJoint writes every field, so last step's elements are reused as they are.
+    s.prepared.resize(s.joints.size());
     for (int index = 0; index < static_cast<int>(s.joints.size()); ++index) {
         const Joint& joint = s.joints[index];
         if (!joint.alive) continue;
         const int slotA = w.bodies[joint.bodyA].solverIndex, slotB = w.bodies[joint.bodyB].solverIndex;
         if (slotA == 0 && slotB == 0) continue;  // both static or asleep
+        prepareJoint(s.prepared[s.awake.size()], w, joint, ctx);
         s.awake.push_back(index);
         s.colors.push_back(s.coloring.assign(slotA, slotB));
-        prepareJoint(s.prepared.emplace_back(), w, joint, ctx);
     }
+    s.prepared.resize(s.awake.size());
     const ColorStarts start = sortByColor(s.colors, s.byColor);
 
     s.revoluteBlocks.clear();
