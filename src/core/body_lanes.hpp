@@ -4,29 +4,29 @@
 // back in any order.
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 #include "core/step_context.hpp"
 
 namespace perpdot {
 
-// v, ω, Δp and Δq of the bodies in four solver slots.
+static_assert(sizeof(BodyState) == 7 * sizeof(float) && offsetof(BodyState, dp) == 3 * sizeof(float),
+              "a body's state is the floats v.x, v.y, ω, Δp.x, Δp.y, Δq.c, Δq.s");
+
+// v, ω, Δp and Δq of the bodies in four solver slots: each body's (v.x, v.y, ω, Δp.x) and
+// (Δp.x, Δp.y, Δq.c, Δq.s) as a row, then rows turned into lanes.
 inline BodyLanes<simd::Float4> gatherBodies(const std::vector<BodyState>& states, const int (&slots)[4]) {
-    float vx[4], vy[4], w[4], dpx[4], dpy[4], dqc[4], dqs[4];
+    using simd::Float4;
+    Float4 head[4], tail[4];
     for (int i = 0; i < 4; ++i) {
         const BodyState& s = states[slots[i]];
-        vx[i] = s.v.x;
-        vy[i] = s.v.y;
-        w[i] = s.w;
-        dpx[i] = s.dp.x;
-        dpy[i] = s.dp.y;
-        dqc[i] = s.dq.c;
-        dqs[i] = s.dq.s;
+        head[i] = Float4::loadBytes(&s);
+        tail[i] = Float4::loadBytes(&s.dp);
     }
-    return {{simd::Float4::load(vx), simd::Float4::load(vy)},
-            simd::Float4::load(w),
-            {simd::Float4::load(dpx), simd::Float4::load(dpy)},
-            {simd::Float4::load(dqc), simd::Float4::load(dqs)}};
+    simd::transpose(head);
+    simd::transpose(tail);
+    return {{head[0], head[1]}, head[2], {tail[0], tail[1]}, {tail[2], tail[3]}};
 }
 
 // Write back the velocities the rows changed (Δp and Δq are the integrator's). The static slot 0

@@ -10,6 +10,9 @@
 #if !defined(PERPDOT_NO_SIMD) && (defined(__SSE2__) || defined(_M_X64))
 #define PERPDOT_SSE2 1
 #include <emmintrin.h>
+#else
+#include <cstring>
+#include <utility>
 #endif
 
 namespace perpdot::simd {
@@ -32,8 +35,9 @@ struct Float4 {
     Float4() : v(_mm_setzero_ps()) {}
     Float4(float s) : v(_mm_set1_ps(s)) {}  // implicit: a float broadcasts, so it mixes with lanes like a scalar
     explicit Float4(__m128 m) : v(m) {}
-
     static Float4 load(const float* p) { return Float4(_mm_loadu_ps(p)); }
+    // Four consecutive floats of a struct's storage, e.g. of a body's state.
+    static Float4 loadBytes(const void* p) { return Float4(_mm_loadu_ps(static_cast<const float*>(p))); }
     void store(float* p) const { _mm_storeu_ps(p, v); }
 
     friend Float4 operator+(Float4 a, Float4 b) { return Float4(_mm_add_ps(a.v, b.v)); }
@@ -58,6 +62,9 @@ inline Mask4 maskFromBools(const bool lanes[4]) {
     return {_mm_castsi128_ps(_mm_set_epi32(bits(3), bits(2), bits(1), bits(0)))};
 }
 
+// Rows to columns: afterwards lane i of m[j] is what lane j of m[i] was.
+inline void transpose(Float4 (&m)[4]) { _MM_TRANSPOSE4_PS(m[0].v, m[1].v, m[2].v, m[3].v); }
+
 #else  // the portable fallback: the same operations lane by lane
 
 struct Mask4 {
@@ -73,6 +80,12 @@ struct Float4 {
     static Float4 load(const float* p) {
         Float4 r;
         for (int i = 0; i < 4; ++i) r.v[i] = p[i];
+        return r;
+    }
+    // Four consecutive floats of a struct's storage, e.g. of a body's state.
+    static Float4 loadBytes(const void* p) {
+        Float4 r;
+        std::memcpy(r.v, p, sizeof r.v);
         return r;
     }
     void store(float* p) const {
@@ -115,6 +128,12 @@ inline Mask4 maskFromBools(const bool lanes[4]) {
     Mask4 r;
     for (int i = 0; i < 4; ++i) r.m[i] = lanes[i];
     return r;
+}
+
+// Rows to columns: afterwards lane i of m[j] is what lane j of m[i] was.
+inline void transpose(Float4 (&m)[4]) {
+    for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j) std::swap(m[i].v[j], m[j].v[i]);
 }
 
 #endif
