@@ -212,13 +212,23 @@ void forEachJoint(World::Impl& w, Wide wide, Scalar scalar) {
     }
 }
 
+// Revolute joints without motor or limit go to the blocks, unless no colour could take them.
+bool inLanes(int color, const PreparedJoint& j) { return color != GraphColoring::overflow && solvesInLanes(j); }
+
+// A colour's block being filled: up to four prepared joints waiting for their lanes.
+struct OpenBlock {
+    std::array<const PreparedJoint*, 4> lanes;
+    std::array<int, 4> joints;
+    int count = 0;
+};
+
 }  // namespace
 
-// Two sweeps. In store order, the order of the joints' and bodies' memory: colour the awake joints
-// (graph_color.hpp: consecutive joints of one colour share no moving body, so a pass never waits
-// for the velocities the previous joint wrote, and four can share SIMD lanes) and prepare them.
-// Then colour by colour: revolute joints without motor or limit four to a block, the others
-// listed for the scalar passes.
+// Two sweeps in store order, the order of the joints' and bodies' memory. The first colours the
+// awake joints (graph_color.hpp: joints of one colour share no moving body, so a pass never waits
+// for the velocities the previous joint wrote, and four can share SIMD lanes), prepares them and
+// counts each colour's lane and scalar joints. The second sends each joint to its colour's next
+// lane or scalar slot: within a colour the order is free.
 void prepareJoints(World::Impl& w, const StepContext& ctx) {
     constexpr int overflow = GraphColoring::overflow;
     JointStore& s = store(w);
@@ -226,6 +236,7 @@ void prepareJoints(World::Impl& w, const StepContext& ctx) {
     s.coloring.reset(static_cast<int>(w.states.size()));
     s.awake.clear();
     s.colors.clear();
+    std::array<int, overflow + 1> laneCount{}, scalarCount{};
     // prepareJoint writes every field, so last step's elements are reused as they are.
     s.prepared.resize(s.joints.size());
     for (int index = 0; index < static_cast<int>(s.joints.size()); ++index) {
@@ -233,44 +244,47 @@ void prepareJoints(World::Impl& w, const StepContext& ctx) {
         if (!joint.alive) continue;
         const int slotA = w.bodies[joint.bodyA].solverIndex, slotB = w.bodies[joint.bodyB].solverIndex;
         if (slotA == 0 && slotB == 0) continue;  // both static or asleep
-        prepareJoint(s.prepared[s.awake.size()], w, joint, ctx);
+        const int color = s.coloring.assign(slotA, slotB);
+        PreparedJoint& j = s.prepared[s.awake.size()];
+        prepareJoint(j, w, joint, ctx);
+        ++(inLanes(color, j) ? laneCount[color] : scalarCount[color]);
         s.awake.push_back(index);
-        s.colors.push_back(s.coloring.assign(slotA, slotB));
+        s.colors.push_back(color);
     }
     s.prepared.resize(s.awake.size());
-    const ColorStarts start = sortByColor(s.colors, s.byColor);
 
-    s.revoluteBlocks.clear();
-    s.scalarOrder.clear();
-    static const PreparedJoint emptyLane;  // static slots, no mass
-    std::array<const PreparedJoint*, 4> lanes;
-    std::array<int, 4> joints;
     for (int color = 0; color <= overflow; ++color) {
-        s.blockStart[color] = static_cast<int>(s.revoluteBlocks.size());
-        s.scalarStart[color] = static_cast<int>(s.scalarOrder.size());
-        int count = 0;
-        for (int k = start[color]; k < start[color + 1]; ++k) {
-            const int position = s.byColor[k];
-            if (color == overflow || !solvesInLanes(s.prepared[position])) {
-                s.scalarOrder.push_back(position);
-                continue;
-            }
-            lanes[count] = &s.prepared[position];
-            joints[count] = s.awake[position];
-            if (++count == 4) {
-                s.revoluteBlocks.push_back(packRevoluteBlock(lanes, joints));
-                count = 0;
-            }
-        }
-        if (count == 0) continue;
-        for (int lane = count; lane < 4; ++lane) {
-            lanes[lane] = &emptyLane;
-            joints[lane] = -1;
-        }
-        s.revoluteBlocks.push_back(packRevoluteBlock(lanes, joints));
+        s.blockStart[color + 1] = s.blockStart[color] + (laneCount[color] + 3) / 4;
+        s.scalarStart[color + 1] = s.scalarStart[color] + scalarCount[color];
     }
-    s.blockStart[overflow + 1] = static_cast<int>(s.revoluteBlocks.size());
-    s.scalarStart[overflow + 1] = static_cast<int>(s.scalarOrder.size());
+    s.revoluteBlocks.resize(s.blockStart[overflow + 1]);
+    s.scalarOrder.resize(s.scalarStart[overflow + 1]);
+    ColorStarts nextBlock = s.blockStart, nextScalar = s.scalarStart;
+    std::array<OpenBlock, overflow> open;
+    for (int k = 0; k < static_cast<int>(s.prepared.size()); ++k) {
+        const int color = s.colors[k];
+        if (!inLanes(color, s.prepared[k])) {
+            s.scalarOrder[nextScalar[color]++] = k;
+            continue;
+        }
+        OpenBlock& block = open[color];
+        block.lanes[block.count] = &s.prepared[k];
+        block.joints[block.count] = s.awake[k];
+        if (++block.count == 4) {
+            s.revoluteBlocks[nextBlock[color]++] = packRevoluteBlock(block.lanes, block.joints);
+            block.count = 0;
+        }
+    }
+    static const PreparedJoint emptyLane;  // static slots, no mass
+    for (int color = 0; color < overflow; ++color) {
+        OpenBlock& block = open[color];
+        if (block.count == 0) continue;
+        for (int lane = block.count; lane < 4; ++lane) {
+            block.lanes[lane] = &emptyLane;
+            block.joints[lane] = -1;
+        }
+        s.revoluteBlocks[nextBlock[color]] = packRevoluteBlock(block.lanes, block.joints);
+    }
 }
 
 // Every substep begins by re-applying the accumulated impulses (Box2D v3's soft step).

@@ -158,8 +158,7 @@ struct JointStore {
     ColorStarts blockStart{}, scalarStart{};
     // Scratch of prepareJoints, kept to reuse its memory.
     GraphColoring coloring;
-    std::vector<int> colors;   // of prepared[k]
-    std::vector<int> byColor;  // positions in `prepared`, sorted by colour
+    std::vector<int> colors;  // of prepared[k]
     float invHs = 0;                     // of the last step, for reaction forces
 };
 
