@@ -12,6 +12,7 @@
 
 namespace perpdot {
 
+// What the point rows of a revolute joint carry through a step.
 template <class F>
 struct RevoluteRows {
     Vec2T<F> anchorA, anchorB;  // rA, rB at step start
