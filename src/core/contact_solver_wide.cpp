@@ -23,36 +23,12 @@ static_assert(sizeof(ContactRows<float>) == rowFloats * sizeof(float) &&
 
 void packContactRows(const std::array<const ContactRows<float>*, 4>& lanes, ContactRows<Float4>& packed) {
     auto* out = reinterpret_cast<Float4*>(&packed);
-    const std::byte* rows[4];
-    for (int i = 0; i < 4; ++i) rows[i] = reinterpret_cast<const std::byte*>(lanes[i]);
     for (std::size_t k = 0; k < rowFloats; k += 4) {
         const std::size_t first = std::min(k, rowFloats - 4);  // the last run overlaps the one before
-        simd::transposeLoad(rows, first * sizeof(float), out + first);
-    }
-}
-
-// A BodyState is seven floats, v.x v.y ω dp.x dp.y dq.c dq.s: read as two overlapping rows of four.
-static_assert(std::is_standard_layout_v<BodyState> && sizeof(BodyState) == 7 * sizeof(float));
-
-BodyLanes<Float4> gatherBodies(const std::vector<BodyState>& states, const int (&slots)[4]) {
-    const std::byte* rows[4];
-    for (int i = 0; i < 4; ++i) rows[i] = reinterpret_cast<const std::byte*>(&states[slots[i]]);
-    Float4 head[4], tail[4];
-    simd::transposeLoad(rows, 0, head);                  // v.x, v.y, ω, dp.x
-    simd::transposeLoad(rows, 3 * sizeof(float), tail);  // dp.x, dp.y, dq.c, dq.s
-    return {{head[0], head[1]}, head[2], {tail[0], tail[1]}, {tail[2], tail[3]}};
-}
-
-void scatterVelocities(std::vector<BodyState>& states, const int (&slots)[4], const BodyLanes<Float4>& lanes) {
-    float vx[4], vy[4], w[4];
-    lanes.v.x.store(vx);
-    lanes.v.y.store(vy);
-    lanes.w.store(w);
-    for (int i = 0; i < 4; ++i) {
-        if (slots[i] == 0) continue;
-        BodyState& s = states[slots[i]];
-        s.v = {vx[i], vy[i]};
-        s.w = w[i];
+        Float4 run[4];
+        for (int i = 0; i < 4; ++i) run[i] = Float4::loadBytes(reinterpret_cast<const float*>(lanes[i]) + first);
+        simd::transpose(run);
+        std::copy(run, run + 4, out + first);
     }
 }
 

@@ -12,8 +12,7 @@
 #include <vector>
 
 #include "collide/collision.hpp"
-#include "core/lanes.hpp"
-#include "core/step_context.hpp"
+#include "core/body_lanes.hpp"
 
 namespace perpdot {
 
@@ -132,10 +131,5 @@ struct ContactBlock {
 
 // Four constraints' rows as lanes (an empty lane: a default ContactRows, which moves nothing).
 void packContactRows(const std::array<const ContactRows<float>*, 4>& lanes, ContactRows<simd::Float4>& packed);
-// The state of four solver bodies as lanes.
-BodyLanes<simd::Float4> gatherBodies(const std::vector<BodyState>& states, const int (&slots)[4]);
-// Write back the velocities the rows changed (Δp and Δq are the integrator's). The static slot 0
-// is skipped: lanes share it and it never moves.
-void scatterVelocities(std::vector<BodyState>& states, const int (&slots)[4], const BodyLanes<simd::Float4>& lanes);
 
 }  // namespace perpdot

@@ -1,10 +1,11 @@
 // The joint store and the World's joint API: creation and destruction with generational ids,
 // per-body joint lists (for collideConnected and destroyBody), and the solver stages, which
-// dispatch to the joint types (joint_<type>.cpp) by switch.
+// dispatch to the joint types (joint_<type>.cpp) by switch, revolute joints without motor or limit
+// four at a time (joint_solver_wide.hpp).
 #include <cmath>
 #include <string>
 
-#include "core/joint_rows.hpp"
+#include "core/joint_solver_wide.hpp"
 #include "core/world_impl.hpp"
 
 namespace perpdot {
@@ -91,11 +92,6 @@ Joint& checkedJoint(const World::Impl& w, JointId id) {
     return const_cast<Joint&>(s.joints[id.index]);
 }
 
-JointPair pairOf(World::Impl& w, const PreparedJoint& j) {
-    std::vector<BodyState>& states = w.states;
-    return {states[j.indexA], states[j.indexB], j.mass, w.stepRotation[j.indexB] - w.stepRotation[j.indexA]};
-}
-
 JointReaction reactionOf(const Joint& j) {
     switch (j.type) {
         case JointType::Revolute: return reactionRevolute(j);
@@ -160,94 +156,176 @@ JointId jointId(const World::Impl& w, const Joint& joint) {
 
 namespace {
 
-// The active joints sorted by graph colour (graph_color.hpp), stably: consecutive joints of one
-// colour share no moving body, so a pass never waits for the velocities the previous joint wrote.
-void orderByColor(World::Impl& w, JointStore& s) {
+using simd::Float4;
+
+// The frame at step start and a working copy of the type data, then the type's own prepare.
+void prepareJoint(PreparedJoint& j, const World::Impl& w, const Joint& joint, const StepContext& ctx) {
+    const Body& a = w.bodies[joint.bodyA];
+    const Body& b = w.bodies[joint.bodyB];
+    j.type = joint.type;
+    j.data = joint.data;
+    j.indexA = a.solverIndex;
+    j.indexB = b.solverIndex;
+    // A body outside the solver (static, or held asleep) is immovable for this step.
+    j.mass = {a.solverIndex ? a.invMass : 0.0f, a.solverIndex ? a.invInertia : 0.0f,
+              b.solverIndex ? b.invMass : 0.0f, b.solverIndex ? b.invInertia : 0.0f};
+    j.anchorA = rotate(a.xf.q, joint.localAnchorA - a.localCenter);
+    j.anchorB = rotate(b.xf.q, joint.localAnchorB - b.localCenter);
+    j.deltaCenter = b.center - a.center;
+    j.deltaAngle = b.angle - a.angle - joint.referenceAngle;
+    switch (j.type) {
+        case JointType::Revolute: prepareRevolute(j, ctx, a.xf.q); break;
+        case JointType::Prismatic: preparePrismatic(j, ctx, a.xf.q); break;
+        case JointType::Distance: prepareDistance(j, ctx, a.xf.q); break;
+        case JointType::Weld: prepareWeld(j, ctx, a.xf.q); break;
+        case JointType::Wheel: prepareWheel(j, ctx, a.xf.q); break;
+        case JointType::Motor: prepareMotor(j, ctx, a.xf.q); break;
+        case JointType::Mouse: prepareMouse(j, ctx, a.xf.q); break;
+    }
+}
+
+JointPair pairOf(World::Impl& w, const PreparedJoint& j) {
+    std::vector<BodyState>& states = w.states;
+    return {states[j.indexA], states[j.indexB], j.mass, w.stepRotation[j.indexB] - w.stepRotation[j.indexA]};
+}
+
+// Colour by colour: `wide(rows, pair)` on the colour's blocks, then `scalar(joint, pair)` on its
+// other joints. Joints of one colour share no moving body, so their order within it is free.
+template <class Wide, class Scalar>
+void forEachJoint(World::Impl& w, Wide wide, Scalar scalar) {
+    JointStore& s = store(w);
+    std::vector<BodyState>& states = w.states;
+    for (int color = 0; color <= GraphColoring::overflow; ++color) {
+        for (int k = s.blockStart[color]; k < s.blockStart[color + 1]; ++k) {
+            RevoluteBlock& block = s.revoluteBlocks[k];
+            BodyLanes<Float4> a = gatherBodies(states, block.bodyA), b = gatherBodies(states, block.bodyB);
+            JointPairT<Float4> p{a, b, block.mass};
+            wide(block.rows, p);
+            scatterVelocities(states, block.bodyA, a);
+            scatterVelocities(states, block.bodyB, b);
+        }
+        for (int k = s.scalarStart[color]; k < s.scalarStart[color + 1]; ++k) {
+            PreparedJoint& j = s.prepared[s.scalarOrder[k]];
+            JointPair p = pairOf(w, j);
+            scalar(j, p);
+        }
+    }
+}
+
+// Revolute joints without motor or limit go to the blocks, unless no colour could take them.
+bool inLanes(int color, const PreparedJoint& j) { return color != GraphColoring::overflow && solvesInLanes(j); }
+
+// A colour's block being filled: up to four prepared joints waiting for their lanes.
+struct OpenBlock {
+    std::array<const PreparedJoint*, 4> lanes;
+    std::array<int, 4> joints;
+    int count = 0;
+};
+
+}  // namespace
+
+// Two sweeps in store order, the order of the joints' and bodies' memory. The first colours the
+// awake joints (graph_color.hpp: joints of one colour share no moving body, so a pass never waits
+// for the velocities the previous joint wrote, and four can share SIMD lanes), prepares them and
+// counts each colour's lane and scalar joints. The second sends each joint to its colour's next
+// lane or scalar slot: within a colour the order is free.
+void prepareJoints(World::Impl& w, const StepContext& ctx) {
+    constexpr int overflow = GraphColoring::overflow;
+    JointStore& s = store(w);
+    s.invHs = ctx.invHs;
     s.coloring.reset(static_cast<int>(w.states.size()));
-    s.colored.clear();
+    s.awake.clear();
     s.colors.clear();
+    std::array<int, overflow + 1> laneCount{}, scalarCount{};
+    // prepareJoint writes every field, so last step's elements are reused as they are.
+    s.prepared.resize(s.joints.size());
     for (int index = 0; index < static_cast<int>(s.joints.size()); ++index) {
         const Joint& joint = s.joints[index];
         if (!joint.alive) continue;
         const int slotA = w.bodies[joint.bodyA].solverIndex, slotB = w.bodies[joint.bodyB].solverIndex;
         if (slotA == 0 && slotB == 0) continue;  // both static or asleep
-        s.colored.push_back(index);
-        s.colors.push_back(s.coloring.assign(slotA, slotB));
+        const int color = s.coloring.assign(slotA, slotB);
+        PreparedJoint& j = s.prepared[s.awake.size()];
+        prepareJoint(j, w, joint, ctx);
+        ++(inLanes(color, j) ? laneCount[color] : scalarCount[color]);
+        s.awake.push_back(index);
+        s.colors.push_back(color);
     }
-    sortByColor(s.colors, s.active);
-    for (int& position : s.active) position = s.colored[position];
-}
+    s.prepared.resize(s.awake.size());
 
-}  // namespace
-
-void prepareJoints(World::Impl& w, const StepContext& ctx) {
-    JointStore& s = store(w);
-    s.invHs = ctx.invHs;
-    orderByColor(w, s);
-    s.prepared.clear();
-    for (int index : s.active) {
-        const Joint& joint = s.joints[index];
-        const Body& a = w.bodies[joint.bodyA];
-        const Body& b = w.bodies[joint.bodyB];
-        PreparedJoint& j = s.prepared.emplace_back();
-        j.type = joint.type;
-        j.data = joint.data;
-        j.indexA = a.solverIndex;
-        j.indexB = b.solverIndex;
-        // A body outside the solver (static, or held asleep) is immovable for this step.
-        j.mass = {a.solverIndex ? a.invMass : 0.0f, a.solverIndex ? a.invInertia : 0.0f,
-                  b.solverIndex ? b.invMass : 0.0f, b.solverIndex ? b.invInertia : 0.0f};
-        j.anchorA = rotate(a.xf.q, joint.localAnchorA - a.localCenter);
-        j.anchorB = rotate(b.xf.q, joint.localAnchorB - b.localCenter);
-        j.deltaCenter = b.center - a.center;
-        j.deltaAngle = b.angle - a.angle - joint.referenceAngle;
-        switch (j.type) {
-            case JointType::Revolute: prepareRevolute(j, ctx, a.xf.q); break;
-            case JointType::Prismatic: preparePrismatic(j, ctx, a.xf.q); break;
-            case JointType::Distance: prepareDistance(j, ctx, a.xf.q); break;
-            case JointType::Weld: prepareWeld(j, ctx, a.xf.q); break;
-            case JointType::Wheel: prepareWheel(j, ctx, a.xf.q); break;
-            case JointType::Motor: prepareMotor(j, ctx, a.xf.q); break;
-            case JointType::Mouse: prepareMouse(j, ctx, a.xf.q); break;
+    for (int color = 0; color <= overflow; ++color) {
+        s.blockStart[color + 1] = s.blockStart[color] + (laneCount[color] + 3) / 4;
+        s.scalarStart[color + 1] = s.scalarStart[color] + scalarCount[color];
+    }
+    s.revoluteBlocks.resize(s.blockStart[overflow + 1]);
+    s.scalarOrder.resize(s.scalarStart[overflow + 1]);
+    ColorStarts nextBlock = s.blockStart, nextScalar = s.scalarStart;
+    std::array<OpenBlock, overflow> open;
+    for (int k = 0; k < static_cast<int>(s.prepared.size()); ++k) {
+        const int color = s.colors[k];
+        if (!inLanes(color, s.prepared[k])) {
+            s.scalarOrder[nextScalar[color]++] = k;
+            continue;
         }
+        OpenBlock& block = open[color];
+        block.lanes[block.count] = &s.prepared[k];
+        block.joints[block.count] = s.awake[k];
+        if (++block.count == 4) {
+            s.revoluteBlocks[nextBlock[color]++] = packRevoluteBlock(block.lanes, block.joints);
+            block.count = 0;
+        }
+    }
+    static const PreparedJoint emptyLane;  // static slots, no mass
+    for (int color = 0; color < overflow; ++color) {
+        OpenBlock& block = open[color];
+        if (block.count == 0) continue;
+        for (int lane = block.count; lane < 4; ++lane) {
+            block.lanes[lane] = &emptyLane;
+            block.joints[lane] = -1;
+        }
+        s.revoluteBlocks[nextBlock[color]] = packRevoluteBlock(block.lanes, block.joints);
     }
 }
 
 // Every substep begins by re-applying the accumulated impulses (Box2D v3's soft step).
 void warmStartJoints(World::Impl& w, const StepContext&) {
-    for (PreparedJoint& j : store(w).prepared) {
-        JointPair p = pairOf(w, j);
-        switch (j.type) {
-            case JointType::Revolute: warmStartRevolute(j, p); break;
-            case JointType::Prismatic: warmStartPrismatic(j, p); break;
-            case JointType::Distance: warmStartDistance(j, p); break;
-            case JointType::Weld: warmStartWeld(j, p); break;
-            case JointType::Wheel: warmStartWheel(j, p); break;
-            case JointType::Motor: warmStartMotor(j, p); break;
-            case JointType::Mouse: warmStartMouse(j, p); break;
-        }
-    }
+    forEachJoint(
+        w, [](RevoluteRows<Float4>& rows, JointPairT<Float4>& p) { warmStartRevoluteRows(rows, p); },
+        [](PreparedJoint& j, JointPair& p) {
+            switch (j.type) {
+                case JointType::Revolute: warmStartRevolute(j, p); break;
+                case JointType::Prismatic: warmStartPrismatic(j, p); break;
+                case JointType::Distance: warmStartDistance(j, p); break;
+                case JointType::Weld: warmStartWeld(j, p); break;
+                case JointType::Wheel: warmStartWheel(j, p); break;
+                case JointType::Motor: warmStartMotor(j, p); break;
+                case JointType::Mouse: warmStartMouse(j, p); break;
+            }
+        });
 }
 
 void solveJoints(World::Impl& w, const StepContext& ctx, bool useBias) {
-    for (PreparedJoint& j : store(w).prepared) {
-        JointPair p = pairOf(w, j);
-        switch (j.type) {
-            case JointType::Revolute: solveRevolute(j, p, ctx, useBias); break;
-            case JointType::Prismatic: solvePrismatic(j, p, ctx, useBias); break;
-            case JointType::Distance: solveDistance(j, p, ctx, useBias); break;
-            case JointType::Weld: solveWeld(j, p, ctx, useBias); break;
-            case JointType::Wheel: solveWheel(j, p, ctx, useBias); break;
-            case JointType::Motor: solveMotor(j, p, ctx, useBias); break;
-            case JointType::Mouse: solveMouse(j, p, ctx, useBias); break;
-        }
-    }
+    const Softness soft = rigidSoftness(ctx, useBias);
+    forEachJoint(
+        w, [&](RevoluteRows<Float4>& rows, JointPairT<Float4>& p) { solveRevolutePoint(rows, p, soft); },
+        [&](PreparedJoint& j, JointPair& p) {
+            switch (j.type) {
+                case JointType::Revolute: solveRevolute(j, p, ctx, useBias); break;
+                case JointType::Prismatic: solvePrismatic(j, p, ctx, useBias); break;
+                case JointType::Distance: solveDistance(j, p, ctx, useBias); break;
+                case JointType::Weld: solveWeld(j, p, ctx, useBias); break;
+                case JointType::Wheel: solveWheel(j, p, ctx, useBias); break;
+                case JointType::Motor: solveMotor(j, p, ctx, useBias); break;
+                case JointType::Mouse: solveMouse(j, p, ctx, useBias); break;
+            }
+        });
 }
 
 // The accumulated impulses go back to the joints, ready for the next step's warm start.
 void storeJointImpulses(World::Impl& w, const StepContext&) {
     JointStore& s = store(w);
-    for (size_t k = 0; k < s.active.size(); ++k) s.joints[s.active[k]].data = s.prepared[k].data;
+    for (const RevoluteBlock& block : s.revoluteBlocks) unpackRevoluteImpulses(block, s.joints);
+    for (int position : s.scalarOrder) s.joints[s.awake[position]].data = s.prepared[position].data;
 }
 
 bool jointAllowsCollision(const World::Impl& w, int bodyA, int bodyB) {

@@ -1,10 +1,10 @@
-// Revolute joint: B's anchor held on A's by two point rows (the 2x2 K of joint_rows.hpp), plus
-// on the angle θB − θA − θref an optional motor row and two one-sided limit rows, each with
-// effective mass 1/(1/IA + 1/IB).
+// Revolute joint: B's anchor held on A's by two point rows (the 2x2 K of joint_rows.hpp, shared
+// with the 4-wide blocks through joint_solver_wide.hpp), plus on the angle θB − θA − θref an
+// optional motor row and two one-sided limit rows, each with effective mass 1/(1/IA + 1/IB).
 #include <cmath>
 #include <memory>
 
-#include "core/joint_rows.hpp"
+#include "core/joint_solver_wide.hpp"
 #include "core/world_impl.hpp"
 
 namespace perpdot {
@@ -35,12 +35,7 @@ void prepareRevolute(PreparedJoint& j, const StepContext& ctx, Rot) {
     }
 }
 
-void warmStartRevolute(PreparedJoint& j, JointPair& p) {
-    const RevoluteJoint& r = j.data.revolute;
-    const JointFrame f = currentFrame(j, p);
-    applyPoint(p, f.rA, f.rB, r.linearImpulse);
-    applyRow(p, angularRow, r.motorImpulse + r.lowerImpulse - r.upperImpulse);
-}
+void warmStartRevolute(PreparedJoint& j, JointPair& p) { warmStartRevoluteRows(revoluteRows(j), p); }
 
 void solveRevolute(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool useBias) {
     RevoluteJoint& r = j.data.revolute;
@@ -51,8 +46,9 @@ void solveRevolute(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool 
         solveLimitRow(p, negated(angularRow), r.axialMass, r.upperAngle - angle, ctx, useBias, r.upperImpulse);
     }
     // Solved last so that the point, the stiffest part, wins.
-    const JointFrame f = currentFrame(j, p);
-    solvePointRows(p, f.rA, f.rB, f.d, rigidSoftness(ctx, useBias), r.linearImpulse);
+    RevoluteRows<float> point = revoluteRows(j);
+    solveRevolutePoint(point, p, rigidSoftness(ctx, useBias));
+    r.linearImpulse = point.linearImpulse;
 }
 
 JointReaction reactionRevolute(const Joint& j) {

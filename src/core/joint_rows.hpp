@@ -7,19 +7,28 @@
 #pragma once
 
 #include <algorithm>
-#include <limits>
 
 #include "core/joint_store.hpp"
 
 namespace perpdot {
 
-struct Row {
-    Vec2 n;
-    float sA = 0, sB = 0;
+// The helpers below are written over a lane type F (lanes.hpp): float for one joint, simd::Float4
+// for four joints of one graph colour (joint_solver_wide.hpp), with the same operations in the
+// same order, so a lane computes bit for bit what the scalar joint computes.
+template <class F>
+struct RowT {
+    Vec2T<F> n;
+    F sA{}, sB{};
 };
+using Row = RowT<float>;
 
 inline Row linearRow(Vec2 rA, Vec2 rB, Vec2 n) { return {n, perpDot(rA, n), perpDot(rB, n)}; }
-inline constexpr Row angularRow{{}, 1.0f, 1.0f};
+// The angular row ωB − ωA: n = 0, sA = sB = 1.
+template <class F>
+constexpr RowT<F> angularRowOf() {
+    return {{}, F(1.0f), F(1.0f)};
+}
+inline constexpr Row angularRow = angularRowOf<float>();
 inline Row negated(Row r) { return {-r.n, -r.sA, -r.sB}; }
 
 inline float effectiveMass(const JointMass& m, Row r) {
@@ -30,11 +39,12 @@ inline float effectiveMass(const JointMass& m, Row r) {
 inline float rowVelocity(const JointPair& p, Row r) { return dot(r.n, p.b.v - p.a.v) + r.sB * p.b.w - r.sA * p.a.w; }
 
 // λ along the row: B gets +λ, A gets −λ (vA −= λ n/mA, ωA −= λ sA/IA).
-inline void applyRow(JointPair& p, Row r, float impulse) {
-    p.a.v -= (p.m.mA * impulse) * r.n;
-    p.a.w -= p.m.iA * impulse * r.sA;
-    p.b.v += (p.m.mB * impulse) * r.n;
-    p.b.w += p.m.iB * impulse * r.sB;
+template <class F>
+inline void applyRow(JointPairT<F>& p, const RowT<F>& r, F impulse) {
+    p.a.v = p.a.v - (p.m.mA * impulse) * r.n;
+    p.a.w = p.a.w - p.m.iA * impulse * r.sA;
+    p.b.v = p.b.v + (p.m.mB * impulse) * r.n;
+    p.b.w = p.b.w + p.m.iB * impulse * r.sB;
 }
 
 // A rigid row is soft (the world's joint stiffness) in the biased pass and rigid, without bias,
@@ -70,44 +80,63 @@ inline void solveMotorRow(JointPair& p, Row r, float mass, float speed, float ma
 
 // --- Point rows: B's anchor held on A's, both directions at once. ---
 
-struct Mat22 {
-    Vec2 cx, cy;  // columns
+template <class F>
+struct Mat22T {
+    Vec2T<F> cx, cy;  // columns
 };
 
 // K = (1/mA + 1/mB)·𝟙 + perp(rA)perp(rA)ᵀ/IA + perp(rB)perp(rB)ᵀ/IB, so that uᵀKu is Hecker's
 // denominator along any unit u.
-inline Mat22 pointMass(const JointMass& m, Vec2 rA, Vec2 rB) {
-    const Vec2 pA = perp(rA), pB = perp(rB);
-    const float ms = m.mA + m.mB;
-    const float xy = m.iA * pA.x * pA.y + m.iB * pB.x * pB.y;
+template <class F>
+inline Mat22T<F> pointMass(const JointMassT<F>& m, Vec2T<F> rA, Vec2T<F> rB) {
+    const Vec2T<F> pA = perp(rA), pB = perp(rB);
+    const F ms = m.mA + m.mB;
+    const F xy = m.iA * pA.x * pA.y + m.iB * pB.x * pB.y;
     return {{ms + m.iA * pA.x * pA.x + m.iB * pB.x * pB.x, xy}, {xy, ms + m.iA * pA.y * pA.y + m.iB * pB.y * pB.y}};
 }
 
 // K⁻¹ b (zero when K is singular, e.g. both bodies static).
-inline Vec2 solve22(const Mat22& K, Vec2 b) {
-    float det = K.cx.x * K.cy.y - K.cy.x * K.cx.y;
-    if (det != 0.0f) det = 1.0f / det;
+template <class F>
+inline Vec2T<F> solve22(const Mat22T<F>& K, Vec2T<F> b) {
+    F det = K.cx.x * K.cy.y - K.cy.x * K.cx.y;
+    det = simd::select(det != F(0.0f), F(1.0f) / det, det);
     return {det * (K.cy.y * b.x - K.cy.x * b.y), det * (K.cx.x * b.y - K.cx.y * b.x)};
 }
 
-inline Vec2 relativeVelocity(const JointPair& p, Vec2 rA, Vec2 rB) {
+template <class F>
+inline Vec2T<F> relativeVelocity(const JointPairT<F>& p, Vec2T<F> rA, Vec2T<F> rB) {
     return pointVelocity(p.b.v, p.b.w, rB) - pointVelocity(p.a.v, p.a.w, rA);
 }
 
 // Impulse P at the anchors: B gets +P, A gets −P (ω changes by perpDot(r, P)/I).
-inline void applyPoint(JointPair& p, Vec2 rA, Vec2 rB, Vec2 P) {
-    p.a.v -= p.m.mA * P;
-    p.a.w -= p.m.iA * perpDot(rA, P);
-    p.b.v += p.m.mB * P;
-    p.b.w += p.m.iB * perpDot(rB, P);
+template <class F>
+inline void applyPoint(JointPairT<F>& p, Vec2T<F> rA, Vec2T<F> rB, Vec2T<F> P) {
+    p.a.v = p.a.v - p.m.mA * P;
+    p.a.w = p.a.w - p.m.iA * perpDot(rA, P);
+    p.b.v = p.b.v + p.m.mB * P;
+    p.b.w = p.b.w + p.m.iB * perpDot(rB, P);
 }
 
-// Δλ = −massScale·K⁻¹(v_rel + biasRate·C) − impulseScale·λ for the point constraint C = pB − pA,
-// with the accumulated |λ| capped at maxImpulse (motor and mouse joints).
-inline void solvePointRows(JointPair& p, Vec2 rA, Vec2 rB, Vec2 C, const Softness& soft, Vec2& lambda,
-                           float maxImpulse = std::numeric_limits<float>::infinity()) {
-    const Vec2 b = solve22(pointMass(p.m, rA, rB), relativeVelocity(p, rA, rB) + soft.biasRate * C);
-    Vec2 newLambda = lambda - soft.massScale * b - soft.impulseScale * lambda;
+// The accumulated impulse after one pass of the point constraint C = pB − pA:
+// λ − massScale·K⁻¹(v_rel + biasRate·C) − impulseScale·λ.
+template <class F>
+inline Vec2T<F> pointImpulse(const JointPairT<F>& p, Vec2T<F> rA, Vec2T<F> rB, Vec2T<F> C, const Softness& soft,
+                             Vec2T<F> lambda) {
+    const Vec2T<F> b = solve22(pointMass(p.m, rA, rB), relativeVelocity(p, rA, rB) + F(soft.biasRate) * C);
+    return lambda - F(soft.massScale) * b - F(soft.impulseScale) * lambda;
+}
+
+// One pass of the point rows: λ becomes pointImpulse, and the bodies take the difference.
+template <class F>
+inline void solvePointRows(JointPairT<F>& p, Vec2T<F> rA, Vec2T<F> rB, Vec2T<F> C, const Softness& soft, Vec2T<F>& lambda) {
+    const Vec2T<F> newLambda = pointImpulse(p, rA, rB, C, soft, lambda);
+    applyPoint(p, rA, rB, newLambda - lambda);
+    lambda = newLambda;
+}
+
+// The same with the accumulated |λ| capped at maxImpulse (motor and mouse joints).
+inline void solvePointRows(JointPair& p, Vec2 rA, Vec2 rB, Vec2 C, const Softness& soft, Vec2& lambda, float maxImpulse) {
+    Vec2 newLambda = pointImpulse(p, rA, rB, C, soft, lambda);
     if (lengthSquared(newLambda) > maxImpulse * maxImpulse) newLambda *= maxImpulse / length(newLambda);
     applyPoint(p, rA, rB, newLambda - lambda);
     lambda = newLambda;
@@ -125,7 +154,7 @@ inline void solveRowPair(JointPair& p, Row r1, Row r2, Vec2 C, const Softness& s
     if (k11 == 0.0f) k11 = 1.0f;
     if (k22 == 0.0f) k22 = 1.0f;
     const Vec2 v{rowVelocity(p, r1), rowVelocity(p, r2)};
-    const Vec2 b = solve22({{k11, k12}, {k12, k22}}, v + soft.biasRate * C);
+    const Vec2 b = solve22<float>({{k11, k12}, {k12, k22}}, v + soft.biasRate * C);
     const Vec2 impulse = -soft.massScale * b - soft.impulseScale * lambda;
     lambda += impulse;
     applyRow(p, r1, impulse.x);
@@ -135,13 +164,20 @@ inline void solveRowPair(JointPair& p, Row r1, Row r2, Vec2 C, const Softness& s
 // --- Geometry inside a substep ---
 
 // The anchors now: r = rotate(Δq, r0), and d = pB − pA = (ΔpB − ΔpA) + (cB − cA)₀ + rB − rA.
-struct JointFrame {
-    Vec2 rA, rB, d;
+template <class F>
+struct JointFrameT {
+    Vec2T<F> rA, rB, d;
 };
+using JointFrame = JointFrameT<float>;
+
+template <class F>
+inline JointFrameT<F> currentFrame(const JointPairT<F>& p, Vec2T<F> anchorA, Vec2T<F> anchorB, Vec2T<F> deltaCenter) {
+    const Vec2T<F> rA = rotate(p.a.dq, anchorA), rB = rotate(p.b.dq, anchorB);
+    return {rA, rB, (p.b.dp - p.a.dp) + deltaCenter + (rB - rA)};
+}
 
 inline JointFrame currentFrame(const PreparedJoint& j, const JointPair& p) {
-    const Vec2 rA = rotate(p.a.dq, j.anchorA), rB = rotate(p.b.dq, j.anchorB);
-    return {rA, rB, (p.b.dp - p.a.dp) + j.deltaCenter + (rB - rA)};
+    return currentFrame(p, j.anchorA, j.anchorB, j.deltaCenter);
 }
 
 // The joint angle now: θB − θA − referenceAngle.

@@ -17,18 +17,23 @@
 
 namespace perpdot {
 
-// Inverse masses and inverse rotational inertias of the joint's two bodies.
-struct JointMass {
-    float mA = 0, iA = 0, mB = 0, iB = 0;
+// Inverse masses and inverse rotational inertias of the joint's two bodies, over a lane type F
+// (lanes.hpp): float for one joint, simd::Float4 for four.
+template <class F>
+struct JointMassT {
+    F mA{}, iA{}, mB{}, iB{};
 };
+using JointMass = JointMassT<float>;
 
 // The two bodies of a joint inside one substep.
-struct JointPair {
-    BodyState& a;
-    BodyState& b;
-    JointMass m;
-    float rotation = 0;  // (θB − θA) turned since the step began
+template <class F>
+struct JointPairT {
+    BodyLanes<F>& a;
+    BodyLanes<F>& b;
+    JointMassT<F> m;
+    F rotation{};  // (θB − θA) turned since the step began
 };
+using JointPair = JointPairT<float>;
 
 struct RevoluteJoint {
     bool enableLimit = false, enableMotor = false;
@@ -136,16 +141,24 @@ struct PreparedJoint {
     JointData data;
 };
 
+struct RevoluteBlock;  // four revolute joints in SIMD lanes (joint_solver_wide.hpp)
+
 struct JointStore {
     std::vector<Joint> joints;
     std::vector<int> freeList;
     std::vector<int> bodyHead;           // by body index: first edge key of its joint list, -1 if none
-    std::vector<int> active;             // joints prepared this step: active[k] is prepared[k]'s index
+    // The step's awake joints, prepared in store order: prepared[k] is joints[awake[k]].
+    std::vector<int> awake;
     std::vector<PreparedJoint> prepared;
+    // The passes' order, colour by colour: colour c is revoluteBlocks[blockStart[c] .. blockStart[c + 1])
+    // four at a time, then prepared[scalarOrder[k]] for k in [scalarStart[c], scalarStart[c + 1])
+    // one at a time (the other joints, and every joint no colour could take).
+    std::vector<RevoluteBlock> revoluteBlocks;
+    std::vector<int> scalarOrder;
+    ColorStarts blockStart{}, scalarStart{};
     // Scratch of prepareJoints, kept to reuse its memory.
     GraphColoring coloring;
-    std::vector<int> colored;  // active joints in store order, with their colours in `colors`
-    std::vector<int> colors;
+    std::vector<int> colors;  // of prepared[k]
     float invHs = 0;                     // of the last step, for reaction forces
 };
 

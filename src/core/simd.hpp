@@ -1,18 +1,18 @@
-// Float4: four float lanes for the wide contact solver. SSE2 on x86-64; elsewhere, or when
+// Float4: four float lanes for the wide contact and joint solvers. SSE2 on x86-64; elsewhere, or when
 // PERPDOT_NO_SIMD is defined, a plain struct of four floats with the same semantics.
 //
-// Only exactly rounded IEEE operations are offered (+, −, ×, negation, min, max, compare and
-// select: what the contact rows use): no FMA and no approximate reciprocal, so every lane computes
+// Only exactly rounded IEEE operations are offered (+, −, ×, ÷, negation, min, max, compare and
+// select: what the contact and joint rows use): no FMA and no approximate reciprocal, so every lane computes
 // bit for bit what the scalar `float` code computes. The float overloads of min, max and select below give the scalar
 // (1-lane) case the very same semantics, so one template serves both.
 #pragma once
 
-#include <cstddef>
-#include <cstring>
-
 #if !defined(PERPDOT_NO_SIMD) && (defined(__SSE2__) || defined(_M_X64))
 #define PERPDOT_SSE2 1
 #include <emmintrin.h>
+#else
+#include <cstring>
+#include <utility>
 #endif
 
 namespace perpdot::simd {
@@ -35,17 +35,20 @@ struct Float4 {
     Float4() : v(_mm_setzero_ps()) {}
     Float4(float s) : v(_mm_set1_ps(s)) {}  // implicit: a float broadcasts, so it mixes with lanes like a scalar
     explicit Float4(__m128 m) : v(m) {}
-
     static Float4 load(const float* p) { return Float4(_mm_loadu_ps(p)); }
+    // Four consecutive floats of a struct's storage, e.g. of a body's state.
+    static Float4 loadBytes(const void* p) { return Float4(_mm_loadu_ps(static_cast<const float*>(p))); }
     void store(float* p) const { _mm_storeu_ps(p, v); }
 
     friend Float4 operator+(Float4 a, Float4 b) { return Float4(_mm_add_ps(a.v, b.v)); }
     friend Float4 operator-(Float4 a, Float4 b) { return Float4(_mm_sub_ps(a.v, b.v)); }
     friend Float4 operator*(Float4 a, Float4 b) { return Float4(_mm_mul_ps(a.v, b.v)); }
+    friend Float4 operator/(Float4 a, Float4 b) { return Float4(_mm_div_ps(a.v, b.v)); }
     friend Float4 operator-(Float4 a) { return Float4(_mm_xor_ps(a.v, _mm_set1_ps(-0.0f))); }  // flips the sign bit, as -x does
     Float4& operator+=(Float4 b) { return *this = *this + b; }
 
     friend Mask4 operator>(Float4 a, Float4 b) { return {_mm_cmpgt_ps(a.v, b.v)}; }
+    friend Mask4 operator!=(Float4 a, Float4 b) { return {_mm_cmpneq_ps(a.v, b.v)}; }
 };
 
 inline Float4 min(Float4 a, Float4 b) { return Float4(_mm_min_ps(a.v, b.v)); }
@@ -54,13 +57,8 @@ inline Float4 select(Mask4 mask, Float4 ifTrue, Float4 ifFalse) {
     return Float4(_mm_or_ps(_mm_and_ps(mask.m, ifTrue.v), _mm_andnot_ps(mask.m, ifFalse.v)));
 }
 
-// Four rows of four floats, each at rows[i] + offset bytes, as lanes: out[j] lane i = row i's float j.
-inline void transposeLoad(const std::byte* const rows[4], std::size_t offset, Float4 out[4]) {
-    __m128 r[4];
-    for (int i = 0; i < 4; ++i) r[i] = _mm_loadu_ps(reinterpret_cast<const float*>(rows[i] + offset));
-    _MM_TRANSPOSE4_PS(r[0], r[1], r[2], r[3]);
-    for (int j = 0; j < 4; ++j) out[j] = Float4(r[j]);
-}
+// Rows to columns: afterwards lane i of m[j] is what lane j of m[i] was.
+inline void transpose(Float4 (&m)[4]) { _MM_TRANSPOSE4_PS(m[0].v, m[1].v, m[2].v, m[3].v); }
 
 #else  // the portable fallback: the same operations lane by lane
 
@@ -77,6 +75,12 @@ struct Float4 {
     static Float4 load(const float* p) {
         Float4 r;
         for (int i = 0; i < 4; ++i) r.v[i] = p[i];
+        return r;
+    }
+    // Four consecutive floats of a struct's storage, e.g. of a body's state.
+    static Float4 loadBytes(const void* p) {
+        Float4 r;
+        std::memcpy(r.v, p, sizeof r.v);
         return r;
     }
     void store(float* p) const {
@@ -99,10 +103,12 @@ struct Float4 {
     friend Float4 operator+(Float4 a, Float4 b) { return lanewise(a, b, [](float x, float y) { return x + y; }); }
     friend Float4 operator-(Float4 a, Float4 b) { return lanewise(a, b, [](float x, float y) { return x - y; }); }
     friend Float4 operator*(Float4 a, Float4 b) { return lanewise(a, b, [](float x, float y) { return x * y; }); }
+    friend Float4 operator/(Float4 a, Float4 b) { return lanewise(a, b, [](float x, float y) { return x / y; }); }
     friend Float4 operator-(Float4 a) { return lanewise(a, a, [](float x, float) { return -x; }); }
     Float4& operator+=(Float4 b) { return *this = *this + b; }
 
     friend Mask4 operator>(Float4 a, Float4 b) { return compare(a, b, [](float x, float y) { return x > y; }); }
+    friend Mask4 operator!=(Float4 a, Float4 b) { return compare(a, b, [](float x, float y) { return x != y; }); }
 };
 
 inline Float4 min(Float4 a, Float4 b) { return Float4::lanewise(a, b, [](float x, float y) { return min(x, y); }); }
@@ -113,12 +119,10 @@ inline Float4 select(Mask4 mask, Float4 ifTrue, Float4 ifFalse) {
     return r;
 }
 
-inline void transposeLoad(const std::byte* const rows[4], std::size_t offset, Float4 out[4]) {
-    for (int i = 0; i < 4; ++i) {
-        float row[4];
-        std::memcpy(row, rows[i] + offset, sizeof row);
-        for (int j = 0; j < 4; ++j) out[j].v[i] = row[j];
-    }
+// Rows to columns: afterwards lane i of m[j] is what lane j of m[i] was.
+inline void transpose(Float4 (&m)[4]) {
+    for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j) std::swap(m[i].v[j], m[j].v[i]);
 }
 
 #endif

@@ -1,0 +1,47 @@
+// The state of four solver bodies as simd::Float4 lanes, for the rows that solve four
+// constraints of one graph colour at once (contacts: contact_solver_wide.hpp, revolute joints:
+// joint_solver_wide.hpp). No two lanes hold the same dynamic body, so the lanes can be written
+// back in any order.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "core/step_context.hpp"
+
+namespace perpdot {
+
+static_assert(sizeof(BodyState) == 7 * sizeof(float) && offsetof(BodyState, dp) == 3 * sizeof(float),
+              "a body's state is the floats v.x, v.y, ω, Δp.x, Δp.y, Δq.c, Δq.s");
+
+// v, ω, Δp and Δq of the bodies in four solver slots: each body's (v.x, v.y, ω, Δp.x) and
+// (Δp.x, Δp.y, Δq.c, Δq.s) as a row, then rows turned into lanes.
+inline BodyLanes<simd::Float4> gatherBodies(const std::vector<BodyState>& states, const int (&slots)[4]) {
+    using simd::Float4;
+    Float4 head[4], tail[4];
+    for (int i = 0; i < 4; ++i) {
+        const BodyState& s = states[slots[i]];
+        head[i] = Float4::loadBytes(&s);
+        tail[i] = Float4::loadBytes(&s.dp);
+    }
+    simd::transpose(head);
+    simd::transpose(tail);
+    return {{head[0], head[1]}, head[2], {tail[0], tail[1]}, {tail[2], tail[3]}};
+}
+
+// Write back the velocities the rows changed (Δp and Δq are the integrator's). The static slot 0
+// is skipped: lanes share it and it never moves.
+inline void scatterVelocities(std::vector<BodyState>& states, const int (&slots)[4], const BodyLanes<simd::Float4>& lanes) {
+    float vx[4], vy[4], w[4];
+    lanes.v.x.store(vx);
+    lanes.v.y.store(vy);
+    lanes.w.store(w);
+    for (int i = 0; i < 4; ++i) {
+        if (slots[i] == 0) continue;
+        BodyState& s = states[slots[i]];
+        s.v = {vx[i], vy[i]};
+        s.w = w[i];
+    }
+}
+
+}  // namespace perpdot
