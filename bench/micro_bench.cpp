@@ -56,7 +56,7 @@ void BM_BroadphaseUpdate(benchmark::State& state) {
     for (int i = 0; i < count; ++i) {
         collision.setGeometry(i, makeBox(0.5f, 0.5f));
         xf[i] = {{static_cast<float>(i % 100) * 1.1f, static_cast<float>(i / 100) * 1.1f}, {}};
-        proxies.push_back(collision.createProxy(collision.computeAABB(i, 0, xf[i]), {i, 0}));
+        proxies.push_back(collision.createProxy(collision.computeAABB(i, 0, xf[i]), {i, 0}, false));
     }
     float sign = 1.0f;
     for (auto _ : state) {

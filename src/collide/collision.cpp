@@ -83,6 +83,8 @@ int rank(ShapeType t) {
 struct CollisionSystem::Impl {
     std::vector<Geometry> geometry;  // by shape index
     b2DynamicTree tree;
+    b2DynamicTree staticTree;         // static proxies again; a leaf's user data is its proxy id in `tree`
+    std::vector<int> staticLeaf;      // by proxy id: its leaf in staticTree, or -1
 
     Geometry& slot(int shape) {
         if (static_cast<size_t>(shape) >= geometry.size()) geometry.resize(shape + 1);
@@ -136,17 +138,25 @@ AABB CollisionSystem::computeAABB(int shape, int child, const Transform& xf) con
 bool CollisionSystem::canCollide(ShapeType a, ShapeType b) { return rank(a) < 2 || rank(b) < 2; }
 bool CollisionSystem::mustSwap(ShapeType a, ShapeType b) { return rank(a) < rank(b); }
 
-int CollisionSystem::createProxy(const AABB& aabb, ChildKey key) {
-    b2AABB box{toB2(aabb.lower), toB2(aabb.upper)};
+int CollisionSystem::createProxy(const AABB& aabb, ChildKey key, bool isStatic) {
+    const b2AABB box{toB2(aabb.lower), toB2(aabb.upper)};
     // userData packs the child key: shape in the high 32 bits, child in the low.
     const uint64_t packed = (static_cast<uint64_t>(static_cast<uint32_t>(key.shape)) << 32) | static_cast<uint32_t>(key.child);
-    return impl_->tree.CreateProxy(box, reinterpret_cast<void*>(static_cast<uintptr_t>(packed)));
+    const int proxy = impl_->tree.CreateProxy(box, reinterpret_cast<void*>(static_cast<uintptr_t>(packed)));
+    if (static_cast<size_t>(proxy) >= impl_->staticLeaf.size()) impl_->staticLeaf.resize(proxy + 1, -1);
+    impl_->staticLeaf[proxy] = isStatic ? impl_->staticTree.CreateProxy(box, reinterpret_cast<void*>(static_cast<uintptr_t>(proxy))) : -1;
+    return proxy;
 }
 
-void CollisionSystem::destroyProxy(int proxy) { impl_->tree.DestroyProxy(proxy); }
+void CollisionSystem::destroyProxy(int proxy) {
+    if (const int leaf = impl_->staticLeaf[proxy]; leaf >= 0) impl_->staticTree.DestroyProxy(leaf);
+    impl_->staticLeaf[proxy] = -1;
+    impl_->tree.DestroyProxy(proxy);
+}
 
 bool CollisionSystem::moveProxy(int proxy, const AABB& aabb, Vec2 displacement) {
-    b2AABB box{toB2(aabb.lower), toB2(aabb.upper)};
+    const b2AABB box{toB2(aabb.lower), toB2(aabb.upper)};
+    if (const int leaf = impl_->staticLeaf[proxy]; leaf >= 0) impl_->staticTree.MoveProxy(leaf, box, toB2(displacement));
     return impl_->tree.MoveProxy(proxy, box, toB2(displacement));
 }
 
@@ -158,9 +168,11 @@ AABB CollisionSystem::fatAABB(int proxy) const {
 // The tree fattens what it is given, so insert `fat` itself (every ancestor then contains the
 // fattened box, hence `fat`) and set the leaf's own box to `fat`. GetFatAABB returns a const
 // reference to that box in the tree's (non-const) node storage, so writing through it is defined.
-int CollisionSystem::restoreProxy(const AABB& fat, ChildKey key) {
-    const int proxy = createProxy(fat, key);
-    const_cast<b2AABB&>(impl_->tree.GetFatAABB(proxy)) = b2AABB{toB2(fat.lower), toB2(fat.upper)};
+int CollisionSystem::restoreProxy(const AABB& fat, ChildKey key, bool isStatic) {
+    const int proxy = createProxy(fat, key, isStatic);
+    const b2AABB box{toB2(fat.lower), toB2(fat.upper)};
+    const_cast<b2AABB&>(impl_->tree.GetFatAABB(proxy)) = box;
+    if (const int leaf = impl_->staticLeaf[proxy]; leaf >= 0) const_cast<b2AABB&>(impl_->staticTree.GetFatAABB(leaf)) = box;
     return proxy;
 }
 
@@ -181,7 +193,22 @@ void CollisionSystem::queryImpl(const AABB& aabb, void* context, bool (*visit)(v
     impl_->tree.Query(&callback, b2AABB{toB2(aabb.lower), toB2(aabb.upper)});
 }
 
-void CollisionSystem::shiftOrigin(Vec2 newOrigin) { impl_->tree.ShiftOrigin(toB2(newOrigin)); }
+void CollisionSystem::queryStaticImpl(const AABB& aabb, void* context, bool (*visit)(void*, int)) const {
+    struct Callback {
+        const b2DynamicTree& staticTree;
+        void* context;
+        bool (*visit)(void*, int);
+        bool QueryCallback(int32 leaf) {
+            return visit(context, static_cast<int>(reinterpret_cast<uintptr_t>(staticTree.GetUserData(leaf))));
+        }
+    } callback{impl_->staticTree, context, visit};
+    impl_->staticTree.Query(&callback, b2AABB{toB2(aabb.lower), toB2(aabb.upper)});
+}
+
+void CollisionSystem::shiftOrigin(Vec2 newOrigin) {
+    impl_->tree.ShiftOrigin(toB2(newOrigin));
+    impl_->staticTree.ShiftOrigin(toB2(newOrigin));
+}
 
 Manifold CollisionSystem::collide(ChildKey a, const Transform& xfA, ChildKey b, const Transform& xfB) const {
     const Geometry& ga = impl_->geometry[a.shape];

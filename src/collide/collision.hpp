@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <type_traits>
 
 #include "perpdot/math.hpp"
 #include "perpdot/shapes.hpp"
@@ -63,21 +64,30 @@ public:
     // Whether narrowphase has a routine for this pair of shape types (segments and chains never meet).
     static bool canCollide(ShapeType a, ShapeType b);
 
-    // Broadphase: proxies carry their child key; the tree keeps a fattened AABB per proxy.
-    int createProxy(const AABB& aabb, ChildKey key);
+    // Broadphase: proxies carry their child key; the tree keeps a fattened AABB per proxy. A
+    // static shape's proxy is mirrored in a second tree of static proxies only (Box2D v3 keeps
+    // static shapes in a tree of their own), so continuous collision searches only those.
+    int createProxy(const AABB& aabb, ChildKey key, bool isStatic);
     void destroyProxy(int proxy);
     // Re-fits the proxy if `aabb` left its fat AABB; returns whether it moved.
     bool moveProxy(int proxy, const AABB& aabb, Vec2 displacement);
     AABB fatAABB(int proxy) const;
     // A new proxy whose fat AABB is exactly `fat` (a snapshot's), marked as moved like createProxy's.
-    int restoreProxy(const AABB& fat, ChildKey key);
+    int restoreProxy(const AABB& fat, ChildKey key, bool isStatic);
     bool wasMoved(int proxy) const;
     void clearMoved(int proxy);
     ChildKey proxyKey(int proxy) const;
     // Calls visit(proxy) for every proxy whose fat AABB overlaps `aabb`; visit returns false to stop.
     template <class Visit>
     void query(const AABB& aabb, Visit&& visit) const {
-        queryImpl(aabb, &visit, [](void* v, int proxy) { return (*static_cast<Visit*>(v))(proxy); });
+        using V = std::remove_reference_t<Visit>;
+        queryImpl(aabb, &visit, [](void* v, int proxy) { return (*static_cast<V*>(v))(proxy); });
+    }
+    // The same over the static proxies only (visit gets the proxy id, as from query).
+    template <class Visit>
+    void queryStatic(const AABB& aabb, Visit&& visit) const {
+        using V = std::remove_reference_t<Visit>;
+        queryStaticImpl(aabb, &visit, [](void* v, int proxy) { return (*static_cast<V*>(v))(proxy); });
     }
     void shiftOrigin(Vec2 newOrigin);
 
@@ -118,6 +128,7 @@ public:
 
 private:
     void queryImpl(const AABB& aabb, void* context, bool (*visit)(void*, int)) const;
+    void queryStaticImpl(const AABB& aabb, void* context, bool (*visit)(void*, int)) const;
     void rayCastImpl(Vec2 p1, Vec2 p2, void* context, float (*visit)(void*, int, float)) const;
     struct Impl;
     std::unique_ptr<Impl> impl_;

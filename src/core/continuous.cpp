@@ -86,7 +86,8 @@ void World::Impl::solveContinuous(int index, Vec2 c0, float a0) {
         const ShapeData& shape = shapes[s];
         if (!sweeps(shape)) continue;
         const AABB start = collision.computeAABB(s, 0, xf0), end = collision.computeAABB(s, 0, b.xf);
-        collision.query(combine(start, end), [&](int proxy) {
+        // Bullets sweep against every body; others only against static shapes, in their own tree.
+        auto sweepAgainst = [&](int proxy) {
             const collide::ChildKey key = collision.proxyKey(proxy);
             const ShapeData& other = shapes[key.shape];
             const Body& ob = bodies[other.body];
@@ -112,7 +113,9 @@ void World::Impl::solveContinuous(int index, Vec2 c0, float a0) {
                 toi = collision.coreTimeOfImpact(s, 0.25f * shape.minExtent, sweep, key, still);
             if (toi > 0.0f && toi < t) t = toi;
             return true;
-        });
+        };
+        if (b.bullet) collision.query(combine(start, end), sweepAgainst);
+        else collision.queryStatic(combine(start, end), sweepAgainst);
     }
     if (t >= 1.0f) return;
     // Back to the pose at the time of impact: c = c0 + t (c1 - c0), θ = θ0 + t (θ1 - θ0).

@@ -123,10 +123,11 @@ void World::Impl::createProxies(int index) {
     ShapeData& s = shapes[index];
     s.type = static_cast<ShapeType>(s.geometry.index());
     const Transform& xf = bodies[s.body].xf;
+    const bool isStatic = bodies[s.body].type == BodyType::Static;
     const int children = collision.childCount(index);
     s.proxies.resize(children);
     for (int child = 0; child < children; ++child) {
-        s.proxies[child] = collision.createProxy(collision.computeAABB(index, child, xf), {index, child});
+        s.proxies[child] = collision.createProxy(collision.computeAABB(index, child, xf), {index, child}, isStatic);
         movedProxies.push_back(s.proxies[child]);
     }
 }

@@ -432,7 +432,8 @@ void World::restore(std::span<const uint8_t> bytes) {
         std::visit([&](const auto& g) { w.collision.setGeometry(i, g); }, s.geometry);
         if (w.collision.childCount(i) != static_cast<int>(savedProxies[i].size())) in.fail("proxy count does not match the shape");
         for (int child = 0; child < static_cast<int>(savedProxies[i].size()); ++child)
-            s.proxies.push_back(w.collision.restoreProxy(savedProxies[i][child], {i, child}));
+            s.proxies.push_back(w.collision.restoreProxy(savedProxies[i][child], {i, child},
+                                                         w.bodies[s.body].type == BodyType::Static));
     }
     for (const collide::ChildKey& key : moved) w.movedProxies.push_back(w.shapes[key.shape].proxies[key.child]);
     std::unordered_set<int> movedSet(w.movedProxies.begin(), w.movedProxies.end());
