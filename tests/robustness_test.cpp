@@ -210,6 +210,20 @@ TEST(Numerics, ShapesWhoseMassOverflowsOrThatAreSliversAreRefused) {
     EXPECT_THROW(makePolygon(sliver), Error);
 }
 
+TEST(Numerics, ShapeCoordinatesBeyondTheHugeLimitAreRefused) {
+    // A fuzzed snapshot held a segment reaching 7e19 m, which made b2TimeOfImpact assert
+    // (tests/fuzz/findings/ccd-toi-assert-huge-segment.bin): every shape must stay within ±1e5 m.
+    World world;
+    const BodyId ground = world.createBody({});
+    const float huge = maxShapeCoordinate, beyond = 2.0f * maxShapeCoordinate;
+    EXPECT_NO_THROW(world.createShape(ground, {}, Segment{{-huge, 0}, {huge, 0}}));
+    EXPECT_THROW(world.createShape(ground, {}, Segment{{0, 0}, {0, beyond}}), Error);
+    EXPECT_THROW(world.createShape(ground, {}, Chain{{{0, 0}, {1, 0}, {beyond, 1}}}), Error);
+    EXPECT_THROW(world.createShape(ground, {}, Circle{{beyond, 0}, 1.0f}), Error);
+    const Vec2 far[3] = {{beyond, 0}, {beyond + 1, 0}, {beyond, 1}};
+    EXPECT_THROW(makePolygon(far), Error);
+}
+
 TEST(Numerics, LinearSpeedIsClampedToTheWorldLimit) {
     World world({.gravity = {0, 0}, .maxLinearSpeed = 100.0f});
     const BodyId fast = world.createBody({.type = BodyType::Dynamic, .linearVelocity = {300, 400}});

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -11,6 +12,10 @@
 namespace perpdot {
 
 inline constexpr int maxPolygonVertices = 8;
+// Shape coordinates (in the body frame) must lie within ±maxShapeCoordinate metres, Box2D v3's
+// "huge": beyond it a float keeps no millimetres and Box2D's distance routines break down.
+inline constexpr float maxShapeCoordinate = 1.0e5f;
+inline bool withinShapeRange(Vec2 v) { return std::fabs(v.x) <= maxShapeCoordinate && std::fabs(v.y) <= maxShapeCoordinate; }
 
 enum class ShapeType : uint8_t { Circle, Polygon, Segment, Chain };
 

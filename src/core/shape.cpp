@@ -21,6 +21,7 @@ void validate(const ShapeDef& def) {
 
 void validateGeometry(const Circle& c) {
     if (!isFinite(c.center)) throw Error("circle center must be finite");
+    if (!withinShapeRange(c.center)) throw Error("circle center is more than 100000 m from the body origin");
     if (!(std::isfinite(c.radius) && c.radius > 0.0f)) throw Error("circle radius must be finite and > 0");
 }
 
@@ -31,6 +32,7 @@ void validateGeometry(const Polygon& p) {
 
 void validateGeometry(const Segment& s) {
     if (!isFinite(s.v1) || !isFinite(s.v2)) throw Error("segment vertices must be finite");
+    if (!withinShapeRange(s.v1) || !withinShapeRange(s.v2)) throw Error("segment vertex is more than 100000 m from the body origin");
     if (distance(s.v1, s.v2) < collide::linearSlop) throw Error("segment is shorter than the linear slop (0.005 m)");
 }
 
@@ -39,6 +41,7 @@ void validateGeometry(const Chain& c) {
     if (c.vertices.size() < minimum) throw Error("chain needs at least " + std::to_string(minimum) + " vertices");
     for (size_t i = 0; i < c.vertices.size(); ++i) {
         if (!isFinite(c.vertices[i])) throw Error("chain vertex " + std::to_string(i) + " is not finite");
+        if (!withinShapeRange(c.vertices[i])) throw Error("chain vertex " + std::to_string(i) + " is more than 100000 m from the body origin");
         if (i > 0 && distance(c.vertices[i - 1], c.vertices[i]) < collide::linearSlop)
             throw Error("chain vertices " + std::to_string(i - 1) + " and " + std::to_string(i) + " are too close");
     }

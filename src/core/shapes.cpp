@@ -33,6 +33,7 @@ Polygon makePolygon(std::span<const Vec2> points, float radius) {
     poly.radius = radius;
     for (int i = 0; i < n; ++i) {
         if (!isFinite(points[i])) throw Error("polygon vertex " + std::to_string(i) + " is not finite");
+        if (!withinShapeRange(points[i])) throw Error("polygon vertex " + std::to_string(i) + " is more than 100000 m from the body origin");
         poly.vertices[i] = points[i];
     }
     // Normalise to counter-clockwise winding.
