@@ -4,22 +4,17 @@
 #include <gtest/gtest.h>
 
 #include <array>
-#include <bit>
-#include <cstdint>
 #include <vector>
 
 #include "core/contact_solver_wide.hpp"
+#include "lanes_helpers.hpp"
 
 namespace perpdot {
 namespace {
 
-struct Random {
-    uint32_t x = 987654321u;
-    float operator()(float lo, float hi) {
-        x = x * 1664525u + 1013904223u;
-        return lo + (hi - lo) * static_cast<float>(x >> 8) / 16777216.0f;
-    }
-};
+using lanes_test::Random;
+using lanes_test::randomBody;
+using lanes_test::sameBits;
 
 ContactRows<float> randomRows(Random& r, int pointCount, bool rolling) {
     ContactRows<float> c;
@@ -49,17 +44,10 @@ ContactRows<float> randomRows(Random& r, int pointCount, bool rolling) {
     return c;
 }
 
-BodyState randomBody(Random& r) {
-    const float angle = r(-0.1f, 0.1f);
-    return {{r(-2.0f, 2.0f), r(-2.0f, 2.0f)}, r(-3.0f, 3.0f), {r(-0.1f, 0.1f), r(-0.1f, 0.1f)}, Rot::fromAngle(angle)};
-}
-
-bool sameBits(float a, float b) { return std::bit_cast<uint32_t>(a) == std::bit_cast<uint32_t>(b); }
-
 TEST(ContactSolverWide, FourLanesEqualFourScalarSolves) {
     StepContext ctx;
     ctx.invHs = 240.0f;
-    Random r;
+    Random r{987654321u};
     for (int round = 0; round < 50; ++round) {
         // Lanes: a two-point manifold, a one-point one with rolling resistance, one against the
         // static slot 0, and an empty lane (round % 2) or another two-point manifold.

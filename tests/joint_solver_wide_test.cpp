@@ -5,22 +5,17 @@
 #include <gtest/gtest.h>
 
 #include <array>
-#include <bit>
-#include <cstdint>
 #include <vector>
 
 #include "core/joint_solver_wide.hpp"
+#include "lanes_helpers.hpp"
 
 namespace perpdot {
 namespace {
 
-struct Random {
-    uint32_t x = 123456789u;
-    float operator()(float lo, float hi) {
-        x = x * 1664525u + 1013904223u;
-        return lo + (hi - lo) * static_cast<float>(x >> 8) / 16777216.0f;
-    }
-};
+using lanes_test::Random;
+using lanes_test::randomBody;
+using lanes_test::sameBits;
 
 // A revolute joint without motor or limit, prepared between solver slots a and b.
 PreparedJoint randomJoint(Random& r, int a, int b) {
@@ -36,17 +31,10 @@ PreparedJoint randomJoint(Random& r, int a, int b) {
     return j;
 }
 
-BodyState randomBody(Random& r) {
-    const float angle = r(-0.1f, 0.1f);
-    return {{r(-2.0f, 2.0f), r(-2.0f, 2.0f)}, r(-3.0f, 3.0f), {r(-0.1f, 0.1f), r(-0.1f, 0.1f)}, Rot::fromAngle(angle)};
-}
-
-bool sameBits(float a, float b) { return std::bit_cast<uint32_t>(a) == std::bit_cast<uint32_t>(b); }
-
 TEST(JointSolverWide, FourLanesEqualFourScalarSolves) {
     StepContext ctx;
     ctx.jointSoftness = makeSoftness(60.0f, 5.0f, 1.0f / 240.0f);
-    Random r;
+    Random r{123456789u};
     for (int round = 0; round < 50; ++round) {
         // Lanes: two joints between moving bodies, one whose body A is static (slot 0, no mass),
         // and an empty lane (round % 2 == 0: joint -1, slots 0, no mass) or a fourth joint.
