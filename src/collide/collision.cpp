@@ -1,12 +1,12 @@
 // Box2D 2.4.1 behind collide::CollisionSystem: b2Shape geometry, b2DynamicTree, b2Collide*.
 #include "collide/collision.hpp"
+#include "collide/time_of_impact.hpp"
 
 #include <box2d/b2_circle_shape.h>
 #include <box2d/b2_collision.h>
 #include <box2d/b2_dynamic_tree.h>
 #include <box2d/b2_edge_shape.h>
 #include <box2d/b2_polygon_shape.h>
-#include <box2d/b2_time_of_impact.h>
 
 #include <algorithm>
 #include <cmath>
@@ -294,69 +294,16 @@ void CollisionSystem::rayCastImpl(Vec2 p1, Vec2 p2, void* context, float (*visit
         float (*visit)(void*, int, float);
         float RayCastCallback(const b2RayCastInput& input, int32 proxy) { return visit(context, proxy, input.maxFraction); }
     } callback{context, visit};
+    // b2DynamicTree::RayCast asserts a ray of non-zero length (also after squaring underflows).
+    if (!(lengthSquared(p2 - p1) > 0.0f)) return;
     impl_->tree.RayCast(&callback, b2RayCastInput{toB2(p1), toB2(p2), 1.0f});
 }
-
-namespace {
-
-b2Sweep toB2(const Sweep& s) {
-    b2Sweep out;
-    out.localCenter = toB2(s.localCenter);
-    out.c0 = toB2(s.c1);
-    out.c = toB2(s.c2);
-    out.a0 = s.a1;
-    out.a = s.a2;
-    out.alpha0 = 0.0f;
-    return out;
-}
-
-float pieceTimeOfImpact(const b2DistanceProxy& a, const Sweep& sweepA, const b2DistanceProxy& b, const Sweep& sweepB) {
-    b2TOIInput input;
-    input.proxyA = a;
-    input.proxyB = b;
-    input.sweepA = toB2(sweepA);
-    input.sweepB = toB2(sweepB);
-    input.tMax = 1.0f;
-    b2TOIOutput output;
-    b2TimeOfImpact(&output, &input);
-    switch (output.state) {
-        case b2TOIOutput::e_touching: return std::clamp(output.t, 0.0f, 1.0f);
-        case b2TOIOutput::e_overlapped: return 0.0f;
-        default: return 1.0f;
-    }
-}
-
-// The part of a sweep between fractions t1 and t2 (poses move linearly in t: c = c1 + t (c2 − c1)).
-Sweep between(const Sweep& s, float t1, float t2) {
-    return {s.localCenter, s.c1 + t1 * (s.c2 - s.c1), s.c1 + t2 * (s.c2 - s.c1), s.a1 + t1 * (s.a2 - s.a1),
-            s.a1 + t2 * (s.a2 - s.a1)};
-}
-
-// b2TimeOfImpact advances along a separating axis that turns with the shapes; over a large turn
-// it can step past an impact and report the shapes apart at the end. So a sweep turning more than
-// maxPieceTurn is searched in pieces of at most that turn (up to maxPieces), first piece first.
-constexpr float maxPieceTurn = 0.25f * b2_pi;
-constexpr int maxPieces = 16;
-
-float timeOfImpact(const b2DistanceProxy& a, const Sweep& sweepA, const b2DistanceProxy& b, const Sweep& sweepB) {
-    const float turn = std::max(std::fabs(sweepA.a2 - sweepA.a1), std::fabs(sweepB.a2 - sweepB.a1));
-    const int pieces = std::clamp(static_cast<int>(std::ceil(turn / maxPieceTurn)), 1, maxPieces);
-    if (pieces == 1) return pieceTimeOfImpact(a, sweepA, b, sweepB);  // the sweep itself, unrounded
-    for (int k = 0; k < pieces; ++k) {
-        const float t1 = static_cast<float>(k) / pieces, t2 = static_cast<float>(k + 1) / pieces;
-        const float toi = pieceTimeOfImpact(a, between(sweepA, t1, t2), b, between(sweepB, t1, t2));
-        if (toi < 1.0f) return t1 + toi * (t2 - t1);
-    }
-    return 1.0f;
-}
-
-}  // namespace
 
 float CollisionSystem::timeOfImpact(ChildKey a, const Sweep& sweepA, ChildKey b, const Sweep& sweepB) const {
     b2DistanceProxy proxyA, proxyB;
     proxyA.Set(&childShape(impl_->geometry[a.shape], a.child), 0);
     proxyB.Set(&childShape(impl_->geometry[b.shape], b.child), 0);
-    return perpdot::collide::timeOfImpact(proxyA, sweepA, proxyB, sweepB);
+    return advanceToImpact(proxyA, sweepA, proxyB, sweepB);
 }
 
 float CollisionSystem::coreTimeOfImpact(int shapeA, float coreRadius, const Sweep& sweepA, ChildKey b, const Sweep& sweepB) const {
@@ -368,7 +315,7 @@ float CollisionSystem::coreTimeOfImpact(int shapeA, float coreRadius, const Swee
     b2DistanceProxy proxyA, proxyB;
     proxyA.Set(&core, 0);
     proxyB.Set(&childShape(impl_->geometry[b.shape], b.child), 0);
-    return perpdot::collide::timeOfImpact(proxyA, sweepA, proxyB, sweepB);
+    return advanceToImpact(proxyA, sweepA, proxyB, sweepB);
 }
 
 float CollisionSystem::minExtent(int shape) const {

@@ -115,8 +115,9 @@ public:
         });
     }
 
-    // b2TimeOfImpact: fraction t in [0, 1] of the first time the two moving children come within
-    // Box2D's target separation; 0 if they already are at the start, 1 if they never do.
+    // Time of impact (advanceToImpact, conservative advancement on b2Distance): fraction t in [0, 1]
+    // of the first time the two moving children come within Box2D's target separation; 0 if they
+    // already are at the start, 1 if they never do.
     float timeOfImpact(ChildKey a, const Sweep& sweepA, ChildKey b, const Sweep& sweepB) const;
     // The same for a small disc of radius coreRadius at shape A's centroid (Box2D v3's fallback when
     // the shapes already touch at the start: the core still must not pass through).
