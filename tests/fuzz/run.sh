@@ -1,28 +1,38 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer harnesses with clang (PERPDOT_FUZZ) and runs each for half of SECONDS.
-#   tests/fuzz/run.sh [SECONDS] [BUILD_DIR]      (default 60 s, build-fuzz)
-# New inputs go to BUILD_DIR/corpus/<harness>; the checked-in seeds in tests/fuzz/corpus are only
-# read. A crash leaves crash-* / leak-* / timeout-* files in BUILD_DIR and fails the script.
-# Longer run (docs/reliability.md): tests/fuzz/run.sh 600
+# CI fuzz smoke: builds the libFuzzer harnesses with clang (PERPDOT_FUZZ) and runs each for a fixed
+# number of inputs from a fixed seed — the same work on every run, never open-ended exploration
+# (that is tests/fuzz/explore.sh).
+#   tests/fuzz/run.sh [RUNS] [SEED] [BUILD_DIR]      (default 20000 inputs per harness, seed 1, build-fuzz)
+# Starts from the checked-in seeds and findings (only read); new inputs go to a scratch corpus
+# BUILD_DIR/smoke/<harness>, emptied first. Fails when a harness does not build or start, exits
+# non-zero, does not report its runs, or leaves a crash-, leak-, timeout- or oom- file.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
-seconds="${1:-60}"
-build="${2:-$root/build-fuzz}"
+runs="${1:-20000}"
+seed="${2:-1}"
+build="${3:-$root/build-fuzz}"
 jobs="${PERPDOT_JOBS:-2}"
+harnesses=(scene snapshot api)
 
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ -DPERPDOT_FUZZ=ON \
     -DPERPDOT_BUILD_TESTS=OFF -DPERPDOT_BUILD_DEMOS=OFF -DPERPDOT_BUILD_BENCH=OFF >/dev/null
-cmake --build "$build" --target fuzz_scene fuzz_snapshot -j"$jobs" >/dev/null
+cmake --build "$build" --target "${harnesses[@]/#/fuzz_}" -j"$jobs" >/dev/null
 
-for harness in scene snapshot; do
-    corpus="$build/corpus/$harness"
-    mkdir -p "$corpus"
-    echo "== fuzz_$harness for $((seconds / 2)) s"
-    "$build/tests/fuzz/fuzz_$harness" -max_total_time=$((seconds / 2)) -max_len=8192 -timeout=10 -rss_limit_mb=2048 \
-        -artifact_prefix="$build/" -print_final_stats=1 "$corpus" "$root/tests/fuzz/corpus/$harness" 2>&1 |
-        grep -E "^(stat::number_of_executed_units|stat::new_units_added|Done [0-9]+ runs|==[0-9]+==ERROR|SUMMARY|.*(crash|leak|timeout)-)" || true
-    if compgen -G "$build/crash-*" >/dev/null || compgen -G "$build/leak-*" >/dev/null || compgen -G "$build/timeout-*" >/dev/null; then
-        echo "fuzz_$harness found a failing input:" "$build"/crash-* "$build"/leak-* "$build"/timeout-* 2>/dev/null
+for harness in "${harnesses[@]}"; do
+    scratch="$build/smoke/$harness"
+    rm -rf "$scratch" "$build/smoke/$harness"-*
+    mkdir -p "$scratch"
+    log="$build/smoke/$harness.log"
+    echo "== fuzz_$harness: $runs inputs, seed $seed"
+    status=0
+    "$build/tests/fuzz/fuzz_$harness" -seed="$seed" -runs="$runs" -max_len=8192 -timeout=10 -rss_limit_mb=2048 \
+        -artifact_prefix="$build/smoke/$harness-" -print_final_stats=1 \
+        "$scratch" "$root/tests/fuzz/corpus/$harness" "$root/tests/fuzz/findings/$harness" >"$log" 2>&1 || status=$?
+    grep -E "^(stat::number_of_executed_units|stat::new_units_added|Done [0-9]+ runs)" "$log" || true
+    artifacts=$(compgen -G "$build/smoke/$harness-*" || true)
+    if [ "$status" -ne 0 ] || [ -n "$artifacts" ] || ! grep -q "^Done $runs runs" "$log"; then
+        echo "fuzz_$harness FAILED (exit status $status)${artifacts:+, failing input: $artifacts}; log $log:"
+        grep -E "ERROR|SUMMARY|Assert|assert|terminate|==[0-9]+==" "$log" | head -20 || tail -20 "$log"
         exit 1
     fi
 done
