@@ -1,40 +1,96 @@
-// step() allocates nothing in steady state: the solver arrays, contact cache and broadphase
-// reuse their storage once the contacts exist, also while contacts keep being created and
-// destroyed. Counted by replacing global operator new.
+// step() allocates nothing in steady state: the solver arrays, contact cache, joint rows and
+// broadphase reuse their storage once the contacts exist, also while contacts keep being created
+// and destroyed. Counted at the C allocator, so Box2D's b2Alloc (malloc, b2DynamicTree's nodes)
+// is counted with operator new (libstdc++'s calls malloc):
+// - release builds interpose malloc, calloc and realloc in this executable (they count, then call
+//   glibc's __libc_* versions); the dynamic linker binds libbox2d's and libstdc++'s calls to them;
+// - AddressSanitizer builds cannot interpose (ASan's own malloc must serve every block it later
+//   checks and frees), so they count through ASan's allocation hook,
+//   __sanitizer_install_malloc_and_free_hooks, which sees malloc, calloc, realloc and new alike.
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cstddef>
 #include <cstdlib>
-#include <new>
 
 #include "perpdot/perpdot.hpp"
 
-// AddressSanitizer owns operator new itself; there the count is skipped.
 #if defined(__SANITIZE_ADDRESS__)
-#define PERPDOT_COUNT_ALLOCATIONS 0
-#else
-#define PERPDOT_COUNT_ALLOCATIONS 1
+#define PERPDOT_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define PERPDOT_ASAN 1
+#endif
 #endif
 
 namespace {
 std::atomic<long> allocationCount{0};
 }  // namespace
 
-#if PERPDOT_COUNT_ALLOCATIONS
-void* operator new(std::size_t size) {
+#if defined(PERPDOT_ASAN)
+#include <sanitizer/allocator_interface.h>
+
+namespace {
+void countAllocation(const volatile void*, std::size_t) { ++allocationCount; }
+void ignoreFree(const volatile void*) {}
+const bool counting = __sanitizer_install_malloc_and_free_hooks(countAllocation, ignoreFree) != 0;
+}  // namespace
+#else
+extern "C" {
+void* __libc_malloc(std::size_t size);
+void* __libc_calloc(std::size_t count, std::size_t size);
+void* __libc_realloc(void* p, std::size_t size);
+
+void* malloc(std::size_t size) noexcept {
     ++allocationCount;
-    if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-    throw std::bad_alloc();
+    return __libc_malloc(size);
 }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void* calloc(std::size_t count, std::size_t size) noexcept {
+    ++allocationCount;
+    return __libc_calloc(count, size);
+}
+void* realloc(void* p, std::size_t size) noexcept {
+    ++allocationCount;
+    return __libc_realloc(p, size);
+}
+}
+namespace {
+const bool counting = true;
+}  // namespace
 #endif
 
 namespace perpdot {
 namespace {
 
+// Allocations made by `steps` calls of step().
+template <class Step>
+long allocationsOf(int steps, Step&& step) {
+    const long before = allocationCount.load();
+    for (int i = 0; i < steps; ++i) step();
+    return allocationCount.load() - before;
+}
+
+// The counter sees plain malloc (Box2D's b2Alloc), operator new, and a world growing its
+// b2DynamicTree past its initial 16 nodes.
+TEST(Allocation, CounterSeesMallocAndNew) {
+    ASSERT_TRUE(counting) << "the allocation hook was not installed";
+    long before = allocationCount.load();
+    void* volatile block = std::malloc(16);  // volatile: the compiler may not elide the pair
+    EXPECT_EQ(allocationCount.load() - before, 1);
+    std::free(block);
+    before = allocationCount.load();
+    int* volatile number = new int(1);
+    delete number;
+    EXPECT_EQ(allocationCount.load() - before, 1);
+
+    World world;
+    const BodyId ground = world.createBody({});
+    before = allocationCount.load();
+    for (int i = 0; i < 64; ++i) world.createShape(ground, {}, Circle{{static_cast<float>(3 * i), 0.0f}, 1.0f});
+    EXPECT_GT(allocationCount.load() - before, 0);
+}
+
 TEST(Allocation, SteppingARestingPyramidAllocatesNothing) {
-    if (!PERPDOT_COUNT_ALLOCATIONS) GTEST_SKIP() << "AddressSanitizer replaces operator new";
     World world(WorldDef{.enableSleep = false});
     const BodyId ground = world.createBody({.position = {0.0f, -0.5f}});
     world.createShape(ground, {}, makeBox(20.0f, 0.5f));
@@ -49,23 +105,32 @@ TEST(Allocation, SteppingARestingPyramidAllocatesNothing) {
     // Let every contact form and the pyramid settle, so no new pair appears later.
     for (int i = 0; i < 120; ++i) world.step(1.0f / 60.0f);
     ASSERT_GT(world.contactCount(), rows * rows / 2);
-
-    const long before = allocationCount.load();
-    for (int i = 0; i < 120; ++i) world.step(1.0f / 60.0f);
-    EXPECT_EQ(allocationCount.load() - before, 0);
+    EXPECT_EQ(allocationsOf(120, [&] { world.step(1.0f / 60.0f); }), 0);
 }
 
 // The turning walls' fat boxes sweep across the boxes: pairs are found and dropped every step.
 TEST(Allocation, ChurningContactsOfATumblerAllocateNothing) {
-    if (!PERPDOT_COUNT_ALLOCATIONS) GTEST_SKIP() << "AddressSanitizer replaces operator new";
     SceneWorld tumbler = buildWorld(findScene("tumbler"));
     // Storage grows (geometrically) only when the contact count reaches a new peak; here the last
     // time is near step 1,900, in the third turn (0.5 rad/s).
     for (int i = 0; i < 2400; ++i) tumbler.step();
+    EXPECT_EQ(allocationsOf(600, [&] { tumbler.step(); }), 0);
+}
 
-    const long before = allocationCount.load();
-    for (int i = 0; i < 600; ++i) tumbler.step();
-    EXPECT_EQ(allocationCount.load() - before, 0);
+// Joint rows: 40 hinged links swinging (and the ball's contacts), and the 100x100 joint grid.
+TEST(Allocation, SwingingChainAllocatesNothing) {
+    SceneWorld chain = buildWorld(findScene("chain"));
+    ASSERT_GE(chain.world.joints().size(), 40u);
+    // The links fold onto each other: the contact pool grows up to its peak (near step 130).
+    for (int i = 0; i < 240; ++i) chain.step();
+    EXPECT_EQ(allocationsOf(600, [&] { chain.step(); }), 0);
+}
+
+TEST(Allocation, JointGridAllocatesNothing) {
+    SceneWorld grid = buildWorld(findScene("joint_grid"));
+    ASSERT_GE(grid.world.joints().size(), 9000u);
+    for (int i = 0; i < 10; ++i) grid.step();
+    EXPECT_EQ(allocationsOf(20, [&] { grid.step(); }), 0);
 }
 
 }  // namespace
