@@ -231,9 +231,13 @@ Manifold CollisionSystem::collide(ChildKey a, const Transform& xfA, ChildKey b, 
                 b2CollidePolygons(&m, static_cast<const b2PolygonShape*>(&shapeA), ta, static_cast<const b2PolygonShape*>(&shapeB), tb);
             break;
         case b2Shape::e_edge:
-            if (circleB)
-                b2CollideEdgeAndCircle(&m, static_cast<const b2EdgeShape*>(&shapeA), ta, circleB, tb);
-            else
+            if (circleB) {
+                // b2CollideEdgeAndCircle asserts e·e > 0; a loop chain's closing edge is not length-
+                // checked (compatibility), and e·e underflows to 0 below ~1e-23 m.
+                const auto* edge = static_cast<const b2EdgeShape*>(&shapeA);
+                const b2Vec2 e = edge->m_vertex2 - edge->m_vertex1;
+                if (b2Dot(e, e) > 0.0f) b2CollideEdgeAndCircle(&m, edge, ta, circleB, tb);
+            } else
                 b2CollideEdgeAndPolygon(&m, static_cast<const b2EdgeShape*>(&shapeA), ta, static_cast<const b2PolygonShape*>(&shapeB), tb);
             break;
         default:
