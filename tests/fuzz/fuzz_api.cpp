@@ -121,66 +121,52 @@ struct Session {
         }
     }
 
+    template <class Def>
+    void addJoint(const Def& def) {
+        joints.push_back(world.createJoint(def));
+    }
+
+    // Braced initialisers evaluate in order, so the reads follow the fields.
     void createJoint() {
         const BodyId a = body(), b = body();
-        const bool collideConnected = in.flag();
+        const bool cc = in.flag();
         switch (in.index(7)) {
-            case 0: {
-                RevoluteJointDef d{a, b, in.vec(), in.vec(), in.number()};
-                d.enableLimit = in.flag();
-                d.lowerAngle = in.number();
-                d.upperAngle = in.number();
-                d.enableMotor = in.flag();
-                d.motorSpeed = in.number();
-                d.maxMotorTorque = in.number();
-                d.collideConnected = collideConnected;
-                joints.push_back(world.createJoint(d));
+            case 0:
+                addJoint(RevoluteJointDef{.bodyA = a, .bodyB = b, .localAnchorA = in.vec(), .localAnchorB = in.vec(),
+                                          .referenceAngle = in.number(), .enableLimit = in.flag(), .lowerAngle = in.number(),
+                                          .upperAngle = in.number(), .enableMotor = in.flag(), .motorSpeed = in.number(),
+                                          .maxMotorTorque = in.number(), .collideConnected = cc});
                 break;
-            }
-            case 1: {
-                PrismaticJointDef d{a, b, in.vec(), in.vec(), in.vec(), in.number()};
-                d.enableLimit = in.flag();
-                d.lower = in.number();
-                d.upper = in.number();
-                d.enableMotor = in.flag();
-                d.motorSpeed = in.number();
-                d.maxMotorForce = in.number();
-                d.collideConnected = collideConnected;
-                joints.push_back(world.createJoint(d));
+            case 1:
+                addJoint(PrismaticJointDef{.bodyA = a, .bodyB = b, .localAnchorA = in.vec(), .localAnchorB = in.vec(),
+                                           .localAxisA = in.vec(), .referenceAngle = in.number(), .enableLimit = in.flag(),
+                                           .lower = in.number(), .upper = in.number(), .enableMotor = in.flag(),
+                                           .motorSpeed = in.number(), .maxMotorForce = in.number(), .collideConnected = cc});
                 break;
-            }
-            case 2: {
-                DistanceJointDef d{a, b, in.vec(), in.vec(), in.number(), in.number(), in.number(), in.number(), in.number()};
-                d.collideConnected = collideConnected;
-                joints.push_back(world.createJoint(d));
+            case 2:
+                addJoint(DistanceJointDef{.bodyA = a, .bodyB = b, .localAnchorA = in.vec(), .localAnchorB = in.vec(),
+                                          .length = in.number(), .minLength = in.number(), .maxLength = in.number(),
+                                          .hertz = in.number(), .dampingRatio = in.number(), .collideConnected = cc});
                 break;
-            }
-            case 3: {
-                WeldJointDef d{a, b, in.vec(), in.vec(), in.number(), in.number(), in.number()};
-                d.collideConnected = collideConnected;
-                joints.push_back(world.createJoint(d));
+            case 3:
+                addJoint(WeldJointDef{.bodyA = a, .bodyB = b, .localAnchorA = in.vec(), .localAnchorB = in.vec(),
+                                      .referenceAngle = in.number(), .hertz = in.number(), .dampingRatio = in.number(),
+                                      .collideConnected = cc});
                 break;
-            }
-            case 4: {
-                WheelJointDef d{a, b, in.vec(), in.vec(), in.vec(), in.number(), in.number()};
-                d.enableMotor = in.flag();
-                d.motorSpeed = in.number();
-                d.maxMotorTorque = in.number();
-                d.collideConnected = collideConnected;
-                joints.push_back(world.createJoint(d));
+            case 4:
+                addJoint(WheelJointDef{.bodyA = a, .bodyB = b, .localAnchorA = in.vec(), .localAnchorB = in.vec(),
+                                       .localAxisA = in.vec(), .hertz = in.number(), .dampingRatio = in.number(),
+                                       .enableMotor = in.flag(), .motorSpeed = in.number(), .maxMotorTorque = in.number(),
+                                       .collideConnected = cc});
                 break;
-            }
-            case 5: {
-                MotorJointDef d{a, b, in.vec(), in.number(), in.number(), in.number(), in.number()};
-                d.collideConnected = collideConnected;
-                joints.push_back(world.createJoint(d));
+            case 5:
+                addJoint(MotorJointDef{.bodyA = a, .bodyB = b, .linearOffset = in.vec(), .angularOffset = in.number(),
+                                       .maxForce = in.number(), .maxTorque = in.number(), .correctionFactor = in.number(),
+                                       .collideConnected = cc});
                 break;
-            }
-            default: {
-                MouseJointDef d{a, b, in.vec(), in.number(), in.number(), in.number()};
-                d.collideConnected = collideConnected;
-                joints.push_back(world.createJoint(d));
-            }
+            default:
+                addJoint(MouseJointDef{.bodyA = a, .bodyB = b, .target = in.vec(), .hertz = in.number(),
+                                       .dampingRatio = in.number(), .maxForce = in.number(), .collideConnected = cc});
         }
     }
 
