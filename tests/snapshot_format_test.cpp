@@ -8,6 +8,9 @@
 // and both are stepped with the state hash compared each step. (Not against hashes recorded when
 // the files were written: legitimate solver changes change those.)
 #include <algorithm>
+#include <bit>
+#include <cstring>
+#include <typeinfo>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -17,6 +20,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/snapshot_fields.hpp"
 #include "joint_zoo.hpp"
 #include "perpdot/error.hpp"
 #include "perpdot/state_hash.hpp"
@@ -80,6 +84,45 @@ TEST(SnapshotFormat, FormatOneJointZooKeepsEveryJointAndItsImpulses) {
         EXPECT_TRUE(length(fromOld.jointReactionForce(joints[i])) > 0 || fromOld.jointReactionTorque(joints[i]) != 0)
             << "joint " << i << " lost its impulses";
     }
+}
+
+// Format 1 stored a joint's type data as the struct's bytes: the field list must walk exactly that
+// layout. Every member gets distinct bits, the struct's bytes are read back with readLayoutV1 and
+// must give the same fields (compared through the current format's bytes).
+template <class T>
+void expectLayoutV1ReadsRawBytes() {
+    T original{};
+    uint32_t next = 0x3F800001;
+    const auto fill = [&](auto& self, auto& value) -> void {
+        using V = std::remove_reference_t<decltype(value)>;
+        if constexpr (std::is_same_v<V, bool>) value = (next++ & 1) != 0;
+        else if constexpr (std::is_same_v<V, float>) value = std::bit_cast<float>(next++);
+        else if constexpr (std::is_same_v<V, Vec2>) value = {std::bit_cast<float>(next++), std::bit_cast<float>(next++)};
+        else std::apply([&](const auto&... f) { (self(self, value.*(f.member)), ...); }, fieldsOf<V>());
+    };
+    fill(fill, original);
+    Bytes raw(sizeof(T), 0xAB);  // padding bytes hold garbage: they must be skipped
+    std::memcpy(raw.data(), &original, sizeof(T));
+    ByteReader in(raw);
+    in.version = 1;
+    T read{};
+    size_t offset = 0;
+    readLayoutV1(in, read, offset);
+    in.expectEnd();
+    ByteWriter a, b;
+    writeFields(a, original);
+    writeFields(b, read);
+    EXPECT_EQ(a.bytes, b.bytes) << typeid(T).name();
+}
+
+TEST(SnapshotFormat, FormatOneJointLayoutIsReadFromTheFieldLists) {
+    expectLayoutV1ReadsRawBytes<RevoluteJoint>();
+    expectLayoutV1ReadsRawBytes<PrismaticJoint>();
+    expectLayoutV1ReadsRawBytes<DistanceJoint>();
+    expectLayoutV1ReadsRawBytes<WeldJoint>();
+    expectLayoutV1ReadsRawBytes<WheelJoint>();
+    expectLayoutV1ReadsRawBytes<MotorJoint>();
+    expectLayoutV1ReadsRawBytes<MouseJoint>();
 }
 
 TEST(SnapshotFormat, UnknownVersionsAreRefusedByNumber) {
