@@ -152,6 +152,7 @@ public:
         if (step == 3 || step == 8) editor.spawn(figure);
         if (step == 6) editor.destroy(first_);
     }
+    std::unique_ptr<SceneScript> clone() const override { return std::make_unique<SpawnAndDestroy>(*this); }
 
 private:
     SceneEditor::Group first_ = -1;
@@ -188,6 +189,7 @@ public:
         if (step == 0) group_ = editor.spawn(figure);
         if (step >= 1) editor.destroy(group_);
     }
+    std::unique_ptr<SceneScript> clone() const override { return std::make_unique<DestroyTwice>(*this); }
 
 private:
     SceneEditor::Group group_ = -1;

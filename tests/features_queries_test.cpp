@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "features_helpers.hpp"
+#include "perpdot/error.hpp"
 
 namespace perpdot {
 namespace {
@@ -94,6 +96,24 @@ TEST(FeaturesQueries, ShapeOverlapWithAUserCircleAndPolygon) {
     EXPECT_TRUE(s.world.overlapShape(bar, Transform{{3.0f, 0.0f}, Rot::fromAngle(0.5f * pi)}).empty());
     EXPECT_EQ(s.world.overlapShape(bar, Transform{{3.0f, 0.0f}, {}}).size(), 2u);
     EXPECT_EQ(s.world.overlapShape(bar, Transform{{3.0f, 0.0f}, {}}, {.mask = blue}), std::vector<ShapeId>{s.blueBox});
+}
+
+// Query shapes get a created shape's checks: a hand-filled polygon with too many vertices (which
+// would index past the adapter's 8), a non-convex one, a zero radius, a non-finite transform; and
+// a ray of zero length (Box2D's tree asserts on one) just hits nothing.
+TEST(FeaturesQueries, BadQueryShapesAreRefusedAndAZeroRayHitsNothing) {
+    Scene s;
+    Polygon tooMany = makeBox(1.0f, 1.0f);
+    tooMany.count = 40;
+    EXPECT_THROW((void)s.world.overlapShape(tooMany, Transform{}), Error);
+    Polygon dent = makeBox(1.0f, 1.0f);
+    dent.vertices[1] = {0.0f, 0.0f};
+    EXPECT_THROW((void)s.world.overlapShape(dent, Transform{}), Error);
+    EXPECT_THROW((void)s.world.overlapShape(Circle{.radius = 0.0f}, Transform{}), Error);
+    const float inf = std::numeric_limits<float>::infinity();
+    EXPECT_THROW((void)s.world.overlapShape(Circle{}, Transform{{inf, 0.0f}, {}}), Error);
+    EXPECT_FALSE(s.world.castRayClosest({3.0f, 0.0f}, {0.0f, 0.0f}).has_value());
+    EXPECT_TRUE(s.world.castRay({3.0f, 0.0f}, {1e-30f, 0.0f}).empty());
 }
 
 }  // namespace

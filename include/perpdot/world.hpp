@@ -179,7 +179,8 @@ public:
 
     // --- snapshots (bit-exact: restore + N steps equals N steps) ---
     // Versioned bytes of the whole state: settings, bodies, shapes, joints, and the contact cache
-    // with its warm-start impulses. Not saved: userData pointers, the pre-solve callback, events.
+    // with its warm-start impulses, and end events raised since the last step. Not saved: userData
+    // pointers, the pre-solve callback, the events of the last step.
     std::vector<uint8_t> snapshot() const;
     // Replaces this world's state with a snapshot's (ids from the snapshotted world stay valid, the
     // pre-solve callback stays). Corrupt or truncated bytes: Error, and the world is unchanged.

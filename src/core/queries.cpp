@@ -2,6 +2,8 @@
 // AABB, point (b2Shape::TestPoint) and shape overlap (b2TestOverlap). A shape is reported when
 // shouldCollide(query filter, shape filter).
 #include <algorithm>
+#include <cmath>
+#include <string>
 
 #include "core/world_impl.hpp"
 
@@ -26,6 +28,14 @@ void addUnique(std::vector<ShapeId>& out, ShapeId id) {
 
 template <class QueryShape>
 std::vector<ShapeId> overlapQuery(const World::Impl& w, const QueryShape& query, const Transform& xf, const Filter& filter) {
+    // A hand-filled query shape gets a created shape's checks (a polygon's count indexes a fixed
+    // array of 8 in the adapter); the error names the call.
+    try {
+        validateGeometry(query);
+    } catch (const Error& e) {
+        throw Error(std::string("overlapShape: ") + e.what());
+    }
+    if (!isFinite(xf.p) || !std::isfinite(xf.q.c) || !std::isfinite(xf.q.s)) throw Error("overlapShape: transform must be finite");
     std::vector<ShapeId> out;
     // The query shape's bounds: transform its vertices (or centre ± radius).
     AABB box;

@@ -217,6 +217,21 @@ void checkIslandRings(ByteReader& in, const World::Impl& w) {
     }
 }
 
+// End events raised since the last step (a shape or body destroyed between steps): the next step
+// reports them. Their ids may be stale, so any values load.
+template <class Event>
+void writePending(ByteWriter& out, const std::vector<Event>& events, size_t reported) {
+    out.u32(static_cast<uint32_t>(events.size() - reported));
+    for (size_t i = reported; i < events.size(); ++i) writeFields(out, events[i]);
+}
+
+template <class Event>
+std::vector<Event> readPending(ByteReader& in) {
+    std::vector<Event> events(in.count(16, "pending end event"));
+    for (Event& e : events) readFields(in, e);
+    return events;
+}
+
 }  // namespace
 
 std::vector<uint8_t> World::snapshot() const {
@@ -259,6 +274,8 @@ std::vector<uint8_t> World::snapshot() const {
         out.i32(key.shape);
         out.i32(key.child);
     }
+    writePending(out, w.contactEndEvents, w.contactEndReported);
+    writePending(out, w.sensorEndEvents, w.sensorEndReported);
     return std::move(out.bytes);
 }
 
@@ -351,6 +368,10 @@ void World::restore(std::span<const uint8_t> bytes) {
         key.child = in.integer(0, 0x7FFFFFFF, "moved proxy child");
         if (!shapeAlive[key.shape] || key.child >= static_cast<int>(savedProxies[key.shape].size()))
             in.fail("moved proxy names a missing shape child");
+    }
+    if (in.version >= 3) {
+        w.contactEndEvents = readPending<ContactEndTouchEvent>(in);
+        w.sensorEndEvents = readPending<SensorEndTouchEvent>(in);
     }
     in.expectEnd();
 

@@ -14,8 +14,9 @@
 
 namespace perpdot {
 
-// 1: joint type data as raw struct bytes. 2: every struct through its field list.
-constexpr uint32_t formatVersion = 2;
+// 1: joint type data as raw struct bytes. 2: every struct through its field list. 3: end events
+// raised between steps (a body or shape destroyed), which the next step reports.
+constexpr uint32_t formatVersion = 3;
 
 // A struct whose layout changed must have its field list reviewed (then update the size here).
 template <class T, size_t Size>
@@ -253,6 +254,20 @@ constexpr auto fields(const MouseJoint*) {
                       field("maxForce", &J::maxForce).anyBits(),
                       field("softness", &J::softness).anyBits(),
                       field("linearImpulse", &J::linearImpulse).anyBits()};
+}
+
+// --- events raised between steps (since format 3) ---
+
+template <class Tag>
+constexpr auto fields(const Id<Tag>*) {
+    return std::tuple{field("index", &Id<Tag>::index), field("generation", &Id<Tag>::generation)};
+}
+constexpr auto fields(const ContactEndTouchEvent*) {
+    return std::tuple{field("shapeA", &ContactEndTouchEvent::shapeA), field("shapeB", &ContactEndTouchEvent::shapeB)};
+}
+constexpr auto fields(const SensorEndTouchEvent*) {
+    return std::tuple{field("sensorShape", &SensorEndTouchEvent::sensorShape),
+                      field("visitorShape", &SensorEndTouchEvent::visitorShape)};
 }
 
 // Calls visit(member) with the live member of `data` for a joint of `type` (the one switch a new

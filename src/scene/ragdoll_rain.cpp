@@ -3,6 +3,7 @@
 // = five ragdolls side by side) is dropped 42 m above the shelves. Once 40 columns stand (1,000
 // ragdolls), the oldest column is destroyed and dropped anew, so every ragdoll lives 320 steps.
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -48,9 +49,13 @@ Scene group(int row, int column) {
 class RagdollRain final : public SceneScript {
 public:
     RagdollRain() {  // the fragments are made once, so a step times the engines, not scene building
+        auto fragments = std::make_shared<Fragments>();
         for (int row = 0; row < rows; ++row)
-            for (int column = 0; column < columns; ++column) fragments_[slot(row, column)] = group(row, column);
+            for (int column = 0; column < columns; ++column) (*fragments)[slot(row, column)] = group(row, column);
+        fragments_ = std::move(fragments);
     }
+
+    std::unique_ptr<SceneScript> clone() const override { return std::make_unique<RagdollRain>(*this); }
 
     void beforeStep(int step, SceneEditor& editor) override {
         if (step % spawnEvery != 0) return;
@@ -59,7 +64,7 @@ public:
         for (int row = 0; row < rows; ++row) {
             const int i = slot(row, column);
             if (full) editor.destroy(alive_[i]);
-            alive_[i] = editor.spawn(fragments_[i]);
+            alive_[i] = editor.spawn((*fragments_)[i]);
         }
         if (full)
             oldestColumn_ = (oldestColumn_ + 1) % columns;
@@ -70,7 +75,8 @@ public:
 private:
     static int slot(int row, int column) { return row * columns + column; }
 
-    std::array<Scene, rows * columns> fragments_{};
+    using Fragments = std::array<Scene, rows * columns>;
+    std::shared_ptr<const Fragments> fragments_;  // shared by clones
     std::array<SceneEditor::Group, rows * columns> alive_{};
     int filledColumns_ = 0, oldestColumn_ = 0;
 };

@@ -29,6 +29,9 @@ public:
     virtual ~SceneScript() = default;
     // Called before step `step` (step 0 first), before that step's scene actions are applied.
     virtual void beforeStep(int step, SceneEditor& editor) = 0;
+    // A copy of the script in its current state, saved beside a world snapshot so that a rolled
+    // back run continues the script from the same point.
+    virtual std::unique_ptr<SceneScript> clone() const = 0;
 };
 
 // A fresh script (with its own state) for the built-in scene named `sceneName`; nullptr when the

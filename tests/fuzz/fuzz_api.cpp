@@ -210,7 +210,7 @@ struct Session {
 
     // Queries only read; their results are not checked here beyond not crashing.
     void query() {
-        const int what = in.index(6);
+        const int what = in.index(7);
         const Vec2 p = in.vec(), q = in.vec();
         const Transform xf{in.vec(), Rot::fromAngle(in.number())};
         switch (what) {
@@ -219,7 +219,14 @@ struct Session {
             case 2: (void)world.overlapAABB(AABB{p, q}); break;
             case 3: (void)world.overlapPoint(p); break;
             case 4: (void)world.overlapShape(Circle{p, q.x}, xf); break;
-            default: (void)world.overlapShape(polygon(), xf);
+            case 5: (void)world.overlapShape(polygon(), xf); break;
+            default: {
+                Polygon raw;  // hand-filled: any count, unchecked vertices
+                raw.count = static_cast<int>(in.byte()) - 8;
+                for (Vec2& v : raw.vertices) v = in.vec();
+                raw.radius = p.x;
+                (void)world.overlapShape(raw, xf);
+            }
         }
         (void)world.contacts();
         (void)world.contactEvents();

@@ -1,0 +1,266 @@
+// Rollback-grade snapshots: a run that saves, runs ahead, restores and re-simulates (what rollback
+// netcode does every frame) must see the same future as a run that never snapshotted — state hash
+// and every event, each step — at over 1,000 restore points drawn with a fixed seed across every
+// built-in scene (scene actions, behaviours and scripts included) and test::jointZoo() (every
+// joint type, sensor, bullet). Between running ahead and restoring, the world is sometimes
+// disturbed (a body destroyed, another created), so restore must replace all of it.
+#include <cstdint>
+#include <cstring>
+#include <memory>
+#include <random>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "joint_zoo.hpp"
+#include "perpdot/feature_scenes.hpp"
+#include "perpdot/scene.hpp"
+#include "perpdot/state_hash.hpp"
+#include "scene/build_world.hpp"
+#include "scene/scene_script.hpp"
+
+namespace perpdot {
+namespace {
+
+using Bytes = std::vector<uint8_t>;
+
+#if defined(__SANITIZE_ADDRESS__)
+constexpr int pointScale = 4;  // the sanitizer build runs a quarter of the points (about 260)
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr int pointScale = 4;
+#else
+constexpr int pointScale = 1;
+#endif
+#else
+constexpr int pointScale = 1;
+#endif
+
+// FNV-1a over the bytes of the step's events (their structs have no padding).
+template <class T>
+void hashEvents(uint64_t& h, std::span<const T> events) {
+    for (const T& e : events) {
+        unsigned char bytes[sizeof(T)];
+        std::memcpy(bytes, &e, sizeof(T));
+        for (unsigned char b : bytes) h = (h ^ b) * 0x100000001b3ull;
+    }
+    h = (h ^ events.size()) * 0x100000001b3ull;
+}
+
+struct Frame {
+    uint64_t state = 0, events = 0;
+    bool operator==(const Frame&) const = default;
+};
+
+Frame frameOf(const World& w) {
+    uint64_t h = 0xcbf29ce484222325ull;
+    const ContactEvents contact = w.contactEvents();
+    const SensorEvents sensor = w.sensorEvents();
+    hashEvents(h, contact.beginEvents);
+    hashEvents(h, contact.endEvents);
+    hashEvents(h, contact.hitEvents);
+    hashEvents(h, sensor.beginEvents);
+    hashEvents(h, sensor.endEvents);
+    return {stateHash(w), h};
+}
+
+// A scene run as a game runs it: its world with behaviour, its actions, and its script, whose
+// spawns and destroys go through this editor.
+class SceneRun final : private SceneEditor {
+public:
+    explicit SceneRun(const std::string& name) : built_(buildWorldWithBehaviour(findScene(name))), script_(makeSceneScript(name)) {}
+    explicit SceneRun(World world) : built_{.world = std::move(world)} {}
+
+    void step() {
+        if (script_) script_->beforeStep(built_.stepIndex, *this);
+        built_.step();
+    }
+    World& world() { return built_.world; }
+
+    // What a rollback saves: the world, the step count (scene actions), the script and its groups.
+    struct Saved {
+        Bytes world;
+        int stepIndex = 0;
+        std::unique_ptr<SceneScript> script;
+        std::vector<std::vector<BodyId>> groups;
+    };
+    Saved save() const {
+        return {built_.world.snapshot(), built_.stepIndex, script_ ? script_->clone() : nullptr, groups_};
+    }
+    void restore(const Saved& saved) {
+        built_.world.restore(saved.world);
+        built_.stepIndex = saved.stepIndex;
+        script_ = saved.script ? saved.script->clone() : nullptr;
+        groups_ = saved.groups;
+    }
+
+private:
+    Group spawn(const Scene& fragment) override {
+        groups_.push_back(addToWorld(built_.world, fragment).bodies);
+        return Group(groups_.size() - 1);
+    }
+    void destroy(Group group) override {
+        for (BodyId body : groups_[size_t(group)]) built_.world.destroyBody(body);
+        groups_[size_t(group)].clear();
+    }
+
+    SceneWorld built_;
+    std::unique_ptr<SceneScript> script_;
+    std::vector<std::vector<BodyId>> groups_;
+};
+
+// Steps and restore points per scene: the benchmark scenes (thousands of bodies) get a few.
+struct Plan {
+    int steps = 0, points = 0;
+};
+
+Plan planFor(const std::string& name, int sceneSteps) {
+    if (name == "many_pyramids" || name == "smash" || name == "spinner" || name == "joint_grid" || name == "large_pyramid")
+        return {12, 2};
+    if (name == "ragdoll_rain") return {40, 4};  // past a few spawns
+    if (name == "bench_tumbler") return {24, 3};
+    if (name == "vertical_stack") return {600, 40};  // asleep from about step 300 on
+    if (name == "bullet_wall") return {40, 20};      // the bullets hit within the first steps
+    return {std::min(sceneSteps, 420), 38};
+}
+
+struct Coverage {
+    int points = 0, withSleepingBodies = 0, withEvents = 0, editedBeforeSave = 0, disturbedBeforeRestore = 0;
+};
+
+// One restore point: save after step saveAt (0-based), run `ahead` steps, restore, re-simulate.
+struct Point {
+    int saveAt = 0, ahead = 1;
+    bool edit = false;     // the user edits the world between the step and the save (in both runs)
+    bool disturb = false;  // the world is changed after running ahead, before restoring
+};
+
+std::vector<Point> drawPoints(Plan plan, std::mt19937& rng) {
+    const int points = std::max(1, plan.points / pointScale);
+    const int stride = plan.steps / points;  // each point draws its save step and distance in its stride
+    std::vector<Point> drawn;
+    for (int k = 0; k < points; ++k) {
+        Point p;
+        p.ahead = 1 + int(rng() % unsigned(std::min(12, std::max(1, stride / 2))));
+        p.saveAt = k * stride + int(rng() % unsigned(std::max(1, stride - p.ahead)));
+        p.edit = rng() % 4 == 0;
+        p.disturb = rng() % 3 == 0;
+        drawn.push_back(p);
+    }
+    return drawn;
+}
+
+// Between two steps, as a game would: the newest dynamic body loses a shape (the end events of its
+// contacts are reported by the next step), or gets an impulse and a force (force accumulators).
+// Bodies stay: scene actions and scripts name them.
+void editBetweenSteps(World& w, int step) {
+    const std::vector<BodyId> bodies = w.bodies();
+    for (auto it = bodies.rbegin(); it != bodies.rend(); ++it) {
+        if (w.bodyType(*it) != BodyType::Dynamic || w.shapes(*it).empty()) continue;
+        if (step % 2 == 0) {
+            w.destroyShape(w.shapes(*it).front());
+        } else {
+            w.applyLinearImpulseToCenter(*it, {0.5f, 2.0f});
+            w.applyForce(*it, {0, 30}, w.worldCenter(*it) + Vec2{0.1f, 0});
+        }
+        return;
+    }
+}
+
+void disturb(World& w, std::mt19937& rng) {
+    if (const std::vector<BodyId> bodies = w.bodies(); !bodies.empty()) w.destroyBody(bodies[rng() % bodies.size()]);
+    const BodyId extra = w.createBody({.type = BodyType::Dynamic, .position = {0, 3}});
+    w.createShape(extra, {}, Circle{{0, 0}, 0.3f});
+}
+
+bool anyEvents(const World& w) {
+    const ContactEvents c = w.contactEvents();
+    const SensorEvents s = w.sensorEvents();
+    return !c.beginEvents.empty() || !c.endEvents.empty() || !c.hitEvents.empty() || !s.beginEvents.empty() ||
+           !s.endEvents.empty();
+}
+
+bool anySleeping(const World& w) {
+    for (BodyId body : w.bodies())
+        if (w.bodyType(body) == BodyType::Dynamic && !w.isAwake(body)) return true;
+    return false;
+}
+
+// Runs `make()` once without snapshots, recording every frame, then again through the restore
+// points: save after step saveAt, run ahead (checked against the record), maybe disturb, restore,
+// re-simulate the same steps (checked again; the bytes must equal those of the run ahead).
+template <class Make>
+void checkRollback(const std::string& name, Make make, Plan plan, std::mt19937& rng, Coverage& coverage) {
+    const std::vector<Point> points = drawPoints(plan, rng);
+    const auto edits = [&](int step) {
+        for (const Point& p : points)
+            if (p.saveAt == step) return p.edit;
+        return false;
+    };
+    std::vector<Frame> reference;
+    {
+        std::unique_ptr<SceneRun> run = make();
+        for (int s = 0; s < plan.steps; ++s) {
+            run->step();
+            reference.push_back(frameOf(run->world()));
+            if (edits(s)) editBetweenSteps(run->world(), s);
+        }
+    }
+    std::unique_ptr<SceneRun> run = make();
+    int s = 0;
+    for (const Point& point : points) {
+        for (; s <= point.saveAt; ++s) {
+            run->step();
+            ASSERT_EQ(frameOf(run->world()), reference[size_t(s)]) << name << " step " << s;
+        }
+        if (point.edit) editBetweenSteps(run->world(), point.saveAt);
+        const SceneRun::Saved saved = run->save();
+        for (int i = 0; i < point.ahead; ++i) {
+            run->step();
+            ASSERT_EQ(frameOf(run->world()), reference[size_t(s + i)]) << name << " running ahead, step " << s + i;
+        }
+        const Bytes atEnd = run->world().snapshot();
+        if (point.disturb) disturb(run->world(), rng);
+        run->restore(saved);
+        bool events = false;
+        for (int i = 0; i < point.ahead; ++i) {
+            run->step();
+            ASSERT_EQ(frameOf(run->world()), reference[size_t(s + i)])
+                << name << " restored after step " << point.saveAt << ", re-simulated step " << s + i;
+            events = events || anyEvents(run->world());
+        }
+        ASSERT_EQ(run->world().snapshot(), atEnd) << name << " restored after step " << point.saveAt << ": bytes after re-simulation";
+        s += point.ahead;
+        ++coverage.points;
+        coverage.withSleepingBodies += anySleeping(run->world()) ? 1 : 0;
+        coverage.withEvents += events ? 1 : 0;
+        coverage.editedBeforeSave += point.edit ? 1 : 0;
+        coverage.disturbedBeforeRestore += point.disturb ? 1 : 0;
+    }
+}
+
+TEST(SnapshotRollback, EveryRestorePointReplaysTheSameFuture) {
+    std::mt19937 rng(16003);
+    Coverage coverage;
+    for (const BuiltinScene& scene : builtinScenes()) {
+        const Scene made = scene.make();
+        checkRollback(scene.name, [&] { return std::make_unique<SceneRun>(scene.name); }, planFor(scene.name, made.steps), rng,
+                      coverage);
+        if (HasFatalFailure()) return;
+    }
+    checkRollback("joint_zoo", [] { return std::make_unique<SceneRun>(test::jointZoo()); }, {240, 60}, rng, coverage);
+    EXPECT_GE(coverage.points * pointScale, 1000);
+    EXPECT_GT(coverage.withSleepingBodies, 0);
+    EXPECT_GT(coverage.withEvents, 0);
+    EXPECT_GT(coverage.editedBeforeSave, 0);
+    EXPECT_GT(coverage.disturbedBeforeRestore, 0);
+    std::printf("restore points: %d (%d with sleeping bodies, %d with events re-simulated, %d edited before saving, %d "
+                "disturbed before restoring)\n",
+                coverage.points, coverage.withSleepingBodies, coverage.withEvents, coverage.editedBeforeSave,
+                coverage.disturbedBeforeRestore);
+}
+
+}  // namespace
+}  // namespace perpdot
