@@ -8,6 +8,7 @@
 #include <new>
 
 #include "perpdot/perpdot.hpp"
+#include "perpdot/scene.hpp"
 
 // AddressSanitizer owns operator new itself; there the count is skipped.
 #if defined(__SANITIZE_ADDRESS__)
