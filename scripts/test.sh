@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The README's test command (and what CI runs through .ci/run): installs what is missing, builds,
 # and runs every check:
-#   1. release build with -Werror, the whole ctest suite
+#   1. release build with -Werror, the whole ctest suite, the API reference (Doxygen, no warnings)
 #   2. AddressSanitizer + UndefinedBehaviorSanitizer build, the whole ctest suite again
 #   3. determinism across compilers: gcc and clang builds print the same state_hash
 #   4. a short libFuzzer run of the scene and snapshot loaders (60 s)
@@ -19,6 +19,7 @@ echo "== release build (-Werror) and tests"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DPERPDOT_WERROR=ON -DCMAKE_EXPORT_COMPILE_COMMANDS=ON
 cmake --build build -j"$jobs"
 ctest --test-dir build --output-on-failure -j"$jobs" | tee "$log/release"
+cmake --build build --target perpdot-docs
 
 echo "== AddressSanitizer + UndefinedBehaviorSanitizer build and tests"
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPERPDOT_SANITIZE=ON -DPERPDOT_WERROR=ON \
