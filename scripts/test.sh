@@ -2,7 +2,7 @@
 # The README's test command (and what CI runs through .ci/run): installs what is missing, builds,
 # and runs every check:
 #   1. release build with -Werror, the whole ctest suite (it replays every checked-in fuzz seed and
-#      finding, tests/fuzz/CMakeLists.txt)
+#      finding, tests/fuzz/CMakeLists.txt), the API reference (Doxygen, no warnings)
 #   2. AddressSanitizer + UndefinedBehaviorSanitizer build, the whole ctest suite again
 #   3. determinism across compilers: gcc and clang builds print the same state_hash
 #   4. a fixed libFuzzer smoke of the scene, snapshot and API harnesses (seed 1, 20000 inputs each;
@@ -21,6 +21,7 @@ echo "== release build (-Werror) and tests"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DPERPDOT_WERROR=ON -DCMAKE_EXPORT_COMPILE_COMMANDS=ON
 cmake --build build -j"$jobs"
 ctest --test-dir build --output-on-failure -j"$jobs" | tee "$log/release"
+cmake --build build --target perpdot-docs
 
 echo "== AddressSanitizer + UndefinedBehaviorSanitizer build and tests"
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPERPDOT_SANITIZE=ON -DPERPDOT_WERROR=ON \

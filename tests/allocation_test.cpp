@@ -14,6 +14,7 @@
 #include <cstdlib>
 
 #include "perpdot/perpdot.hpp"
+#include "perpdot/scene.hpp"
 
 #if defined(__SANITIZE_ADDRESS__)
 #define PERPDOT_ASAN 1

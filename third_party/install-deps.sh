@@ -10,6 +10,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libsdl2-dev libsdl2-image-dev libimgui-dev   # demo viewer and headless PNG frames
   gnuplot-nox             # cross-check plots
+  doxygen                 # API reference (perpdot-docs), warnings fail CI
   xvfb xauth              # windowed viewer test
 )
 missing=()

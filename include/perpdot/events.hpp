@@ -1,5 +1,6 @@
-// Contact and sensor events, buffered during World::step() and read after it (Box2D v3 style),
-// and the pre-solve callback that may disable a contact for one step (one-way platforms).
+/// @file
+/// Contact and sensor events, buffered during World::step() and read after it (Box2D v3 style),
+/// and the pre-solve callback that may disable a contact for one step (one-way platforms).
 #pragma once
 
 #include <functional>
@@ -12,47 +13,54 @@ namespace perpdot {
 
 struct ContactData;
 
-// Two shapes started touching (their manifold gained points) — needs enableContactEvents on either.
+/// Two shapes started touching (their manifold gained points) — needs enableContactEvents on either.
 struct ContactBeginTouchEvent {
-    ShapeId shapeA, shapeB;
+    ShapeId shapeA;  ///< one shape of the contact
+    ShapeId shapeB;  ///< the other
 };
 
-// Two shapes stopped touching, or their contact was destroyed (the ids may then be stale).
+/// Two shapes stopped touching, or their contact was destroyed (the ids may then be stale).
 struct ContactEndTouchEvent {
-    ShapeId shapeA, shapeB;
+    ShapeId shapeA;  ///< one shape of the contact
+    ShapeId shapeB;  ///< the other
 };
 
-// A touching contact whose approach speed −v_rel·n exceeded WorldDef::hitEventThreshold at the start
-// of the step — needs enableHitEvents on either shape. The point is the fastest-approaching one.
+/// A touching contact whose approach speed −v_rel·n exceeded WorldDef::hitEventThreshold at the start
+/// of the step — needs enableHitEvents on either shape. The point is the fastest-approaching one.
 struct ContactHitEvent {
-    ShapeId shapeA, shapeB;
-    Vec2 point;            // world
-    Vec2 normal;           // from A to B
-    float approachSpeed = 0.0f;  // m/s, > 0
+    ShapeId shapeA;  ///< one shape of the contact
+    ShapeId shapeB;  ///< the other; the normal points from A to B
+    Vec2 point;            ///< world
+    Vec2 normal;           ///< from A to B
+    float approachSpeed = 0.0f;  ///< m/s, > 0
 };
 
-// The events of the last step; the spans stay valid until the next step().
+/// The events of the last step; the spans stay valid until the next step().
 struct ContactEvents {
-    std::span<const ContactBeginTouchEvent> beginEvents;
-    std::span<const ContactEndTouchEvent> endEvents;
-    std::span<const ContactHitEvent> hitEvents;
+    std::span<const ContactBeginTouchEvent> beginEvents;  ///< contacts that started touching
+    std::span<const ContactEndTouchEvent> endEvents;      ///< contacts that stopped touching
+    std::span<const ContactHitEvent> hitEvents;           ///< touching contacts that hit hard enough
 };
 
-// A shape (the visitor) began or stopped overlapping a sensor shape.
+/// A shape (the visitor) began overlapping a sensor shape.
 struct SensorBeginTouchEvent {
-    ShapeId sensorShape, visitorShape;
+    ShapeId sensorShape;   ///< the sensor
+    ShapeId visitorShape;  ///< the shape that entered it
 };
+/// A shape (the visitor) stopped overlapping a sensor shape, or one of them was destroyed.
 struct SensorEndTouchEvent {
-    ShapeId sensorShape, visitorShape;
+    ShapeId sensorShape;   ///< the sensor
+    ShapeId visitorShape;  ///< the shape that left it
 };
+/// The sensor events of the last step; the spans stay valid until the next step().
 struct SensorEvents {
-    std::span<const SensorBeginTouchEvent> beginEvents;
-    std::span<const SensorEndTouchEvent> endEvents;
+    std::span<const SensorBeginTouchEvent> beginEvents;  ///< shapes that entered a sensor
+    std::span<const SensorEndTouchEvent> endEvents;      ///< shapes that left a sensor
 };
 
-// Called during step()'s narrowphase for every touching contact where either shape has
-// ShapeDef::enablePreSolveEvents; return false to disable the contact for this step. The world is
-// locked: creating or destroying anything throws perpdot::Error.
+/// Called during step()'s narrowphase for every touching contact where either shape has
+/// ShapeDef::enablePreSolveEvents; return false to disable the contact for this step. The world is
+/// locked: creating or destroying anything throws perpdot::Error.
 using PreSolveFn = std::function<bool(ShapeId shapeA, ShapeId shapeB, const ContactData& contact)>;
 
 }  // namespace perpdot

@@ -1,7 +1,8 @@
-// Joint definitions. Every joint is a set of constraint rows solved in the same loop as contacts,
-// each row's effective mass built from perpDot terms (see src/core/joint_*.cpp).
-// Anchors are in each body's local frame; `hertz` = 0 means rigid, otherwise a spring with
-// the given frequency and damping ratio.
+/// @file
+/// Joint definitions. Every joint is a set of constraint rows solved in the same loop as contacts,
+/// each row's effective mass built from perpDot terms (see src/core/joint_*.cpp).
+/// Anchors are in each body's local frame; `hertz` = 0 means rigid, otherwise a spring with
+/// the given frequency and damping ratio.
 #pragma once
 
 #include <cstdint>
@@ -11,92 +12,111 @@
 
 namespace perpdot {
 
+/// Which kind of joint a JointId names.
 enum class JointType : uint8_t { Revolute, Prismatic, Distance, Weld, Wheel, Motor, Mouse };
 
+/// A hinge: the anchors coincide, B turns freely about them, optionally limited and motorised.
 struct RevoluteJointDef {
-    BodyId bodyA, bodyB;
-    Vec2 localAnchorA, localAnchorB;
-    float referenceAngle = 0.0f;  // θB - θA when the joint angle is zero
-    bool enableLimit = false;
-    float lowerAngle = 0.0f, upperAngle = 0.0f;
-    bool enableMotor = false;
-    float motorSpeed = 0.0f;       // rad/s
-    float maxMotorTorque = 0.0f;   // N·m
-    bool collideConnected = false;
-    void* userData = nullptr;
+    BodyId bodyA;  ///< the first body
+    BodyId bodyB;  ///< the second body
+    Vec2 localAnchorA;  ///< anchor point, A's frame
+    Vec2 localAnchorB;  ///< anchor point, B's frame
+    float referenceAngle = 0.0f;  ///< θB - θA when the joint angle is zero
+    bool enableLimit = false;  ///< keep the joint angle within [lowerAngle, upperAngle]
+    float lowerAngle = 0.0f;   ///< rad
+    float upperAngle = 0.0f;   ///< rad
+    bool enableMotor = false;  ///< drive the relative angular speed to motorSpeed
+    float motorSpeed = 0.0f;       ///< rad/s
+    float maxMotorTorque = 0.0f;   ///< N·m
+    bool collideConnected = false;  ///< whether A and B still collide with each other
+    void* userData = nullptr;       ///< the application's pointer
 };
 
+/// A slider: B moves along an axis fixed in A and does not turn relative to A.
 struct PrismaticJointDef {
-    BodyId bodyA, bodyB;
-    Vec2 localAnchorA, localAnchorB;
-    Vec2 localAxisA{1.0f, 0.0f};
-    float referenceAngle = 0.0f;
-    bool enableLimit = false;
-    float lower = 0.0f, upper = 0.0f;  // metres along the axis
-    bool enableMotor = false;
-    float motorSpeed = 0.0f;          // m/s
-    float maxMotorForce = 0.0f;       // N
-    bool collideConnected = false;
-    void* userData = nullptr;
+    BodyId bodyA;  ///< the first body
+    BodyId bodyB;  ///< the second body
+    Vec2 localAnchorA;  ///< anchor point, A's frame
+    Vec2 localAnchorB;  ///< anchor point, B's frame
+    Vec2 localAxisA{1.0f, 0.0f};  ///< the sliding axis, A's frame (normalised on creation)
+    float referenceAngle = 0.0f;  ///< θB - θA held by the joint
+    bool enableLimit = false;     ///< keep the translation within [lower, upper]
+    float lower = 0.0f;           ///< metres along the axis
+    float upper = 0.0f;           ///< metres along the axis
+    bool enableMotor = false;     ///< drive the relative speed along the axis to motorSpeed
+    float motorSpeed = 0.0f;          ///< m/s
+    float maxMotorForce = 0.0f;       ///< N
+    bool collideConnected = false;  ///< whether A and B still collide with each other
+    void* userData = nullptr;       ///< the application's pointer
 };
 
+/// A rod or spring between two anchors, optionally with a minimum and maximum length.
 struct DistanceJointDef {
-    BodyId bodyA, bodyB;
-    Vec2 localAnchorA, localAnchorB;
-    float length = 1.0f;
-    float minLength = 0.0f;
-    float maxLength = 1.0e30f;
-    float hertz = 0.0f;         // 0: rigid rod of `length`
-    float dampingRatio = 0.0f;
-    bool collideConnected = false;
-    void* userData = nullptr;
+    BodyId bodyA;  ///< the first body
+    BodyId bodyB;  ///< the second body
+    Vec2 localAnchorA;  ///< anchor point, A's frame
+    Vec2 localAnchorB;  ///< anchor point, B's frame
+    float length = 1.0f;        ///< rest length, m
+    float minLength = 0.0f;     ///< the anchors never come closer than this
+    float maxLength = 1.0e30f;  ///< nor move further apart than this
+    float hertz = 0.0f;         ///< 0: rigid rod of `length`
+    float dampingRatio = 0.0f;  ///< spring damping ratio ζ
+    bool collideConnected = false;  ///< whether A and B still collide with each other
+    void* userData = nullptr;       ///< the application's pointer
 };
 
+/// Glues B to A: no relative motion (hertz = 0), or a linear and angular spring.
 struct WeldJointDef {
-    BodyId bodyA, bodyB;
-    Vec2 localAnchorA, localAnchorB;
-    float referenceAngle = 0.0f;
-    float hertz = 0.0f;         // 0: rigid
-    float dampingRatio = 0.0f;
-    bool collideConnected = false;
-    void* userData = nullptr;
+    BodyId bodyA;  ///< the first body
+    BodyId bodyB;  ///< the second body
+    Vec2 localAnchorA;  ///< anchor point, A's frame
+    Vec2 localAnchorB;  ///< anchor point, B's frame
+    float referenceAngle = 0.0f;  ///< θB - θA held by the joint
+    float hertz = 0.0f;         ///< 0: rigid
+    float dampingRatio = 0.0f;  ///< spring damping ratio ζ
+    bool collideConnected = false;  ///< whether A and B still collide with each other
+    void* userData = nullptr;       ///< the application's pointer
 };
 
+/// A wheel on a suspension: B slides along a sprung axis of A and turns freely, optionally motorised.
 struct WheelJointDef {
-    BodyId bodyA, bodyB;  // A: chassis, B: wheel
-    Vec2 localAnchorA, localAnchorB;
-    Vec2 localAxisA{0.0f, 1.0f};  // suspension axis
-    float hertz = 1.0f;           // suspension spring
-    float dampingRatio = 0.7f;
-    bool enableMotor = false;
-    float motorSpeed = 0.0f;
-    float maxMotorTorque = 0.0f;
-    bool collideConnected = false;
-    void* userData = nullptr;
+    BodyId bodyA;  ///< the chassis
+    BodyId bodyB;  ///< the wheel
+    Vec2 localAnchorA;  ///< anchor point, A's frame
+    Vec2 localAnchorB;  ///< anchor point, B's frame
+    Vec2 localAxisA{0.0f, 1.0f};  ///< suspension axis
+    float hertz = 1.0f;           ///< suspension spring
+    float dampingRatio = 0.7f;    ///< suspension damping ratio ζ
+    bool enableMotor = false;     ///< drive the wheel's relative angular speed to motorSpeed
+    float motorSpeed = 0.0f;      ///< rad/s
+    float maxMotorTorque = 0.0f;  ///< N·m
+    bool collideConnected = false;  ///< whether A and B still collide with each other
+    void* userData = nullptr;       ///< the application's pointer
 };
 
-// Drives B towards A's frame offset by (linearOffset, angularOffset) with bounded force and torque.
+/// Drives B towards A's frame offset by (linearOffset, angularOffset) with bounded force and torque.
 struct MotorJointDef {
-    BodyId bodyA, bodyB;
-    Vec2 linearOffset;            // in A's frame
-    float angularOffset = 0.0f;
-    float maxForce = 1.0f;
-    float maxTorque = 1.0f;
-    float correctionFactor = 0.3f;
-    bool collideConnected = false;
-    void* userData = nullptr;
+    BodyId bodyA;  ///< the first body
+    BodyId bodyB;  ///< the second body
+    Vec2 linearOffset;            ///< in A's frame
+    float angularOffset = 0.0f;     ///< target θB - θA, rad
+    float maxForce = 1.0f;          ///< N
+    float maxTorque = 1.0f;         ///< N·m
+    float correctionFactor = 0.3f;  ///< fraction of the position error corrected per step, 0..1
+    bool collideConnected = false;  ///< whether A and B still collide with each other
+    void* userData = nullptr;       ///< the application's pointer
 };
 
-// Pulls a point of bodyB towards a world target with a soft spring (mouse dragging).
+/// Pulls a point of bodyB towards a world target with a soft spring (mouse dragging).
 struct MouseJointDef {
-    BodyId bodyA;  // usually a static body; only bodyB moves
-    BodyId bodyB;
-    Vec2 target;   // world
-    float hertz = 5.0f;
-    float dampingRatio = 0.7f;
-    float maxForce = 1000.0f;
-    bool collideConnected = false;
-    void* userData = nullptr;
+    BodyId bodyA;  ///< usually a static body; only bodyB moves
+    BodyId bodyB;  ///< the body dragged
+    Vec2 target;   ///< world
+    float hertz = 5.0f;         ///< spring frequency
+    float dampingRatio = 0.7f;  ///< spring damping ratio ζ
+    float maxForce = 1000.0f;   ///< N
+    bool collideConnected = false;  ///< whether A and B still collide with each other
+    void* userData = nullptr;       ///< the application's pointer
 };
 
 }  // namespace perpdot

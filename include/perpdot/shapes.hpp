@@ -1,4 +1,5 @@
-// Collision shapes in a body's local frame, their materials, and their mass properties.
+/// @file
+/// Collision shapes in a body's local frame, their materials, and their mass properties.
 #pragma once
 
 #include <array>
@@ -11,87 +12,98 @@
 
 namespace perpdot {
 
+/// The most vertices a Polygon holds (Box2D's b2_maxPolygonVertices).
 inline constexpr int maxPolygonVertices = 8;
-// Shape coordinates (in the body frame) must lie within ±maxShapeCoordinate metres, Box2D v3's
-// "huge": beyond it a float keeps no millimetres and Box2D's distance routines break down.
+/// Shape coordinates (in the body frame) must lie within ±maxShapeCoordinate metres, Box2D v3's
+/// "huge": beyond it a float keeps no millimetres and Box2D's distance routines break down.
 inline constexpr float maxShapeCoordinate = 1.0e5f;
+/// Whether both coordinates lie within ±maxShapeCoordinate.
 inline bool withinShapeRange(Vec2 v) { return std::fabs(v.x) <= maxShapeCoordinate && std::fabs(v.y) <= maxShapeCoordinate; }
 
+/// Which geometry a shape holds.
 enum class ShapeType : uint8_t { Circle, Polygon, Segment, Chain };
 
+/// A solid disc.
 struct Circle {
-    Vec2 center{};
-    float radius = 0.5f;
+    Vec2 center{};        ///< body frame
+    float radius = 0.5f;  ///< m
+    /// Exact equality of every field.
     friend bool operator==(const Circle&, const Circle&) = default;
 };
 
-// A convex polygon, counter-clockwise, optionally rounded by `radius`. Build it with
-// makePolygon() or makeBox(), which validate and normalise the winding.
+/// A convex polygon, counter-clockwise, optionally rounded by `radius`. Build it with
+/// makePolygon() or makeBox(), which validate and normalise the winding.
 struct Polygon {
-    std::array<Vec2, maxPolygonVertices> vertices{};
-    int count = 0;
-    float radius = 0.0f;
+    std::array<Vec2, maxPolygonVertices> vertices{};  ///< body frame; the first `count` are used
+    int count = 0;                                     ///< number of vertices, 3..maxPolygonVertices
+    float radius = 0.0f;                               ///< rounding: the outline is pushed out by this much
+    /// Exact equality of every field.
     friend bool operator==(const Polygon&, const Polygon&) = default;
 };
 
-// Massless line segment (static geometry).
+/// Massless line segment (static geometry).
 struct Segment {
-    Vec2 v1{};
-    Vec2 v2{};
+    Vec2 v1{};  ///< one end, body frame
+    Vec2 v2{};  ///< the other end, body frame
+    /// Exact equality of every field.
     friend bool operator==(const Segment&, const Segment&) = default;
 };
 
-// Massless chain of segments whose inner corners do not catch sliding shapes.
+/// Massless chain of segments whose inner corners do not catch sliding shapes.
 struct Chain {
-    std::vector<Vec2> vertices;
-    bool loop = false;
+    std::vector<Vec2> vertices;  ///< body frame, in order along the chain
+    bool loop = false;           ///< the last vertex joins the first
+    /// Exact equality of every field.
     friend bool operator==(const Chain&, const Chain&) = default;
 };
 
-// Throws perpdot::Error unless `points` is 3..8 distinct points forming a strictly convex polygon.
-// Either winding is accepted; the result is counter-clockwise.
+/// Throws perpdot::Error unless `points` is 3..8 distinct points forming a strictly convex polygon.
+/// Either winding is accepted; the result is counter-clockwise.
 Polygon makePolygon(std::span<const Vec2> points, float radius = 0.0f);
-// Box with half extents (hx, hy), centred at `center` and turned by `angle` in the body frame.
+/// Box with half extents (hx, hy), centred at `center` and turned by `angle` in the body frame.
 Polygon makeBox(float hx, float hy, Vec2 center = {}, float angle = 0.0f);
 
-// Collision filtering as in Box2D: two shapes collide when each one's category is in the other's
-// mask, unless they share a non-zero group (positive: always collide, negative: never).
+/// Collision filtering as in Box2D: two shapes collide when each one's category is in the other's
+/// mask, unless they share a non-zero group (positive: always collide, negative: never).
 struct Filter {
-    uint16_t category = 0x0001;
-    uint16_t mask = 0xFFFF;
-    int16_t group = 0;
+    uint16_t category = 0x0001;  ///< the category bits this shape belongs to
+    uint16_t mask = 0xFFFF;      ///< the categories it collides with
+    int16_t group = 0;           ///< non-zero: overrides category and mask for shapes of the same group
+    /// Exact equality of every field.
     friend bool operator==(const Filter&, const Filter&) = default;
 };
 
+/// Whether shapes with filters `a` and `b` collide (see Filter).
 bool shouldCollide(const Filter& a, const Filter& b);
 
+/// Everything createShape() needs besides the geometry: material, events, filter.
 struct ShapeDef {
-    float density = 1.0f;       // kg/m²
-    float friction = 0.6f;      // Coulomb μ; mixed as sqrt(μA μB)
-    float restitution = 0.0f;   // e; mixed as max(eA, eB)
-    bool sensor = false;        // reports overlaps (World::sensorEvents), takes no collision response
-    float rollingResistance = 0.0f;  // angular drag; mixed as max(rA, rB)·(largest rounding radius)
-    float tangentSpeed = 0.0f;  // m/s conveyor surface, clockwise around the shape; summed A + B
-    bool enableContactEvents = true;   // begin/end touch events
-    bool enableHitEvents = false;      // hit events
-    bool enableSensorEvents = true;    // whether sensors see this shape
-    bool enablePreSolveEvents = false; // whether World's pre-solve callback sees its contacts
-    Filter filter{};
-    void* userData = nullptr;
+    float density = 1.0f;       ///< kg/m²
+    float friction = 0.6f;      ///< Coulomb μ; mixed as sqrt(μA μB)
+    float restitution = 0.0f;   ///< e; mixed as max(eA, eB)
+    bool sensor = false;        ///< reports overlaps (World::sensorEvents), takes no collision response
+    float rollingResistance = 0.0f;  ///< angular drag; mixed as max(rA, rB)·(largest rounding radius)
+    float tangentSpeed = 0.0f;  ///< m/s conveyor surface, clockwise around the shape; summed A + B
+    bool enableContactEvents = true;   ///< begin/end touch events
+    bool enableHitEvents = false;      ///< hit events
+    bool enableSensorEvents = true;    ///< whether sensors see this shape
+    bool enablePreSolveEvents = false; ///< whether World's pre-solve callback sees its contacts
+    Filter filter{};            ///< which other shapes it collides with
+    void* userData = nullptr;   ///< the application's pointer
 };
 
-// Mass m, centre of mass (body frame) and scalar moment of inertia I about that centre.
+/// Mass m, centre of mass (body frame) and scalar moment of inertia I about that centre.
 struct MassData {
-    float mass = 0.0f;
-    Vec2 center{};
-    float rotationalInertia = 0.0f;
+    float mass = 0.0f;               ///< m, kg
+    Vec2 center{};                   ///< centre of mass, body frame
+    float rotationalInertia = 0.0f;  ///< I about the centre of mass, kg·m²
 };
 
-// Area integrals: m = ρ∫dA, c = ∫r dA / A, I = ρ∫|r - c|² dA.
+/// Area integrals: m = ρ∫dA, c = ∫r dA / A, I = ρ∫|r - c|² dA.
 MassData computeMass(const Circle& circle, float density);
-MassData computeMass(const Polygon& polygon, float density);  // includes the rounding radius
+MassData computeMass(const Polygon& polygon, float density);  ///< includes the rounding radius
 
-// Parallel-axis sum: parts about their own centres -> whole about the combined centre.
+/// Parallel-axis sum: parts about their own centres -> whole about the combined centre.
 MassData combineMass(std::span<const MassData> parts);
 
 }  // namespace perpdot

@@ -1,4 +1,5 @@
-// The World owns bodies, shapes, joints and contacts and advances them with step().
+/// @file
+/// The World owns bodies, shapes, joints and contacts and advances them with step().
 #pragma once
 
 #include <cstdint>
@@ -17,183 +18,199 @@
 
 namespace perpdot {
 
+/// The world's settings: gravity and the solver's soft-step parameters (Box2D v3's defaults).
 struct WorldDef {
-    Vec2 gravity{0.0f, -10.0f};
-    int substeps = 4;                  // solver substeps per step (soft step)
-    float contactHertz = 30.0f;        // contact stiffness, capped at a quarter of the substep rate
-    float contactDampingRatio = 10.0f;
-    float jointHertz = 60.0f;          // stiffness of rigid joint rows
-    float jointDampingRatio = 2.0f;
-    float contactPushMaxVelocity = 3.0f;  // m/s, cap on the speed that resolves overlap
-    float restitutionThreshold = 1.0f;    // m/s, slower approaches do not bounce
-    float maxLinearSpeed = 1000.0f;       // m/s, clamp against blow-ups (a 500 m/s bullet must fit)
-    float hitEventThreshold = 1.0f;       // m/s, slower approaches report no ContactHitEvent
-    bool enableSleep = true;
-    bool enableWarmStarting = true;
-    bool enableContinuous = true;         // time of impact for fast bodies against static shapes
+    Vec2 gravity{0.0f, -10.0f};  ///< m/s²
+    int substeps = 4;                  ///< solver substeps per step (soft step)
+    float contactHertz = 30.0f;        ///< contact stiffness, capped at a quarter of the substep rate
+    float contactDampingRatio = 10.0f;  ///< ζ of the contact rows
+    float jointHertz = 60.0f;          ///< stiffness of rigid joint rows
+    float jointDampingRatio = 2.0f;  ///< ζ of rigid joint rows
+    float contactPushMaxVelocity = 3.0f;  ///< m/s, cap on the speed that resolves overlap
+    float restitutionThreshold = 1.0f;    ///< m/s, slower approaches do not bounce
+    float maxLinearSpeed = 1000.0f;       ///< m/s, clamp against blow-ups (a 500 m/s bullet must fit)
+    float hitEventThreshold = 1.0f;       ///< m/s, slower approaches report no ContactHitEvent
+    bool enableSleep = true;  ///< bodies at rest fall asleep (islands)
+    bool enableWarmStarting = true;  ///< start each step from the last step's impulses
+    bool enableContinuous = true;         ///< time of impact for fast bodies against static shapes
 };
 
+/// One point of a contact manifold.
 struct ContactPoint {
-    Vec2 point;               // world, midway between the surfaces
-    float separation = 0.0f;  // negative when overlapping
-    float normalImpulse = 0.0f;
-    float tangentImpulse = 0.0f;
-    uint32_t id = 0;          // feature id that carries warm starting between steps
+    Vec2 point;               ///< world, midway between the surfaces
+    float separation = 0.0f;  ///< negative when overlapping
+    float normalImpulse = 0.0f;  ///< N·s along the normal, accumulated over the last step
+    float tangentImpulse = 0.0f;  ///< N·s of friction along perp(normal)
+    uint32_t id = 0;          ///< feature id that carries warm starting between steps
 };
 
+/// A touching contact between two shapes: its manifold and impulses.
 struct ContactData {
-    ShapeId shapeA, shapeB;
-    Vec2 normal;  // from A to B
-    int pointCount = 0;
-    ContactPoint points[2];
+    ShapeId shapeA;  ///< one shape
+    ShapeId shapeB;  ///< the other; the normal points from A to B
+    Vec2 normal;  ///< from A to B
+    int pointCount = 0;  ///< points used, 0..2
+    ContactPoint points[2];  ///< the first pointCount are valid
 };
 
-// Pool sizes and health counters, for soak tests and tools.
+/// Pool sizes and health counters, for soak tests and tools.
 struct WorldStats {
-    int bodies = 0, shapes = 0, contacts = 0;            // live; contacts: every cached pair, touching or not
-    int bodySlots = 0, shapeSlots = 0, contactSlots = 0;  // pool sizes (live + free): bounded in steady state
-    int frozenBodies = 0;  // times a body was frozen because its state became NaN or infinite
+    int bodies = 0;        ///< live bodies
+    int shapes = 0;        ///< live shapes
+    int contacts = 0;      ///< every cached pair, touching or not
+    int bodySlots = 0;     ///< body pool size (live + free): bounded in steady state
+    int shapeSlots = 0;    ///< shape pool size (live + free)
+    int contactSlots = 0;  ///< contact pool size (live + free)
+    int frozenBodies = 0;  ///< times a body was frozen because its state became NaN or infinite
 };
 
+/// The simulation: bodies, shapes, joints and contacts, advanced by step(). Every call that takes an
+/// id throws perpdot::Error when the id is stale (its object was destroyed) or null.
 class World {
 public:
-    explicit World(const WorldDef& def = {});
-    ~World();
+    explicit World(const WorldDef& def = {});  ///< An empty world with settings `def`.
+    ~World();  ///< Destroys everything in the world.
+    /// Takes over another world; the moved-from world may only be destroyed or assigned.
     World(World&&) noexcept;
-    World& operator=(World&&) noexcept;
-    World(const World&) = delete;
-    World& operator=(const World&) = delete;
+    World& operator=(World&&) noexcept;  ///< Takes over another world.
+    World(const World&) = delete;  ///< Not copyable: use snapshot() and restore().
+    World& operator=(const World&) = delete;  ///< Not copyable.
 
-    // Advance by `timeStep` seconds. Never throws; allocates nothing once contacts are cached.
+    /// Advance by `timeStep` seconds. Never throws; allocates nothing once contacts are cached.
     void step(float timeStep);
 
     // --- bodies ---
-    BodyId createBody(const BodyDef& def);
-    void destroyBody(BodyId body);  // also destroys its shapes, joints and contacts
-    bool isValid(BodyId body) const;
-    std::vector<BodyId> bodies() const;  // in creation order of live bodies
-    int bodyCount() const;
+    BodyId createBody(const BodyDef& def);  ///< A new body; Error if `def` is invalid (NaN, ...).
+    void destroyBody(BodyId body);  ///< also destroys its shapes, joints and contacts
+    bool isValid(BodyId body) const;  ///< Whether `body` names a live body.
+    std::vector<BodyId> bodies() const;  ///< in creation order of live bodies
+    int bodyCount() const;  ///< Live bodies.
 
-    BodyType bodyType(BodyId body) const;
-    Vec2 position(BodyId body) const;      // body origin
-    float angle(BodyId body) const;        // accumulated, not wrapped
-    Transform transform(BodyId body) const;
-    Vec2 worldCenter(BodyId body) const;   // centre of mass, world
-    Vec2 localCenter(BodyId body) const;   // centre of mass, body frame
-    Vec2 linearVelocity(BodyId body) const;
-    float angularVelocity(BodyId body) const;
-    float mass(BodyId body) const;
-    float rotationalInertia(BodyId body) const;  // about the centre of mass
-    Vec2 pointVelocity(BodyId body, Vec2 worldPoint) const;  // v + ω perp(P - CM)
-    bool isAwake(BodyId body) const;
-    float gravityScale(BodyId body) const;
-    void* userData(BodyId body) const;
+    BodyType bodyType(BodyId body) const;  ///< Static, kinematic or dynamic.
+    Vec2 position(BodyId body) const;      ///< body origin
+    float angle(BodyId body) const;        ///< accumulated, not wrapped
+    Transform transform(BodyId body) const;  ///< Origin and rotation.
+    Vec2 worldCenter(BodyId body) const;   ///< centre of mass, world
+    Vec2 localCenter(BodyId body) const;   ///< centre of mass, body frame
+    Vec2 linearVelocity(BodyId body) const;  ///< v of the centre of mass
+    float angularVelocity(BodyId body) const;  ///< ω, rad/s
+    float mass(BodyId body) const;  ///< kg; 0 for static and kinematic bodies
+    float rotationalInertia(BodyId body) const;  ///< about the centre of mass
+    Vec2 pointVelocity(BodyId body, Vec2 worldPoint) const;  ///< v + ω perp(P - CM)
+    bool isAwake(BodyId body) const;  ///< false while asleep
+    float gravityScale(BodyId body) const;  ///< BodyDef::gravityScale
+    void* userData(BodyId body) const;  ///< BodyDef::userData
 
-    void setTransform(BodyId body, Vec2 position, float angle);
-    void setLinearVelocity(BodyId body, Vec2 v);
-    void setAngularVelocity(BodyId body, float omega);
-    void setAwake(BodyId body, bool awake);
-    void setGravityScale(BodyId body, float scale);
-    void setLinearDamping(BodyId body, float damping);
-    void setAngularDamping(BodyId body, float damping);
+    void setTransform(BodyId body, Vec2 position, float angle);  ///< Teleport the body origin (wakes it).
+    void setLinearVelocity(BodyId body, Vec2 v);  ///< v of the centre of mass
+    void setAngularVelocity(BodyId body, float omega);  ///< ω, rad/s
+    void setAwake(BodyId body, bool awake);  ///< Wake the body, or put it to sleep.
+    void setGravityScale(BodyId body, float scale);  ///< BodyDef::gravityScale
+    void setLinearDamping(BodyId body, float damping);  ///< BodyDef::linearDamping
+    void setAngularDamping(BodyId body, float damping);  ///< BodyDef::angularDamping
 
     // --- forces and impulses (wake the body) ---
-    void applyForce(BodyId body, Vec2 force, Vec2 worldPoint);  // F and τ = perpDot(P - CM, F)
-    void applyForceToCenter(BodyId body, Vec2 force);
-    void applyTorque(BodyId body, float torque);
-    void applyLinearImpulse(BodyId body, Vec2 impulse, Vec2 worldPoint);  // Δv = J/m, Δω = perpDot(r, J)/I
-    void applyLinearImpulseToCenter(BodyId body, Vec2 impulse);
-    void applyAngularImpulse(BodyId body, float impulse);
+    void applyForce(BodyId body, Vec2 force, Vec2 worldPoint);  ///< F and τ = perpDot(P - CM, F)
+    void applyForceToCenter(BodyId body, Vec2 force);  ///< F at the centre of mass: no torque
+    void applyTorque(BodyId body, float torque);  ///< τ, N·m, acting during the next step
+    void applyLinearImpulse(BodyId body, Vec2 impulse, Vec2 worldPoint);  ///< Δv = J/m, Δω = perpDot(r, J)/I
+    void applyLinearImpulseToCenter(BodyId body, Vec2 impulse);  ///< Δv = J/m
+    void applyAngularImpulse(BodyId body, float impulse);  ///< Δω = L/I
 
     // --- shapes ---
+    /// A new shape on `body`, which gains its mass (Error if the geometry or `def` is invalid).
     ShapeId createShape(BodyId body, const ShapeDef& def, const Circle& circle);
+    /// A new polygon on `body`.
     ShapeId createShape(BodyId body, const ShapeDef& def, const Polygon& polygon);
+    /// A new segment on `body`.
     ShapeId createShape(BodyId body, const ShapeDef& def, const Segment& segment);
-    ShapeId createShape(BodyId body, const ShapeDef& def, const Chain& chain);
-    void destroyShape(ShapeId shape);
-    bool isValid(ShapeId shape) const;
-    std::vector<ShapeId> shapes(BodyId body) const;
-    BodyId shapeBody(ShapeId shape) const;
-    ShapeType shapeType(ShapeId shape) const;
-    const Circle& circle(ShapeId shape) const;    // Error if the shape is not a circle
-    const Polygon& polygon(ShapeId shape) const;
-    const Segment& segment(ShapeId shape) const;
-    const Chain& chain(ShapeId shape) const;
-    float friction(ShapeId shape) const;
-    float restitution(ShapeId shape) const;
-    float density(ShapeId shape) const;
-    bool isSensor(ShapeId shape) const;
-    Filter filter(ShapeId shape) const;
-    AABB aabb(ShapeId shape) const;  // tight world bounds
-    void setFriction(ShapeId shape, float friction);
-    void setRestitution(ShapeId shape, float restitution);
-    void setDensity(ShapeId shape, float density);  // recomputes the body's mass
-    float rollingResistance(ShapeId shape) const;
-    float tangentSpeed(ShapeId shape) const;
-    void setRollingResistance(ShapeId shape, float resistance);
-    void setTangentSpeed(ShapeId shape, float speed);  // conveyor belt surface speed, m/s
-    void enablePreSolveEvents(ShapeId shape, bool enable);  // ShapeDef::enablePreSolveEvents
+    ShapeId createShape(BodyId body, const ShapeDef& def, const Chain& chain);  ///< A new chain on `body`.
+    void destroyShape(ShapeId shape);  ///< Also destroys its contacts; the body's mass is recomputed.
+    bool isValid(ShapeId shape) const;  ///< Whether `shape` names a live shape.
+    std::vector<ShapeId> shapes(BodyId body) const;  ///< The shapes of `body`.
+    BodyId shapeBody(ShapeId shape) const;  ///< The body the shape is on.
+    ShapeType shapeType(ShapeId shape) const;  ///< Which geometry it holds.
+    const Circle& circle(ShapeId shape) const;    ///< Error if the shape is not a circle
+    const Polygon& polygon(ShapeId shape) const;  ///< Error if not a polygon
+    const Segment& segment(ShapeId shape) const;  ///< Error if not a segment
+    const Chain& chain(ShapeId shape) const;  ///< Error if not a chain
+    float friction(ShapeId shape) const;  ///< ShapeDef::friction
+    float restitution(ShapeId shape) const;  ///< ShapeDef::restitution
+    float density(ShapeId shape) const;  ///< ShapeDef::density
+    bool isSensor(ShapeId shape) const;  ///< ShapeDef::sensor
+    Filter filter(ShapeId shape) const;  ///< ShapeDef::filter
+    AABB aabb(ShapeId shape) const;  ///< tight world bounds
+    void setFriction(ShapeId shape, float friction);  ///< ShapeDef::friction
+    void setRestitution(ShapeId shape, float restitution);  ///< ShapeDef::restitution
+    void setDensity(ShapeId shape, float density);  ///< recomputes the body's mass
+    float rollingResistance(ShapeId shape) const;  ///< ShapeDef::rollingResistance
+    float tangentSpeed(ShapeId shape) const;  ///< ShapeDef::tangentSpeed
+    void setRollingResistance(ShapeId shape, float resistance);  ///< ShapeDef::rollingResistance
+    void setTangentSpeed(ShapeId shape, float speed);  ///< conveyor belt surface speed, m/s
+    void enablePreSolveEvents(ShapeId shape, bool enable);  ///< ShapeDef::enablePreSolveEvents
 
     // --- joints ---
+    /// A new joint between def.bodyA and def.bodyB (Error if `def` is invalid).
     JointId createJoint(const RevoluteJointDef& def);
-    JointId createJoint(const PrismaticJointDef& def);
-    JointId createJoint(const DistanceJointDef& def);
-    JointId createJoint(const WeldJointDef& def);
-    JointId createJoint(const WheelJointDef& def);
-    JointId createJoint(const MotorJointDef& def);
-    JointId createJoint(const MouseJointDef& def);
-    void destroyJoint(JointId joint);
-    bool isValid(JointId joint) const;
-    std::vector<JointId> joints() const;
-    JointType jointType(JointId joint) const;
-    BodyId jointBodyA(JointId joint) const;
-    BodyId jointBodyB(JointId joint) const;
-    Vec2 jointAnchorA(JointId joint) const;  // world
-    Vec2 jointAnchorB(JointId joint) const;  // world
-    Vec2 jointReactionForce(JointId joint) const;   // on B, N, from the last step
-    float jointReactionTorque(JointId joint) const; // on B, N·m, from the last step
-    void setMouseTarget(JointId joint, Vec2 target);
-    void setMotorSpeed(JointId joint, float speed);  // revolute, prismatic, wheel
+    JointId createJoint(const PrismaticJointDef& def);  ///< A new prismatic joint.
+    JointId createJoint(const DistanceJointDef& def);  ///< A new distance joint.
+    JointId createJoint(const WeldJointDef& def);  ///< A new weld joint.
+    JointId createJoint(const WheelJointDef& def);  ///< A new wheel joint.
+    JointId createJoint(const MotorJointDef& def);  ///< A new motor joint.
+    JointId createJoint(const MouseJointDef& def);  ///< A new mouse joint.
+    void destroyJoint(JointId joint);  ///< Wakes its bodies.
+    bool isValid(JointId joint) const;  ///< Whether `joint` names a live joint.
+    std::vector<JointId> joints() const;  ///< Live joints, in creation order.
+    JointType jointType(JointId joint) const;  ///< Which kind of joint.
+    BodyId jointBodyA(JointId joint) const;  ///< The definition's bodyA.
+    BodyId jointBodyB(JointId joint) const;  ///< The definition's bodyB.
+    Vec2 jointAnchorA(JointId joint) const;  ///< world
+    Vec2 jointAnchorB(JointId joint) const;  ///< world
+    Vec2 jointReactionForce(JointId joint) const;   ///< on B, N, from the last step
+    float jointReactionTorque(JointId joint) const; ///< on B, N·m, from the last step
+    void setMouseTarget(JointId joint, Vec2 target);  ///< Mouse joints: the world target.
+    void setMotorSpeed(JointId joint, float speed);  ///< revolute, prismatic, wheel
 
     // --- contacts ---
-    int contactCount() const;  // touching contacts
-    std::vector<ContactData> contacts() const;  // touching contacts, for drawing and inspection
+    int contactCount() const;  ///< touching contacts
+    std::vector<ContactData> contacts() const;  ///< touching contacts, for drawing and inspection
 
     // --- events (of the last step; valid until the next step) ---
-    ContactEvents contactEvents() const;
-    SensorEvents sensorEvents() const;
-    void setPreSolve(PreSolveFn callback);  // empty function: none
+    ContactEvents contactEvents() const;  ///< Begin, end and hit events of the last step.
+    SensorEvents sensorEvents() const;  ///< Sensor begin and end events of the last step.
+    void setPreSolve(PreSolveFn callback);  ///< empty function: none
 
     // --- queries ---
-    // Closest hit of the ray origin -> origin + translation, if any.
+    /// Closest hit of the ray origin -> origin + translation, if any.
     std::optional<RayHit> castRayClosest(Vec2 origin, Vec2 translation, const Filter& filter = {}) const;
-    // Every hit (one per shape child), ordered by fraction.
+    /// Every hit (one per shape child), ordered by fraction.
     std::vector<RayHit> castRay(Vec2 origin, Vec2 translation, const Filter& filter = {}) const;
-    // Shapes whose tight bounds overlap `box`.
+    /// Shapes whose tight bounds overlap `box`.
     std::vector<ShapeId> overlapAABB(const AABB& box, const Filter& filter = {}) const;
-    // Solid shapes (circles, polygons) containing the point.
+    /// Solid shapes (circles, polygons) containing the point.
     std::vector<ShapeId> overlapPoint(Vec2 point, const Filter& filter = {}) const;
-    // Shapes overlapping a query shape placed at `xf`.
+    /// Shapes overlapping a query shape placed at `xf`.
     std::vector<ShapeId> overlapShape(const Circle& shape, const Transform& xf, const Filter& filter = {}) const;
+    /// Shapes overlapping a query polygon placed at `xf`.
     std::vector<ShapeId> overlapShape(const Polygon& shape, const Transform& xf, const Filter& filter = {}) const;
 
     // --- snapshots (bit-exact: restore + N steps equals N steps) ---
-    // Versioned bytes of the whole state: settings, bodies, shapes, joints, and the contact cache
-    // with its warm-start impulses, and end events raised since the last step. Not saved: userData
-    // pointers, the pre-solve callback, the events of the last step.
+    /// Versioned bytes of the whole state: settings, bodies, shapes, joints, and the contact cache
+    /// with its warm-start impulses, and end events raised since the last step. Not saved: userData
+    /// pointers, the pre-solve callback, the events of the last step.
     std::vector<uint8_t> snapshot() const;
-    // Replaces this world's state with a snapshot's (ids from the snapshotted world stay valid, the
-    // pre-solve callback stays). Corrupt or truncated bytes: Error, and the world is unchanged.
+    /// Replaces this world's state with a snapshot's (ids from the snapshotted world stay valid, the
+    /// pre-solve callback stays). Corrupt or truncated bytes: Error, and the world is unchanged.
     void restore(std::span<const uint8_t> snapshot);
 
-    WorldStats stats() const;
+    WorldStats stats() const;  ///< Pool sizes and health counters.
 
     // --- settings ---
-    const WorldDef& settings() const;
-    void setGravity(Vec2 gravity);
-    void setSubsteps(int substeps);
+    const WorldDef& settings() const;  ///< The current settings.
+    void setGravity(Vec2 gravity);  ///< WorldDef::gravity
+    void setSubsteps(int substeps);  ///< WorldDef::substeps (Error outside 1..64)
 
-    struct Impl;  // internal; src/core and src/collide see it
+    struct Impl;  ///< internal; src/core and src/collide see it
 
 private:
     std::unique_ptr<Impl> impl_;
