@@ -1,4 +1,4 @@
-// The engine-neutral scene of ../shared/scene-format.md (`perpdot-scene/1`): what the JSON says,
+// The engine-neutral scene of docs/scene-format.md (`perpdot-scene/1`): what the JSON says,
 // nothing more. Both perpdot's World and Box2D's b2World are built from it.
 // Every member has an initializer so that designated initializers may skip any of them.
 #pragma once
