@@ -37,6 +37,8 @@ class ByteReader {
 public:
     explicit ByteReader(std::span<const uint8_t> bytes) : bytes_(bytes) {}
 
+    uint32_t version = 0;  // the format version of what is read, once its header is
+
     uint8_t u8() { return static_cast<uint8_t>(unsigned_(1)); }
     uint16_t u16() { return static_cast<uint16_t>(unsigned_(2)); }
     uint32_t u32() { return static_cast<uint32_t>(unsigned_(4)); }
@@ -80,6 +82,10 @@ public:
         if (n > 0x7FFFFFFFu || n * static_cast<uint64_t>(minBytes) > bytes_.size() - pos_)
             fail(std::string(what) + " count " + std::to_string(n) + " exceeds the remaining data");
         return static_cast<int>(n);
+    }
+    void skip(size_t size) {
+        if (bytes_.size() - pos_ < size) fail("truncated");
+        pos_ += size;
     }
     void expectEnd() const {
         if (pos_ != bytes_.size()) fail(std::to_string(bytes_.size() - pos_) + " bytes left over after the end");

@@ -12,53 +12,27 @@
 #include <unordered_set>
 
 #include "core/snapshot.hpp"
+#include "core/snapshot_fields.hpp"
 
 namespace perpdot {
 
 namespace {
 
 constexpr uint8_t magic[8] = {'P', 'E', 'R', 'P', 'D', 'O', 'T', 'S'};
-constexpr uint32_t formatVersion = 1;
 
 // --- settings ---
 
-void writeDef(ByteWriter& out, const WorldDef& d) {
-    out.vec2(d.gravity);
-    out.i32(d.substeps);
-    for (float f : {d.contactHertz, d.contactDampingRatio, d.jointHertz, d.jointDampingRatio, d.contactPushMaxVelocity,
-                    d.restitutionThreshold, d.maxLinearSpeed, d.hitEventThreshold})
-        out.f32(f);
-    for (bool b : {d.enableSleep, d.enableWarmStarting, d.enableContinuous}) out.boolean(b);
-}
-
 WorldDef readDef(ByteReader& in) {
     WorldDef d;
-    d.gravity = in.finiteVec2();
-    d.substeps = in.integer(1, 64, "substeps");
-    for (float* f : {&d.contactHertz, &d.contactDampingRatio, &d.jointHertz, &d.jointDampingRatio,
-                     &d.contactPushMaxVelocity, &d.restitutionThreshold, &d.maxLinearSpeed, &d.hitEventThreshold})
-        *f = in.finite();
-    for (bool* b : {&d.enableSleep, &d.enableWarmStarting, &d.enableContinuous}) *b = in.boolean();
+    readFields(in, d);
+    if (d.substeps < 1 || d.substeps > 64) in.fail("substeps " + std::to_string(d.substeps) + " is outside [1, 64]");
     return d;
 }
 
 // --- bodies ---
 
 void writeBody(ByteWriter& out, const World::Impl& w, const Body& b) {
-    out.u8(static_cast<uint8_t>(b.type));
-    out.vec2(b.xf.p);
-    out.f32(b.xf.q.c);
-    out.f32(b.xf.q.s);
-    for (float f : {b.angle}) out.f32(f);
-    for (Vec2 v : {b.localCenter, b.center, b.v}) out.vec2(v);
-    out.f32(b.w);
-    out.vec2(b.force);
-    for (float f : {b.torque, b.mass, b.invMass, b.inertia, b.invInertia, b.linearDamping, b.angularDamping,
-                    b.gravityScale, b.sleepTime})
-        out.f32(f);
-    for (bool f : {b.fixedRotation, b.bullet, b.allowSleep, b.awake}) out.boolean(f);
-    out.i32(b.jointCount);
-    out.i32(b.islandNext);
+    writeFields(out, b);
     out.u32(static_cast<uint32_t>(b.shapes.size()));
     for (int s : b.shapes) out.i32(s);
     // The contact list as the sequence of its edge keys (contact*2 + side), head first.
@@ -70,25 +44,11 @@ void writeBody(ByteWriter& out, const World::Impl& w, const Body& b) {
 
 // Reads a live body; its shape list and contact edges are checked against the other pools later.
 void readBody(ByteReader& in, Body& b, std::vector<int>& edges, int bodyCount, int shapeLimit, int edgeLimit) {
-    const uint8_t type = in.u8();
-    if (type > static_cast<uint8_t>(BodyType::Dynamic)) in.fail("body type " + std::to_string(type) + " is unknown");
-    b.type = static_cast<BodyType>(type);
-    b.xf.p = in.finiteVec2();
-    b.xf.q.c = in.finite();
-    b.xf.q.s = in.finite();
-    b.angle = in.finite();
-    b.localCenter = in.finiteVec2();
-    b.center = in.finiteVec2();
-    b.v = in.finiteVec2();
-    b.w = in.finite();
-    b.force = in.finiteVec2();
-    for (float* f : {&b.torque, &b.mass, &b.invMass, &b.inertia, &b.invInertia, &b.linearDamping, &b.angularDamping,
-                     &b.gravityScale, &b.sleepTime})
-        *f = in.finite();
+    readFields(in, b);
+    if (b.type > BodyType::Dynamic) in.fail("body type " + std::to_string(static_cast<int>(b.type)) + " is unknown");
     if (b.mass < 0 || b.invMass < 0 || b.inertia < 0 || b.invInertia < 0) in.fail("negative mass or inertia");
-    for (bool* f : {&b.fixedRotation, &b.bullet, &b.allowSleep, &b.awake}) *f = in.boolean();
-    b.jointCount = in.integer(0, 0x3FFFFFFF, "joint count");
-    b.islandNext = in.integer(-1, bodyCount - 1, "island link");
+    if (b.jointCount < 0 || b.jointCount > 0x3FFFFFFF) in.fail("joint count " + std::to_string(b.jointCount) + " is out of range");
+    if (b.islandNext < -1 || b.islandNext >= bodyCount) in.fail("island link " + std::to_string(b.islandNext) + " is out of range");
     b.shapes.resize(in.count(4, "body shape"));
     for (int& s : b.shapes) s = in.integer(0, shapeLimit - 1, "shape index");
     edges.resize(in.count(4, "contact edge"));
@@ -173,13 +133,7 @@ void readGeometry(ByteReader& in, ShapeData& s) {
 void writeShape(ByteWriter& out, const World::Impl& w, const ShapeData& s) {
     out.i32(s.body);
     writeGeometry(out, s);
-    for (float f : {s.density, s.friction, s.restitution, s.rollingResistance, s.tangentSpeed, s.minExtent, s.maxExtent})
-        out.f32(f);
-    for (bool f : {s.sensor, s.enableContactEvents, s.enableHitEvents, s.enableSensorEvents, s.enablePreSolveEvents})
-        out.boolean(f);
-    out.u16(s.filter.category);
-    out.u16(s.filter.mask);
-    out.u16(static_cast<uint16_t>(s.filter.group));
+    writeFields(out, s);
     out.u32(static_cast<uint32_t>(s.proxies.size()));
     for (int proxy : s.proxies) {
         const AABB fat = w.collision.fatAABB(proxy);
@@ -191,15 +145,8 @@ void writeShape(ByteWriter& out, const World::Impl& w, const ShapeData& s) {
 void readShape(ByteReader& in, ShapeData& s, std::vector<AABB>& proxies, int bodyCount) {
     s.body = in.integer(0, bodyCount - 1, "shape body");
     readGeometry(in, s);
-    for (float* f : {&s.density, &s.friction, &s.restitution, &s.rollingResistance, &s.tangentSpeed, &s.minExtent,
-                     &s.maxExtent})
-        *f = in.finite();
+    readFields(in, s);
     if (s.density < 0 || s.friction < 0 || s.restitution < 0) in.fail("negative shape material");
-    for (bool* f : {&s.sensor, &s.enableContactEvents, &s.enableHitEvents, &s.enableSensorEvents, &s.enablePreSolveEvents})
-        *f = in.boolean();
-    s.filter.category = in.u16();
-    s.filter.mask = in.u16();
-    s.filter.group = static_cast<int16_t>(in.u16());
     proxies.resize(in.count(16, "proxy"));
     for (AABB& fat : proxies) {
         fat.lower = in.finiteVec2();
@@ -211,35 +158,16 @@ void readShape(ByteReader& in, ShapeData& s, std::vector<AABB>& proxies, int bod
 // --- contacts ---
 
 void writeContact(ByteWriter& out, const Contact& c) {
-    for (bool f : {c.touching, c.sensor, c.overlapping}) out.boolean(f);
-    for (int i : {c.a.shape, c.a.child, c.b.shape, c.b.child}) out.i32(i);
-    for (float f : {c.friction, c.restitution, c.rollingResistance, c.tangentSpeed, c.rollingImpulse}) out.f32(f);
-    out.vec2(c.normal);
-    out.u32(static_cast<uint32_t>(c.pointCount));
-    for (int i = 0; i < c.pointCount; ++i) {
-        const ContactPointState& p = c.points[i];
-        for (Vec2 v : {p.point, p.anchorA, p.anchorB}) out.vec2(v);
-        for (float f : {p.separation, p.normalImpulse, p.tangentImpulse, p.maxNormalImpulse}) out.f32(f);
-        out.u32(p.id);
-    }
+    writeFields(out, c);
+    for (int i = 0; i < c.pointCount; ++i) writeFields(out, c.points[i]);
 }
 
 void readContact(ByteReader& in, Contact& c, int shapeCount) {
-    for (bool* f : {&c.touching, &c.sensor, &c.overlapping}) *f = in.boolean();
-    c.a.shape = in.integer(0, shapeCount - 1, "contact shape");
-    c.a.child = in.integer(0, 0x7FFFFFFF, "contact child");
-    c.b.shape = in.integer(0, shapeCount - 1, "contact shape");
-    c.b.child = in.integer(0, 0x7FFFFFFF, "contact child");
-    for (float* f : {&c.friction, &c.restitution, &c.rollingResistance, &c.tangentSpeed, &c.rollingImpulse}) *f = in.f32();
-    c.normal = in.vec2();
-    c.pointCount = static_cast<int>(in.u32());
-    if (c.pointCount > 2) in.fail("contact point count out of range");
-    for (int i = 0; i < c.pointCount; ++i) {
-        ContactPointState& p = c.points[i];
-        for (Vec2* v : {&p.point, &p.anchorA, &p.anchorB}) *v = in.vec2();
-        for (float* f : {&p.separation, &p.normalImpulse, &p.tangentImpulse, &p.maxNormalImpulse}) *f = in.f32();
-        p.id = in.u32();
-    }
+    readFields(in, c);
+    for (const collide::ChildKey& key : {c.a, c.b})
+        if (key.shape < 0 || key.shape >= shapeCount || key.child < 0) in.fail("contact names a missing shape child");
+    if (c.pointCount < 0 || c.pointCount > 2) in.fail("contact point count out of range");
+    for (int i = 0; i < c.pointCount; ++i) readFields(in, c.points[i]);
 }
 
 // --- pools ---
@@ -297,7 +225,7 @@ std::vector<uint8_t> World::snapshot() const {
     ByteWriter out;
     for (uint8_t m : magic) out.u8(m);
     out.u32(formatVersion);
-    writeDef(out, w.def);
+    writeFields(out, w.def);
     out.u32(static_cast<uint32_t>(w.frozenBodies));
     out.boolean(w.anyHitEvents);
 
@@ -339,8 +267,10 @@ void World::restore(std::span<const uint8_t> bytes) {
     ByteReader in(bytes);
     for (uint8_t m : magic)
         if (in.u8() != m) in.fail("not a perpdot snapshot (bad magic)");
-    if (const uint32_t version = in.u32(); version != formatVersion)
-        in.fail("format version " + std::to_string(version) + " is not " + std::to_string(formatVersion));
+    in.version = in.u32();
+    if (in.version < 1 || in.version > formatVersion)
+        in.fail("format version " + std::to_string(in.version) + " is not supported (this build reads versions 1 to " +
+                std::to_string(formatVersion) + ")");
     auto fresh = std::make_unique<Impl>(readDef(in));
     Impl& w = *fresh;
     w.frozenBodies = in.integer(0, 0x7FFFFFFF, "frozen body count");

@@ -1,42 +1,15 @@
-// The joint store in a snapshot. A Joint is plain data: the common part is written field by
-// field, the type's member of JointData as its bytes (zero-initialised when the joint was made,
-// so they are deterministic). On reading, the booleans inside those bytes are checked (any other
-// byte value would be undefined behaviour to read), links are rebuilt from each body's saved
-// joint list, and per-step values are left for prepareJoints to recompute.
-#include <cstddef>
-#include <cstring>
+// The joint store in a snapshot: each joint's common part and its type's data through their field
+// lists (snapshot_fields.hpp); format 1 held the type data as the struct's raw bytes, which
+// readLayoutV1 walks with the same list. Links are rebuilt from each body's saved joint list, and
+// per-step values are left for prepareJoints to recompute.
+#include <memory>
 #include <string>
 
 #include "core/joint_store.hpp"
 #include "core/snapshot.hpp"
+#include "core/snapshot_fields.hpp"
 
 namespace perpdot {
-
-namespace {
-
-// Size of the live member of JointData, and the offsets of its bool members.
-struct MemberLayout {
-    size_t size;
-    size_t bools[2];
-    int boolCount;
-};
-
-MemberLayout layoutOf(JointType type) {
-    switch (type) {
-        case JointType::Revolute:
-            return {sizeof(RevoluteJoint), {offsetof(RevoluteJoint, enableLimit), offsetof(RevoluteJoint, enableMotor)}, 2};
-        case JointType::Prismatic:
-            return {sizeof(PrismaticJoint), {offsetof(PrismaticJoint, enableLimit), offsetof(PrismaticJoint, enableMotor)}, 2};
-        case JointType::Distance: return {sizeof(DistanceJoint), {}, 0};
-        case JointType::Weld: return {sizeof(WeldJoint), {}, 0};
-        case JointType::Wheel: return {sizeof(WheelJoint), {offsetof(WheelJoint, enableMotor)}, 1};
-        case JointType::Motor: return {sizeof(MotorJoint), {}, 0};
-        case JointType::Mouse: return {sizeof(MouseJoint), {}, 0};
-    }
-    return {0, {}, 0};
-}
-
-}  // namespace
 
 void writeJoints(ByteWriter& out, const World::Impl& w) {
     const JointStore& s = *w.joints;
@@ -46,16 +19,8 @@ void writeJoints(ByteWriter& out, const World::Impl& w) {
         out.u32(j.generation);
         out.boolean(j.alive);
         if (!j.alive) continue;
-        out.u8(static_cast<uint8_t>(j.type));
-        out.boolean(j.collideConnected);
-        out.i32(j.bodyA);
-        out.i32(j.bodyB);
-        out.vec2(j.localAnchorA);
-        out.vec2(j.localAnchorB);
-        out.f32(j.referenceAngle);
-        const MemberLayout layout = layoutOf(j.type);
-        const auto* bytes = reinterpret_cast<const uint8_t*>(&j.data);
-        for (size_t i = 0; i < layout.size; ++i) out.u8(bytes[i]);
+        writeFields(out, j);
+        visitJointData(j.type, j.data, [&](const auto& data) { writeFields(out, data); });
     }
     out.u32(static_cast<uint32_t>(s.freeList.size()));
     for (int i : s.freeList) out.i32(i);
@@ -81,23 +46,20 @@ void readJoints(ByteReader& in, World::Impl& w) {
         j.generation = in.u32();
         j.alive = alive[index] = in.boolean();
         if (!j.alive) continue;
-        const uint8_t type = in.u8();
-        if (type > static_cast<uint8_t>(JointType::Mouse)) in.fail("joint type " + std::to_string(type) + " is unknown");
-        j.type = static_cast<JointType>(type);
-        j.collideConnected = in.boolean();
-        j.bodyA = in.integer(0, bodyCount - 1, "joint body");
-        j.bodyB = in.integer(0, bodyCount - 1, "joint body");
-        if (j.bodyA == j.bodyB || !w.bodies[j.bodyA].alive || !w.bodies[j.bodyB].alive)
+        readFields(in, j);
+        if (j.bodyA < 0 || j.bodyA >= bodyCount || j.bodyB < 0 || j.bodyB >= bodyCount || j.bodyA == j.bodyB ||
+            !w.bodies[j.bodyA].alive || !w.bodies[j.bodyB].alive)
             in.fail("joint " + std::to_string(index) + " needs two different live bodies");
-        j.localAnchorA = in.vec2();
-        j.localAnchorB = in.vec2();
-        j.referenceAngle = in.f32();
-        const MemberLayout layout = layoutOf(j.type);
-        uint8_t bytes[sizeof(JointData)] = {};
-        for (size_t i = 0; i < layout.size; ++i) bytes[i] = in.u8();
-        for (int b = 0; b < layout.boolCount; ++b)
-            if (bytes[layout.bools[b]] > 1) in.fail("joint " + std::to_string(index) + " holds an invalid boolean");
-        std::memcpy(static_cast<void*>(&j.data), bytes, sizeof(JointData));
+        const bool known = visitJointData(j.type, j.data, [&](auto& data) {
+            std::construct_at(&data);  // the live member, value-initialised as createJoint does
+            if (in.version == 1) {
+                size_t offset = 0;
+                readLayoutV1(in, data, offset);
+            } else {
+                readFields(in, data);
+            }
+        });
+        if (!known) in.fail("joint type " + std::to_string(static_cast<int>(j.type)) + " is unknown");
     }
     s.freeList.assign(in.count(4, "free joint"), 0);
     std::vector<bool> listed(count, false);

@@ -1,0 +1,274 @@
+// The field list of every struct a snapshot holds (field_list.hpp), and the format version.
+//
+// To add a member to one of these structs: add it to the struct's list with .since(N), where N
+// is formatVersion + 1, and set formatVersion to N (docs/reliability.md, "Adding a field"). The
+// size checks below fail the build when a struct changes and nobody looked at its list. Members
+// not listed are links rebuilt on reading (lists, edges, proxies), per-step scratch or userData.
+#pragma once
+
+#include <tuple>
+
+#include "core/field_list.hpp"
+#include "core/joint_store.hpp"
+#include "core/world_impl.hpp"
+
+namespace perpdot {
+
+// 1: joint type data as raw struct bytes. 2: every struct through its field list.
+constexpr uint32_t formatVersion = 2;
+
+// A struct whose layout changed must have its field list reviewed (then update the size here).
+template <class T, size_t Size>
+constexpr bool reviewedLayout = sizeof(void*) != 8 || sizeof(T) == Size;
+
+// --- math ---
+
+constexpr auto fields(const Rot*) { return std::tuple{field("c", &Rot::c), field("s", &Rot::s)}; }
+constexpr auto fields(const Transform*) { return std::tuple{field("p", &Transform::p), field("q", &Transform::q)}; }
+constexpr auto fields(const Softness*) {
+    return std::tuple{field("biasRate", &Softness::biasRate), field("massScale", &Softness::massScale),
+                      field("impulseScale", &Softness::impulseScale)};
+}
+
+// --- world ---
+
+static_assert(reviewedLayout<WorldDef, 48>);
+constexpr auto fields(const WorldDef*) {
+    using D = WorldDef;
+    return std::tuple{field("gravity", &D::gravity),
+                      field("substeps", &D::substeps),
+                      field("contactHertz", &D::contactHertz),
+                      field("contactDampingRatio", &D::contactDampingRatio),
+                      field("jointHertz", &D::jointHertz),
+                      field("jointDampingRatio", &D::jointDampingRatio),
+                      field("contactPushMaxVelocity", &D::contactPushMaxVelocity),
+                      field("restitutionThreshold", &D::restitutionThreshold),
+                      field("maxLinearSpeed", &D::maxLinearSpeed),
+                      field("hitEventThreshold", &D::hitEventThreshold),
+                      field("enableSleep", &D::enableSleep),
+                      field("enableWarmStarting", &D::enableWarmStarting),
+                      field("enableContinuous", &D::enableContinuous)};
+}
+
+// Not listed: generation and alive (written by the pool), userData, shapes and contactHead
+// (written as lists), solverIndex (per step).
+static_assert(reviewedLayout<Body, 152>);
+constexpr auto fields(const Body*) {
+    return std::tuple{field("type", &Body::type),
+                      field("xf", &Body::xf),
+                      field("angle", &Body::angle),
+                      field("localCenter", &Body::localCenter),
+                      field("center", &Body::center),
+                      field("v", &Body::v),
+                      field("w", &Body::w),
+                      field("force", &Body::force),
+                      field("torque", &Body::torque),
+                      field("mass", &Body::mass),
+                      field("invMass", &Body::invMass),
+                      field("inertia", &Body::inertia),
+                      field("invInertia", &Body::invInertia),
+                      field("linearDamping", &Body::linearDamping),
+                      field("angularDamping", &Body::angularDamping),
+                      field("gravityScale", &Body::gravityScale),
+                      field("sleepTime", &Body::sleepTime),
+                      field("fixedRotation", &Body::fixedRotation),
+                      field("bullet", &Body::bullet),
+                      field("allowSleep", &Body::allowSleep),
+                      field("awake", &Body::awake),
+                      field("jointCount", &Body::jointCount),
+                      field("islandNext", &Body::islandNext)};
+}
+
+constexpr auto fields(const Filter*) {
+    return std::tuple{field("category", &Filter::category), field("mask", &Filter::mask), field("group", &Filter::group)};
+}
+
+// Not listed: generation, alive, userData; body, type and geometry (written before the list,
+// type as the geometry's tag); proxies (written as their fat boxes).
+static_assert(reviewedLayout<ShapeData, 176>);
+constexpr auto fields(const ShapeData*) {
+    using S = ShapeData;
+    return std::tuple{field("density", &S::density),
+                      field("friction", &S::friction),
+                      field("restitution", &S::restitution),
+                      field("rollingResistance", &S::rollingResistance),
+                      field("tangentSpeed", &S::tangentSpeed),
+                      field("minExtent", &S::minExtent),
+                      field("maxExtent", &S::maxExtent),
+                      field("sensor", &S::sensor),
+                      field("enableContactEvents", &S::enableContactEvents),
+                      field("enableHitEvents", &S::enableHitEvents),
+                      field("enableSensorEvents", &S::enableSensorEvents),
+                      field("enablePreSolveEvents", &S::enablePreSolveEvents),
+                      field("filter", &S::filter)};
+}
+
+// --- contacts: any float bits (see Field::anyBits) ---
+
+namespace collide {
+constexpr auto fields(const ChildKey*) { return std::tuple{field("shape", &ChildKey::shape), field("child", &ChildKey::child)}; }
+}  // namespace collide
+
+static_assert(reviewedLayout<ContactPointState, 44>);
+constexpr auto fields(const ContactPointState*) {
+    using P = ContactPointState;
+    return std::tuple{field("point", &P::point).anyBits(),
+                      field("anchorA", &P::anchorA).anyBits(),
+                      field("anchorB", &P::anchorB).anyBits(),
+                      field("separation", &P::separation).anyBits(),
+                      field("normalImpulse", &P::normalImpulse).anyBits(),
+                      field("tangentImpulse", &P::tangentImpulse).anyBits(),
+                      field("maxNormalImpulse", &P::maxNormalImpulse).anyBits(),
+                      field("id", &P::id)};
+}
+
+// Not listed: alive (written by the pool); pairKey, proxies and bodies (derived from the child
+// keys); points (the first pointCount, written after the list); edges (written as body lists).
+static_assert(reviewedLayout<Contact, 184>);
+constexpr auto fields(const Contact*) {
+    using C = Contact;
+    return std::tuple{field("touching", &C::touching),
+                      field("sensor", &C::sensor),
+                      field("overlapping", &C::overlapping),
+                      field("a", &C::a),
+                      field("b", &C::b),
+                      field("friction", &C::friction).anyBits(),
+                      field("restitution", &C::restitution).anyBits(),
+                      field("rollingResistance", &C::rollingResistance).anyBits(),
+                      field("tangentSpeed", &C::tangentSpeed).anyBits(),
+                      field("rollingImpulse", &C::rollingImpulse).anyBits(),
+                      field("normal", &C::normal).anyBits(),
+                      field("pointCount", &C::pointCount)};
+}
+
+// --- joints: any float bits; each type's list in declaration order (format 1 was raw bytes) ---
+
+// Not listed: generation, alive, edges (written as body lists), userData; data (by type, below).
+static_assert(reviewedLayout<Joint, 136>);
+constexpr auto fields(const Joint*) {
+    return std::tuple{field("type", &Joint::type),
+                      field("collideConnected", &Joint::collideConnected),
+                      field("bodyA", &Joint::bodyA),
+                      field("bodyB", &Joint::bodyB),
+                      field("localAnchorA", &Joint::localAnchorA).anyBits(),
+                      field("localAnchorB", &Joint::localAnchorB).anyBits(),
+                      field("referenceAngle", &Joint::referenceAngle).anyBits()};
+}
+
+static_assert(reviewedLayout<RevoluteJoint, 44>);
+constexpr auto fields(const RevoluteJoint*) {
+    using J = RevoluteJoint;
+    return std::tuple{field("enableLimit", &J::enableLimit),
+                      field("enableMotor", &J::enableMotor),
+                      field("lowerAngle", &J::lowerAngle).anyBits(),
+                      field("upperAngle", &J::upperAngle).anyBits(),
+                      field("motorSpeed", &J::motorSpeed).anyBits(),
+                      field("maxMotorTorque", &J::maxMotorTorque).anyBits(),
+                      field("axialMass", &J::axialMass).anyBits(),
+                      field("linearImpulse", &J::linearImpulse).anyBits(),
+                      field("motorImpulse", &J::motorImpulse).anyBits(),
+                      field("lowerImpulse", &J::lowerImpulse).anyBits(),
+                      field("upperImpulse", &J::upperImpulse).anyBits()};
+}
+
+static_assert(reviewedLayout<PrismaticJoint, 60>);
+constexpr auto fields(const PrismaticJoint*) {
+    using J = PrismaticJoint;
+    return std::tuple{field("localAxisA", &J::localAxisA).anyBits(),
+                      field("enableLimit", &J::enableLimit),
+                      field("enableMotor", &J::enableMotor),
+                      field("lower", &J::lower).anyBits(),
+                      field("upper", &J::upper).anyBits(),
+                      field("motorSpeed", &J::motorSpeed).anyBits(),
+                      field("maxMotorForce", &J::maxMotorForce).anyBits(),
+                      field("axisA", &J::axisA).anyBits(),
+                      field("axialMass", &J::axialMass).anyBits(),
+                      field("impulse", &J::impulse).anyBits(),
+                      field("motorImpulse", &J::motorImpulse).anyBits(),
+                      field("lowerImpulse", &J::lowerImpulse).anyBits(),
+                      field("upperImpulse", &J::upperImpulse).anyBits()};
+}
+
+static_assert(reviewedLayout<DistanceJoint, 56>);
+constexpr auto fields(const DistanceJoint*) {
+    using J = DistanceJoint;
+    return std::tuple{field("length", &J::length).anyBits(),
+                      field("minLength", &J::minLength).anyBits(),
+                      field("maxLength", &J::maxLength).anyBits(),
+                      field("hertz", &J::hertz).anyBits(),
+                      field("dampingRatio", &J::dampingRatio).anyBits(),
+                      field("spring", &J::spring).anyBits(),
+                      field("axis", &J::axis).anyBits(),
+                      field("axialMass", &J::axialMass).anyBits(),
+                      field("impulse", &J::impulse).anyBits(),
+                      field("lowerImpulse", &J::lowerImpulse).anyBits(),
+                      field("upperImpulse", &J::upperImpulse).anyBits()};
+}
+
+static_assert(reviewedLayout<WeldJoint, 36>);
+constexpr auto fields(const WeldJoint*) {
+    using J = WeldJoint;
+    return std::tuple{field("hertz", &J::hertz).anyBits(),
+                      field("dampingRatio", &J::dampingRatio).anyBits(),
+                      field("angularSoftness", &J::angularSoftness).anyBits(),
+                      field("axialMass", &J::axialMass).anyBits(),
+                      field("linearImpulse", &J::linearImpulse).anyBits(),
+                      field("angularImpulse", &J::angularImpulse).anyBits()};
+}
+
+static_assert(reviewedLayout<WheelJoint, 68>);
+constexpr auto fields(const WheelJoint*) {
+    using J = WheelJoint;
+    return std::tuple{field("localAxisA", &J::localAxisA).anyBits(),
+                      field("hertz", &J::hertz).anyBits(),
+                      field("dampingRatio", &J::dampingRatio).anyBits(),
+                      field("enableMotor", &J::enableMotor),
+                      field("motorSpeed", &J::motorSpeed).anyBits(),
+                      field("maxMotorTorque", &J::maxMotorTorque).anyBits(),
+                      field("spring", &J::spring).anyBits(),
+                      field("axisA", &J::axisA).anyBits(),
+                      field("axialMass", &J::axialMass).anyBits(),
+                      field("motorMass", &J::motorMass).anyBits(),
+                      field("perpImpulse", &J::perpImpulse).anyBits(),
+                      field("springImpulse", &J::springImpulse).anyBits(),
+                      field("motorImpulse", &J::motorImpulse).anyBits()};
+}
+
+static_assert(reviewedLayout<MotorJoint, 28>);
+constexpr auto fields(const MotorJoint*) {
+    using J = MotorJoint;
+    return std::tuple{field("maxForce", &J::maxForce).anyBits(),
+                      field("maxTorque", &J::maxTorque).anyBits(),
+                      field("correctionFactor", &J::correctionFactor).anyBits(),
+                      field("axialMass", &J::axialMass).anyBits(),
+                      field("linearImpulse", &J::linearImpulse).anyBits(),
+                      field("angularImpulse", &J::angularImpulse).anyBits()};
+}
+
+static_assert(reviewedLayout<MouseJoint, 32>);
+constexpr auto fields(const MouseJoint*) {
+    using J = MouseJoint;
+    return std::tuple{field("hertz", &J::hertz).anyBits(),
+                      field("dampingRatio", &J::dampingRatio).anyBits(),
+                      field("maxForce", &J::maxForce).anyBits(),
+                      field("softness", &J::softness).anyBits(),
+                      field("linearImpulse", &J::linearImpulse).anyBits()};
+}
+
+// Calls visit(member) with the live member of `data` for a joint of `type` (the one switch a new
+// joint type extends, next to its field list above). False for an unknown type.
+template <class Data, class Visit>
+bool visitJointData(JointType type, Data& data, Visit&& visit) {
+    switch (type) {
+        case JointType::Revolute: visit(data.revolute); return true;
+        case JointType::Prismatic: visit(data.prismatic); return true;
+        case JointType::Distance: visit(data.distance); return true;
+        case JointType::Weld: visit(data.weld); return true;
+        case JointType::Wheel: visit(data.wheel); return true;
+        case JointType::Motor: visit(data.motor); return true;
+        case JointType::Mouse: visit(data.mouse); return true;
+    }
+    return false;
+}
+
+}  // namespace perpdot

@@ -1,0 +1,143 @@
+// Snapshot format versions: snapshots written by older code still load and continue. The files in
+// tests/data/snapshot_v1/ were written by the code of e7499b5 (format 1: joint data as raw struct
+// bytes) from built-in scenes and from test::jointZoo(); together they hold every joint type,
+// sleeping islands, warm-started contacts, sensors, a bullet, a kinematic body and conveyors.
+//
+// A loaded old snapshot must continue exactly like the same state restored from the current
+// format: the old file is loaded, saved in today's format, that is restored into a second world,
+// and both are stepped with the state hash compared each step. (Not against hashes recorded when
+// the files were written: legitimate solver changes change those.)
+#include <algorithm>
+#include <bit>
+#include <cstring>
+#include <typeinfo>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "core/snapshot_fields.hpp"
+#include "joint_zoo.hpp"
+#include "perpdot/error.hpp"
+#include "perpdot/state_hash.hpp"
+#include "perpdot/world.hpp"
+
+namespace perpdot {
+namespace {
+
+using Bytes = std::vector<uint8_t>;
+
+Bytes readFile(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::vector<std::filesystem::path> formatOneFiles() {
+    std::vector<std::filesystem::path> files;
+    for (const auto& entry : std::filesystem::directory_iterator(PERPDOT_TEST_DATA "/snapshot_v1"))
+        if (entry.path().extension() == ".snap") files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+uint32_t versionOf(const Bytes& bytes) {
+    return uint32_t(bytes[8]) | uint32_t(bytes[9]) << 8 | uint32_t(bytes[10]) << 16 | uint32_t(bytes[11]) << 24;
+}
+
+TEST(SnapshotFormat, FormatOneFilesLoadAndContinueLikeTheCurrentFormat) {
+    const std::vector<std::filesystem::path> files = formatOneFiles();
+    ASSERT_EQ(files.size(), 10u);
+    for (const auto& path : files) {
+        const Bytes old = readFile(path);
+        ASSERT_EQ(versionOf(old), 1u) << path;
+        World fromOld;
+        ASSERT_NO_THROW(fromOld.restore(old)) << path;
+        const Bytes current = fromOld.snapshot();
+        World fromCurrent;
+        fromCurrent.restore(current);
+        EXPECT_EQ(fromCurrent.snapshot(), current) << path;
+        EXPECT_EQ(stateHash(fromOld), stateHash(fromCurrent)) << path;
+        for (int step = 0; step < 60; ++step) {
+            fromOld.step(1.0f / 60);
+            fromCurrent.step(1.0f / 60);
+            ASSERT_EQ(stateHash(fromOld), stateHash(fromCurrent)) << path << " step " << step;
+        }
+        EXPECT_EQ(fromOld.snapshot(), fromCurrent.snapshot()) << path;
+    }
+}
+
+// The joint zoo's file holds every joint type, each with its warm-start impulses (read back
+// through the reactions, which are the stored impulses over the substep).
+TEST(SnapshotFormat, FormatOneJointZooKeepsEveryJointAndItsImpulses) {
+    World fromOld;
+    fromOld.restore(readFile(PERPDOT_TEST_DATA "/snapshot_v1/joint_zoo_40.snap"));
+    const World rebuilt = test::jointZoo();
+    const std::vector<JointId> joints = fromOld.joints();
+    ASSERT_EQ(joints.size(), rebuilt.joints().size());
+    for (size_t i = 0; i < joints.size(); ++i) {
+        EXPECT_EQ(fromOld.jointType(joints[i]), rebuilt.jointType(rebuilt.joints()[i]));
+        EXPECT_EQ(fromOld.jointType(joints[i]), static_cast<JointType>(i)) << "one joint of each type, in enum order";
+        EXPECT_TRUE(length(fromOld.jointReactionForce(joints[i])) > 0 || fromOld.jointReactionTorque(joints[i]) != 0)
+            << "joint " << i << " lost its impulses";
+    }
+}
+
+// Format 1 stored a joint's type data as the struct's bytes: the field list must walk exactly that
+// layout. Every member gets distinct bits, the struct's bytes are read back with readLayoutV1 and
+// must give the same fields (compared through the current format's bytes).
+template <class T>
+void expectLayoutV1ReadsRawBytes() {
+    T original{};
+    uint32_t next = 0x3F800001;
+    const auto fill = [&](auto& self, auto& value) -> void {
+        using V = std::remove_reference_t<decltype(value)>;
+        if constexpr (std::is_same_v<V, bool>) value = (next++ & 1) != 0;
+        else if constexpr (std::is_same_v<V, float>) value = std::bit_cast<float>(next++);
+        else if constexpr (std::is_same_v<V, Vec2>) value = {std::bit_cast<float>(next++), std::bit_cast<float>(next++)};
+        else std::apply([&](const auto&... f) { (self(self, value.*(f.member)), ...); }, fieldsOf<V>());
+    };
+    fill(fill, original);
+    Bytes raw(sizeof(T), 0xAB);  // padding bytes hold garbage: they must be skipped
+    std::memcpy(raw.data(), &original, sizeof(T));
+    ByteReader in(raw);
+    in.version = 1;
+    T read{};
+    size_t offset = 0;
+    readLayoutV1(in, read, offset);
+    in.expectEnd();
+    ByteWriter a, b;
+    writeFields(a, original);
+    writeFields(b, read);
+    EXPECT_EQ(a.bytes, b.bytes) << typeid(T).name();
+}
+
+TEST(SnapshotFormat, FormatOneJointLayoutIsReadFromTheFieldLists) {
+    expectLayoutV1ReadsRawBytes<RevoluteJoint>();
+    expectLayoutV1ReadsRawBytes<PrismaticJoint>();
+    expectLayoutV1ReadsRawBytes<DistanceJoint>();
+    expectLayoutV1ReadsRawBytes<WeldJoint>();
+    expectLayoutV1ReadsRawBytes<WheelJoint>();
+    expectLayoutV1ReadsRawBytes<MotorJoint>();
+    expectLayoutV1ReadsRawBytes<MouseJoint>();
+}
+
+TEST(SnapshotFormat, UnknownVersionsAreRefusedByNumber) {
+    Bytes bytes = test::jointZoo().snapshot();
+    for (uint32_t version : {0u, versionOf(bytes) + 1, 0xFFFFFFFFu}) {
+        for (int k = 0; k < 4; ++k) bytes[8 + k] = uint8_t(version >> (8 * k));
+        World world;
+        try {
+            world.restore(bytes);
+            ADD_FAILURE() << "version " << version << " was accepted";
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find("format version " + std::to_string(version)), std::string::npos) << e.what();
+        }
+    }
+}
+
+}  // namespace
+}  // namespace perpdot
