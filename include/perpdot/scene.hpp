@@ -78,6 +78,10 @@ struct SceneJoint {
     float angularOffset = 0.0f;
     float maxForce = 1.0f;
     float maxTorque = 1.0f;
+    int jointA = -1, jointB = -1;                // gear: indices of earlier revolute/prismatic joints
+    float ratio = 1.0f;                          // gear, pulley
+    Vec2 groundAnchorA{}, groundAnchorB{};       // pulley (world)
+    std::optional<float> lengthA{}, lengthB{};   // pulley; default: current rope lengths
     friend bool operator==(const SceneJoint&, const SceneJoint&) = default;
 };
 

@@ -142,6 +142,11 @@ public:
     JointId createJoint(const WheelJointDef& def);
     JointId createJoint(const MotorJointDef& def);
     JointId createJoint(const MouseJointDef& def);
+    /// A gear between the moving bodies of two revolute/prismatic joints (joints.hpp); throws
+    /// perpdot::Error for a stale joint, another joint type, a non-static base, ratio 0 or not finite.
+    JointId createJoint(const GearJointDef& def);
+    /// A pulley (joints.hpp); throws perpdot::Error for lengths ≤ 0, ratio ≤ 0 or non-finite values.
+    JointId createJoint(const PulleyJointDef& def);
     void destroyJoint(JointId joint);
     bool isValid(JointId joint) const;
     std::vector<JointId> joints() const;

@@ -183,7 +183,8 @@ constexpr std::pair<const char*, SceneShape::Kind> shapeKinds[] = {
     {"segment", SceneShape::Kind::Segment}, {"chain", SceneShape::Kind::Chain}};
 constexpr std::pair<const char*, JointType> jointTypes[] = {
     {"revolute", JointType::Revolute}, {"prismatic", JointType::Prismatic}, {"distance", JointType::Distance},
-    {"weld", JointType::Weld}, {"wheel", JointType::Wheel}, {"motor", JointType::Motor}};
+    {"weld", JointType::Weld}, {"wheel", JointType::Wheel}, {"motor", JointType::Motor},
+    {"gear", JointType::Gear}, {"pulley", JointType::Pulley}};
 constexpr std::pair<const char*, SceneAction::Kind> actionKinds[] = {
     {"force", SceneAction::Kind::Force}, {"impulse", SceneAction::Kind::Impulse},
     {"torque", SceneAction::Kind::Torque}, {"angular_impulse", SceneAction::Kind::AngularImpulse}};
@@ -288,6 +289,8 @@ KeyList jointKeys(JointType type) {
         case JointType::Weld: return scene_keys::weld;
         case JointType::Wheel: return scene_keys::wheel;
         case JointType::Motor: return scene_keys::motor;
+        case JointType::Gear: return scene_keys::gear;
+        case JointType::Pulley: return scene_keys::pulley;
         case JointType::Mouse: break;  // not in the file format
     }
     return {};
@@ -303,8 +306,9 @@ void readAnchors(const Object& o, SceneJoint& j) {
     if (o.has("anchor_b")) {
         if (!j.anchor) fail(member(o.path(), "anchor_b"), "needs \"anchor\" as body A's world anchor");
         j.anchorB = o.vecAt("anchor_b");
-    } else if (j.type == JointType::Distance && j.anchor) {
-        fail(member(o.path(), "anchor_b"), "missing required key (a distance joint has two world anchors)");
+    } else if ((j.type == JointType::Distance || j.type == JointType::Pulley) && j.anchor) {
+        fail(member(o.path(), "anchor_b"), "missing required key (a " + std::string(j.type == JointType::Distance ? "distance" : "pulley") +
+                                               " joint has two world anchors)");
     }
     if (o.has("local_anchor_a")) {
         j.localAnchorA = o.vecAt("local_anchor_a");
@@ -316,11 +320,46 @@ void requireOrdered(const Object& o, std::string_view lowKey, float low, std::st
     if (low > high) fail(member(o.path(), highKey), "must not be less than " + std::string(lowKey));
 }
 
-SceneJoint readJoint(const Object& o, const std::set<std::string>& bodyNames) {
+// A gear names two earlier revolute or prismatic joints by index; its bodies are theirs body B.
+void readGear(const Object& o, SceneJoint& j, const std::vector<SceneJoint>& earlier) {
+    const auto readIndex = [&](const char* key, const std::string& body, const char* bodyKey) {
+        const std::string path = member(o.path(), key);
+        o.required(key);
+        const int index = static_cast<int>(o.integer(key, -1, 0, maxSceneSteps));
+        if (index >= static_cast<int>(earlier.size()))
+            fail(path, "must be the index of an earlier joint (this is joint " + std::to_string(earlier.size()) + ")");
+        const SceneJoint& geared = earlier[index];
+        if (geared.type != JointType::Revolute && geared.type != JointType::Prismatic)
+            fail(path, "must name a revolute or prismatic joint");
+        if (geared.bodyB != body)
+            fail(member(o.path(), bodyKey), "must be the geared joint's body_b, \"" + geared.bodyB + "\"");
+        return index;
+    };
+    j.jointA = readIndex("joint_a", j.bodyA, "body_a");
+    j.jointB = readIndex("joint_b", j.bodyB, "body_b");
+    j.ratio = o.bounded("ratio", 1.0f, maxCoordinate);
+    if (j.ratio == 0.0f) fail(member(o.path(), "ratio"), "must not be 0");
+}
+
+void readPulley(const Object& o, SceneJoint& j) {
+    o.required("ground_anchor_a");
+    o.required("ground_anchor_b");
+    j.groundAnchorA = o.boundedVec("ground_anchor_a", {}, maxCoordinate);
+    j.groundAnchorB = o.boundedVec("ground_anchor_b", {}, maxCoordinate);
+    for (auto [key, length] : {std::pair{"length_a", &j.lengthA}, std::pair{"length_b", &j.lengthB}}) {
+        if (!o.has(key)) continue;
+        *length = o.bounded(key, 0.0f, maxCoordinate);
+        if (!(**length > 0.0f)) fail(member(o.path(), key), "must be positive");
+    }
+    j.ratio = o.bounded("ratio", 1.0f, maxCoordinate);
+    if (!(j.ratio > 0.0f)) fail(member(o.path(), "ratio"), "must be positive");
+}
+
+SceneJoint readJoint(const Object& o, const std::set<std::string>& bodyNames, const std::vector<SceneJoint>& earlier) {
     SceneJoint j;
     const std::string type = o.requiredString("type");
     j.type = enumValue(type, jointTypes, member(o.path(), "type"));
-    const bool anchored = j.type != JointType::Motor;
+    const bool anchored = j.type != JointType::Motor && j.type != JointType::Gear;
     if (anchored)
         o.allowOnly({scene_keys::joint, scene_keys::jointAnchors, jointKeys(j.type)});
     else
@@ -357,6 +396,8 @@ SceneJoint readJoint(const Object& o, const std::set<std::string>& bodyNames) {
     j.angularOffset = o.number("angular_offset", 0.0f);
     j.maxForce = o.nonNegative("max_force", j.maxForce);
     j.maxTorque = o.nonNegative("max_torque", j.maxTorque);
+    if (j.type == JointType::Gear) readGear(o, j, earlier);
+    if (j.type == JointType::Pulley) readPulley(o, j);
     return j;
 }
 
@@ -409,7 +450,7 @@ Scene readScene(const Object& o) {
         if (!names.insert(s.bodies.back().name).second)
             fail(member(path, "name"), "duplicate body name \"" + s.bodies.back().name + "\"");
     }
-    for (const auto& [item, path] : o.array("joints")) s.joints.push_back(readJoint(Object(*item, path), names));
+    for (const auto& [item, path] : o.array("joints")) s.joints.push_back(readJoint(Object(*item, path), names, s.joints));
     for (const auto& [item, path] : o.array("actions")) s.actions.push_back(readAction(Object(*item, path), names));
     return s;
 }

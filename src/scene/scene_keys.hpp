@@ -36,6 +36,8 @@ inline constexpr std::string_view prismatic[] = {"axis", "enable_limit", "lower"
 inline constexpr std::string_view weld[] = {"hertz", "damping_ratio"};
 inline constexpr std::string_view wheel[] = {"axis", "hertz", "damping_ratio", "enable_motor", "motor_speed", "max_motor_torque"};
 inline constexpr std::string_view motor[] = {"linear_offset", "angular_offset", "max_force", "max_torque"};
+inline constexpr std::string_view gear[] = {"joint_a", "joint_b", "ratio"};
+inline constexpr std::string_view pulley[] = {"anchor_b", "ground_anchor_a", "ground_anchor_b", "length_a", "length_b", "ratio"};
 
 inline constexpr std::string_view action[] = {"type", "body", "value", "first_step", "last_step"};
 inline constexpr std::string_view actionPoint[] = {"point"};  // force and impulse only
@@ -43,7 +45,7 @@ inline constexpr std::string_view actionPoint[] = {"point"};  // force and impul
 // Every list above, for the documentation test.
 inline std::vector<KeyList> all() {
     return {root,     solver, body,     filter,    shape, circle, box,   polygon, segment, chain,
-            joint,    jointAnchors, revolute, distance, prismatic, weld, wheel, motor, action, actionPoint};
+            joint,    jointAnchors, revolute, distance, prismatic, weld, wheel, motor, gear, pulley, action, actionPoint};
 }
 
 }  // namespace perpdot::scene_keys
