@@ -181,6 +181,15 @@ public:
     // Shapes overlapping a query shape placed at `xf`.
     std::vector<ShapeId> overlapShape(const Circle& shape, const Transform& xf, const Filter& filter = {}) const;
     std::vector<ShapeId> overlapShape(const Polygon& shape, const Transform& xf, const Filter& filter = {}) const;
+    /// Sweeps `shape`, placed at `xf`, along `translation` (no rotation) and returns the first
+    /// world shape it touches, if any (b2ShapeCast, Box2D's GJK ray cast). Only shapes whose filter
+    /// passes shouldCollide(filter, ·) are considered. Throws perpdot::Error for a non-finite
+    /// transform or translation or an invalid shape (radius ≤ 0, degenerate segment or polygon).
+    std::optional<ShapeCastHit> castShapeClosest(const CastShape& shape, const Transform& xf, Vec2 translation,
+                                                 const Filter& filter = {}) const;
+    /// Every shape child the swept shape touches, ordered by fraction (see castShapeClosest).
+    std::vector<ShapeCastHit> castShape(const CastShape& shape, const Transform& xf, Vec2 translation,
+                                        const Filter& filter = {}) const;
 
     // --- snapshots (bit-exact: restore + N steps equals N steps) ---
     // Versioned bytes of the whole state: settings, bodies, shapes, joints, and the contact cache
