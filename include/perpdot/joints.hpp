@@ -13,7 +13,7 @@
 namespace perpdot {
 
 /// Which kind of joint a JointId names.
-enum class JointType : uint8_t { Revolute, Prismatic, Distance, Weld, Wheel, Motor, Mouse };
+enum class JointType : uint8_t { Revolute, Prismatic, Distance, Weld, Wheel, Motor, Mouse, Gear, Pulley };
 
 /// A hinge: the anchors coincide, B turns freely about them, optionally limited and motorised.
 struct RevoluteJointDef {
@@ -117,6 +117,53 @@ struct MouseJointDef {
     float maxForce = 1000.0f;   ///< N
     bool collideConnected = false;  ///< whether A and B still collide with each other
     void* userData = nullptr;       ///< the application's pointer
+};
+
+/// Couples two revolute or prismatic joints so that coordinateA + ratio·coordinateB stays
+/// constant, where a revolute joint's coordinate is its angle (rad) and a prismatic joint's its
+/// translation along the axis (m) — Box2D's b2GearJoint. The gear acts between the moving bodies
+/// (body B) of the two joints; each joint's body A must be static (perpdot solves two-body rows),
+/// and the two moving bodies must differ. The joints' geometry is captured at creation: the gear
+/// keeps working if they are destroyed later.
+struct GearJointDef {
+    /// A revolute or prismatic joint; the gear's body A is its body B.
+    JointId jointA;
+    /// A revolute or prismatic joint; the gear's body B is its body B.
+    JointId jointB;
+    /// Finite and not 0; negative turns both the same way.
+    float ratio = 1.0f;
+    /// Whether the two geared bodies collide with each other.
+    bool collideConnected = false;
+    /// Not used by the engine.
+    void* userData = nullptr;
+};
+
+/// Two bodies hung from two fixed ground points by one rope over a pulley: lengthA + ratio·lengthB
+/// stays constant, where length is the distance from a ground anchor to the body's anchor
+/// (Box2D's b2PulleyJoint, an equality: the rope also pushes).
+struct PulleyJointDef {
+    /// The body on the first side of the rope.
+    BodyId bodyA;
+    /// The body on the second side of the rope.
+    BodyId bodyB;
+    /// World point the rope to body A hangs from.
+    Vec2 groundAnchorA;
+    /// World point the rope to body B hangs from.
+    Vec2 groundAnchorB;
+    /// Where the rope holds body A, in A's frame.
+    Vec2 localAnchorA;
+    /// Where the rope holds body B, in B's frame.
+    Vec2 localAnchorB;
+    /// Rope length on A's side (m, > 0): usually the anchors' current distance.
+    float lengthA = 1.0f;
+    /// Rope length on B's side (m, > 0).
+    float lengthB = 1.0f;
+    /// Block and tackle ratio (> 0, finite): B's side moves 1/ratio as far as A's.
+    float ratio = 1.0f;
+    /// Whether the two bodies collide with each other.
+    bool collideConnected = false;
+    /// Not used by the engine.
+    void* userData = nullptr;
 };
 
 }  // namespace perpdot

@@ -3,8 +3,11 @@
 /// (a shape is reported when shouldCollide(queryFilter, shape's filter)).
 #pragma once
 
+#include <variant>
+
 #include "perpdot/ids.hpp"
 #include "perpdot/math.hpp"
+#include "perpdot/shapes.hpp"
 
 namespace perpdot {
 
@@ -14,6 +17,24 @@ struct RayHit {
     Vec2 point;     ///< world
     Vec2 normal;    ///< the surface normal at the point, facing the ray
     float fraction = 0.0f;  ///< t of the hit point along the translation
+};
+
+/// A shape to sweep with World::castShape: a circle, a convex polygon (a box from makeBox) or a
+/// segment, in its own frame; the cast places it at a transform.
+using CastShape = std::variant<Circle, Polygon, Segment>;
+
+/// Where a swept shape first touches a world shape.
+struct ShapeCastHit {
+    /// The world shape that was hit.
+    ShapeId shape;
+    /// World point of first contact, on the hit shape's surface; the cast's start position when
+    /// the shapes already overlap there.
+    Vec2 point;
+    /// The hit shape's surface normal at `point`, facing the swept shape (−translation/|translation|
+    /// for an overlap at the start).
+    Vec2 normal;
+    /// t ∈ [0, 1]: the swept shape touches at xf.p + t·translation (0: overlapping at the start).
+    float fraction = 0.0f;
 };
 
 }  // namespace perpdot

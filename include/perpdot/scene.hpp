@@ -1,5 +1,5 @@
 /// @file
-/// The engine-neutral scene of ../shared/scene-format.md (`perpdot-scene/1`): what the JSON says,
+/// The engine-neutral scene of docs/scene-format.md (`perpdot-scene/1`): what the JSON says,
 /// nothing more. Both perpdot's World and Box2D's b2World are built from it.
 /// Every member has an initializer so that designated initializers may skip any of them.
 #pragma once
@@ -90,6 +90,13 @@ struct SceneJoint {
     float maxForce = 1.0f;  ///< motor, N
     float maxTorque = 1.0f;  ///< motor, N·m
     /// Equal in every field (a scene that round-trips through JSON compares equal).
+    int jointA = -1;  ///< gear: index of an earlier revolute or prismatic joint
+    int jointB = -1;  ///< gear: index of an earlier revolute or prismatic joint
+    float ratio = 1.0f;  ///< gear, pulley
+    Vec2 groundAnchorA{};  ///< pulley: world point the rope to A hangs from
+    Vec2 groundAnchorB{};  ///< pulley: world point the rope to B hangs from
+    std::optional<float> lengthA{};  ///< pulley; default: current rope length on A's side
+    std::optional<float> lengthB{};  ///< pulley; default: current rope length on B's side
     friend bool operator==(const SceneJoint&, const SceneJoint&) = default;
 };
 

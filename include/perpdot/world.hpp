@@ -158,6 +158,11 @@ public:
     JointId createJoint(const WheelJointDef& def);  ///< A new wheel joint.
     JointId createJoint(const MotorJointDef& def);  ///< A new motor joint.
     JointId createJoint(const MouseJointDef& def);  ///< A new mouse joint.
+    /// A gear between the moving bodies of two revolute/prismatic joints (joints.hpp); throws
+    /// perpdot::Error for a stale joint, another joint type, a non-static base, ratio 0 or not finite.
+    JointId createJoint(const GearJointDef& def);
+    /// A pulley (joints.hpp); throws perpdot::Error for lengths ≤ 0, ratio ≤ 0 or non-finite values.
+    JointId createJoint(const PulleyJointDef& def);
     void destroyJoint(JointId joint);  ///< Wakes its bodies.
     bool isValid(JointId joint) const;  ///< Whether `joint` names a live joint.
     std::vector<JointId> joints() const;  ///< Live joints, in creation order.
@@ -193,6 +198,15 @@ public:
     std::vector<ShapeId> overlapShape(const Circle& shape, const Transform& xf, const Filter& filter = {}) const;
     /// Shapes overlapping a query polygon placed at `xf`.
     std::vector<ShapeId> overlapShape(const Polygon& shape, const Transform& xf, const Filter& filter = {}) const;
+    /// Sweeps `shape`, placed at `xf`, along `translation` (no rotation) and returns the first
+    /// world shape it touches, if any (b2ShapeCast, Box2D's GJK ray cast). Only shapes whose filter
+    /// passes shouldCollide(filter, ·) are considered. Throws perpdot::Error for a non-finite
+    /// transform or translation or an invalid shape (radius ≤ 0, degenerate segment or polygon).
+    std::optional<ShapeCastHit> castShapeClosest(const CastShape& shape, const Transform& xf, Vec2 translation,
+                                                 const Filter& filter = {}) const;
+    /// Every shape child the swept shape touches, ordered by fraction (see castShapeClosest).
+    std::vector<ShapeCastHit> castShape(const CastShape& shape, const Transform& xf, Vec2 translation,
+                                        const Filter& filter = {}) const;
 
     // --- snapshots (bit-exact: restore + N steps equals N steps) ---
     /// Versioned bytes of the whole state: settings, bodies, shapes, joints, and the contact cache

@@ -4,6 +4,7 @@
 
 #include <box2d/b2_circle_shape.h>
 #include <box2d/b2_collision.h>
+#include <box2d/b2_distance.h>
 #include <box2d/b2_dynamic_tree.h>
 #include <box2d/b2_edge_shape.h>
 #include <box2d/b2_polygon_shape.h>
@@ -46,6 +47,12 @@ b2CircleShape toB2(const Circle& circle) {
     c.m_p = toB2(circle.center);
     c.m_radius = circle.radius;
     return c;
+}
+
+b2EdgeShape toB2(const Segment& segment) {
+    b2EdgeShape e;
+    e.SetTwoSided(toB2(segment.v1), toB2(segment.v2));
+    return e;
 }
 
 // perpdot polygons are already validated convex and counter-clockwise (makePolygon), so they go to
@@ -98,11 +105,7 @@ CollisionSystem::~CollisionSystem() = default;
 void CollisionSystem::setGeometry(int shape, const Circle& circle) { impl_->slot(shape) = toB2(circle); }
 void CollisionSystem::setGeometry(int shape, const Polygon& polygon) { impl_->slot(shape) = toB2(polygon); }
 
-void CollisionSystem::setGeometry(int shape, const Segment& segment) {
-    b2EdgeShape e;
-    e.SetTwoSided(toB2(segment.v1), toB2(segment.v2));
-    impl_->slot(shape) = e;
-}
+void CollisionSystem::setGeometry(int shape, const Segment& segment) { impl_->slot(shape) = toB2(segment); }
 
 void CollisionSystem::setGeometry(int shape, const Chain& chain) {
     const std::vector<Vec2>& v = chain.vertices;
@@ -290,6 +293,47 @@ bool CollisionSystem::rayCast(ChildKey key, const Transform& xf, Vec2 p1, Vec2 p
     if (!childShape(impl_->geometry[key.shape], key.child).RayCast(&output, input, toB2(xf), 0)) return false;
     result = {fromB2(output.normal), output.fraction};
     return true;
+}
+
+namespace {
+
+bool shapeCastOf(const b2Shape& target, int child, const b2Transform& xfTarget, const b2Shape& query, const b2Transform& xf,
+                 Vec2 translation, ShapeCastResult& result) {
+    // Shapes overlapping at the start are a hit at once (b2ShapeCast does not detect every overlap).
+    if (b2TestOverlap(&target, child, &query, 0, xfTarget, xf)) {
+        result = {fromB2(xf.p), -normalize(translation), 0.0f};
+        return true;
+    }
+    b2ShapeCastInput input;
+    input.proxyA.Set(&target, child);
+    input.proxyB.Set(&query, 0);
+    input.transformA = xfTarget;
+    input.transformB = xf;
+    input.translationB = toB2(translation);
+    b2ShapeCastOutput output;
+    if (!b2ShapeCast(&output, &input)) return false;
+    result = {fromB2(output.point), fromB2(output.normal), output.lambda};
+    return true;
+}
+
+}  // namespace
+
+bool CollisionSystem::shapeCast(ChildKey key, const Transform& xfKey, const Circle& query, const Transform& xf,
+                                Vec2 translation, ShapeCastResult& result) const {
+    const b2CircleShape shape = toB2(query);
+    return shapeCastOf(childShape(impl_->geometry[key.shape], key.child), 0, toB2(xfKey), shape, toB2(xf), translation, result);
+}
+
+bool CollisionSystem::shapeCast(ChildKey key, const Transform& xfKey, const Polygon& query, const Transform& xf,
+                                Vec2 translation, ShapeCastResult& result) const {
+    const b2PolygonShape shape = toB2(query);
+    return shapeCastOf(childShape(impl_->geometry[key.shape], key.child), 0, toB2(xfKey), shape, toB2(xf), translation, result);
+}
+
+bool CollisionSystem::shapeCast(ChildKey key, const Transform& xfKey, const Segment& query, const Transform& xf,
+                                Vec2 translation, ShapeCastResult& result) const {
+    const b2EdgeShape shape = toB2(query);
+    return shapeCastOf(childShape(impl_->geometry[key.shape], key.child), 0, toB2(xfKey), shape, toB2(xf), translation, result);
 }
 
 void CollisionSystem::rayCastImpl(Vec2 p1, Vec2 p2, void* context, float (*visit)(void*, int, float)) const {

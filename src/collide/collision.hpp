@@ -35,6 +35,11 @@ struct Sweep {
     float a1 = 0, a2 = 0;
 };
 
+struct ShapeCastResult {
+    Vec2 point, normal;
+    float fraction = 1.0f;
+};
+
 struct RayCastResult {
     Vec2 normal;
     float fraction = 1.0f;
@@ -106,6 +111,14 @@ public:
 
     // The ray p1 -> p2 against one child; a hit below maxFraction fills `result`.
     bool rayCast(ChildKey key, const Transform& xf, Vec2 p1, Vec2 p2, float maxFraction, RayCastResult& result) const;
+    // b2ShapeCast of `query` at xf moved by `translation` against one child; false when it misses.
+    // An overlap at the start is a hit at fraction 0 (b2TestOverlap), normal −translation/|translation|.
+    bool shapeCast(ChildKey key, const Transform& xfKey, const Circle& query, const Transform& xf, Vec2 translation,
+                   ShapeCastResult& result) const;
+    bool shapeCast(ChildKey key, const Transform& xfKey, const Polygon& query, const Transform& xf, Vec2 translation,
+                   ShapeCastResult& result) const;
+    bool shapeCast(ChildKey key, const Transform& xfKey, const Segment& query, const Transform& xf, Vec2 translation,
+                   ShapeCastResult& result) const;
     // Calls visit(proxy, maxFraction) for proxies whose fat AABB the ray p1 -> p2 crosses; visit returns
     // the new maxFraction (0 stops, a negative value leaves it unchanged).
     template <class Visit>

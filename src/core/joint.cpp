@@ -83,15 +83,6 @@ void removeJoint(World::Impl& w, int index) {
     s.freeList.push_back(index);
 }
 
-Joint& checkedJoint(const World::Impl& w, JointId id) {
-    const JointStore& s = store(w);
-    if (id.index < 0 || static_cast<size_t>(id.index) >= s.joints.size() || !s.joints[id.index].alive ||
-        s.joints[id.index].generation != id.generation)
-        throw Error("stale or invalid JointId (index " + std::to_string(id.index) + ", generation " +
-                    std::to_string(id.generation) + ")");
-    return const_cast<Joint&>(s.joints[id.index]);
-}
-
 JointReaction reactionOf(const Joint& j) {
     switch (j.type) {
         case JointType::Revolute: return reactionRevolute(j);
@@ -101,6 +92,8 @@ JointReaction reactionOf(const Joint& j) {
         case JointType::Wheel: return reactionWheel(j);
         case JointType::Motor: return reactionMotor(j);
         case JointType::Mouse: return reactionMouse(j);
+        case JointType::Gear: return reactionGear(j);
+        case JointType::Pulley: return reactionPulley(j);
     }
     return {};
 }
@@ -148,6 +141,15 @@ Joint& addJoint(World::Impl& w, JointType type, BodyId bodyA, BodyId bodyB, Vec2
     return j;
 }
 
+Joint& checkedJoint(const World::Impl& w, JointId id) {
+    const JointStore& s = store(w);
+    if (id.index < 0 || static_cast<size_t>(id.index) >= s.joints.size() || !s.joints[id.index].alive ||
+        s.joints[id.index].generation != id.generation)
+        throw Error("stale or invalid JointId (index " + std::to_string(id.index) + ", generation " +
+                    std::to_string(id.generation) + ")");
+    return const_cast<Joint&>(s.joints[id.index]);
+}
+
 JointId jointId(const World::Impl& w, const Joint& joint) {
     return {static_cast<int32_t>(&joint - store(w).joints.data()), joint.generation};
 }
@@ -181,12 +183,15 @@ void prepareJoint(PreparedJoint& j, const World::Impl& w, const Joint& joint, co
         case JointType::Wheel: prepareWheel(j, ctx, a.xf.q); break;
         case JointType::Motor: prepareMotor(j, ctx, a.xf.q); break;
         case JointType::Mouse: prepareMouse(j, ctx, a.xf.q); break;
+        case JointType::Gear: prepareGear(j, ctx, a, b); break;
+        case JointType::Pulley: preparePulley(j, ctx, a, b); break;
     }
 }
 
 JointPair pairOf(World::Impl& w, const PreparedJoint& j) {
     std::vector<BodyState>& states = w.states;
-    return {states[j.indexA], states[j.indexB], j.mass, w.stepRotation[j.indexB] - w.stepRotation[j.indexA]};
+    return {states[j.indexA], states[j.indexB], j.mass, w.stepRotation[j.indexB] - w.stepRotation[j.indexA],
+            w.stepRotation[j.indexA]};
 }
 
 // Colour by colour: `wide(rows, pair)` on the colour's blocks, then `scalar(joint, pair)` on its
@@ -300,6 +305,8 @@ void warmStartJoints(World::Impl& w, const StepContext&) {
                 case JointType::Wheel: warmStartWheel(j, p); break;
                 case JointType::Motor: warmStartMotor(j, p); break;
                 case JointType::Mouse: warmStartMouse(j, p); break;
+                case JointType::Gear: warmStartGear(j, p); break;
+                case JointType::Pulley: warmStartPulley(j, p); break;
             }
         });
 }
@@ -317,6 +324,8 @@ void solveJoints(World::Impl& w, const StepContext& ctx, bool useBias) {
                 case JointType::Wheel: solveWheel(j, p, ctx, useBias); break;
                 case JointType::Motor: solveMotor(j, p, ctx, useBias); break;
                 case JointType::Mouse: solveMouse(j, p, ctx, useBias); break;
+                case JointType::Gear: solveGear(j, p, ctx, useBias); break;
+                case JointType::Pulley: solvePulley(j, p, ctx, useBias); break;
             }
         });
 }

@@ -31,7 +31,8 @@ struct JointPairT {
     BodyLanes<F>& a;
     BodyLanes<F>& b;
     JointMassT<F> m;
-    F rotation{};  // (θB − θA) turned since the step began
+    F rotation{};   // (θB − θA) turned since the step began
+    F rotationA{};  // θA turned since the step began (gear joints; not set in SIMD lanes)
 };
 using JointPair = JointPairT<float>;
 
@@ -97,6 +98,33 @@ struct MouseJoint {
     Vec2 linearImpulse;
 };
 
+// One side of a gear: the coordinate of a revolute joint, θ − offset, or of a prismatic joint,
+// axis·anchor − offset (= axis·(anchor − base)), whose body A is static, so axis and offset are fixed.
+struct GearSide {
+    JointType kind = JointType::Revolute;
+    Vec2 axis;             // prismatic: world
+    float offset = 0;      // revolute: θ of the static body + the joint's reference angle; prismatic: axis·base
+    float coordinate = 0;  // at step start
+};
+
+// coordinateA + ratio·coordinateB = constant (joint_gear.cpp).
+struct GearJoint {
+    GearSide sideA, sideB;
+    float ratio = 1, constant = 0;
+    float mass = 0;
+    float impulse = 0;
+};
+
+// lengthA + ratio·lengthB = constant, length = |anchor − ground anchor| (joint_pulley.cpp).
+struct PulleyJoint {
+    Vec2 groundA, groundB;   // world
+    float ratio = 1, constant = 0;
+    Vec2 fromGroundA, fromGroundB;  // centre of mass − ground anchor, at step start
+    Vec2 uB;                 // B's rope direction (ground to anchor) at step start, for the reaction
+    float mass = 0;
+    float impulse = 0;
+};
+
 // Type-specific data; `type` in the Joint says which member is live (createJoint starts its
 // lifetime with std::construct_at, value-initialised).
 union JointData {
@@ -107,6 +135,8 @@ union JointData {
     WheelJoint wheel;
     MotorJoint motor;
     MouseJoint mouse;
+    GearJoint gear;
+    PulleyJoint pulley;
     JointData() : revolute{} {}
 };
 
@@ -173,6 +203,8 @@ struct JointReaction {
 Joint& addJoint(World::Impl& world, JointType type, BodyId bodyA, BodyId bodyB, Vec2 localAnchorA,
                 Vec2 localAnchorB, float referenceAngle, bool collideConnected, void* userData);
 JointId jointId(const World::Impl& world, const Joint& joint);
+// The live joint of `id`; Error for a stale or invalid id.
+Joint& checkedJoint(const World::Impl& world, JointId id);
 void requireFinite(bool ok, const char* what);  // Error "<what> must be finite" unless ok
 
 // Per-type stages (joint_<type>.cpp). prepare runs after the common frame (anchors, masses,
@@ -190,5 +222,16 @@ PERPDOT_JOINT_STAGES(Wheel)
 PERPDOT_JOINT_STAGES(Motor)
 PERPDOT_JOINT_STAGES(Mouse)
 #undef PERPDOT_JOINT_STAGES
+
+// Gear and pulley joints measure each body on its own, so their prepare sees both bodies.
+struct Body;
+#define PERPDOT_COUPLED_JOINT_STAGES(Name)                                                     \
+    void prepare##Name(PreparedJoint& joint, const StepContext& ctx, const Body& a, const Body& b); \
+    void warmStart##Name(PreparedJoint& joint, JointPair& pair);                               \
+    void solve##Name(PreparedJoint& joint, JointPair& pair, const StepContext& ctx, bool useBias); \
+    JointReaction reaction##Name(const Joint& joint);
+PERPDOT_COUPLED_JOINT_STAGES(Gear)
+PERPDOT_COUPLED_JOINT_STAGES(Pulley)
+#undef PERPDOT_COUPLED_JOINT_STAGES
 
 }  // namespace perpdot

@@ -256,6 +256,37 @@ constexpr auto fields(const MouseJoint*) {
                       field("linearImpulse", &J::linearImpulse).anyBits()};
 }
 
+constexpr auto fields(const GearSide*) {
+    using S = GearSide;
+    return std::tuple{field("kind", &S::kind), field("axis", &S::axis).anyBits(), field("offset", &S::offset).anyBits(),
+                      field("coordinate", &S::coordinate).anyBits()};
+}
+
+static_assert(reviewedLayout<GearJoint, 56>);
+constexpr auto fields(const GearJoint*) {
+    using J = GearJoint;
+    return std::tuple{field("sideA", &J::sideA),
+                      field("sideB", &J::sideB),
+                      field("ratio", &J::ratio).anyBits(),
+                      field("constant", &J::constant).anyBits(),
+                      field("mass", &J::mass).anyBits(),
+                      field("impulse", &J::impulse).anyBits()};
+}
+
+static_assert(reviewedLayout<PulleyJoint, 56>);
+constexpr auto fields(const PulleyJoint*) {
+    using J = PulleyJoint;
+    return std::tuple{field("groundA", &J::groundA).anyBits(),
+                      field("groundB", &J::groundB).anyBits(),
+                      field("ratio", &J::ratio).anyBits(),
+                      field("constant", &J::constant).anyBits(),
+                      field("fromGroundA", &J::fromGroundA).anyBits(),
+                      field("fromGroundB", &J::fromGroundB).anyBits(),
+                      field("uB", &J::uB).anyBits(),
+                      field("mass", &J::mass).anyBits(),
+                      field("impulse", &J::impulse).anyBits()};
+}
+
 // --- events raised between steps (since format 3) ---
 
 template <class Tag>
@@ -282,6 +313,8 @@ bool visitJointData(JointType type, Data& data, Visit&& visit) {
         case JointType::Wheel: visit(data.wheel); return true;
         case JointType::Motor: visit(data.motor); return true;
         case JointType::Mouse: visit(data.mouse); return true;
+        case JointType::Gear: visit(data.gear); return true;
+        case JointType::Pulley: visit(data.pulley); return true;
     }
     return false;
 }

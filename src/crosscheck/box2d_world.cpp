@@ -175,7 +175,9 @@ Anchors anchors(const SceneJoint& j, const b2Body* a, const b2Body* b) {
 
 b2Vec2 localAxis(const b2Body* a, Vec2 worldAxis) { return a->GetLocalVector(toB2(normalize(worldAxis))); }
 
-b2Joint* createJoint(b2World& world, const SceneJoint& j, b2Body* a, b2Body* b) {
+// `built`: the fragment's joints created so far (a gear names two of them; the reader checked
+// that they are earlier revolute or prismatic joints).
+b2Joint* createJoint(b2World& world, const SceneJoint& j, b2Body* a, b2Body* b, const std::vector<b2Joint*>& built) {
     const Anchors anchor = anchors(j, a, b);
     const float referenceAngle = b->GetAngle() - a->GetAngle();
     switch (j.type) {
@@ -244,6 +246,26 @@ b2Joint* createJoint(b2World& world, const SceneJoint& j, b2Body* a, b2Body* b) 
         def.maxForce = j.maxForce, def.maxTorque = j.maxTorque;
         return world.CreateJoint(&def);
     }
+    case JointType::Gear: {
+        if (j.jointA < 0 || j.jointB < 0 || j.jointA >= static_cast<int>(built.size()) ||
+            j.jointB >= static_cast<int>(built.size()))
+            throw Error("joints: a gear must name two earlier joints");
+        b2GearJointDef def;
+        def.bodyA = a, def.bodyB = b, def.collideConnected = j.collideConnected;
+        def.joint1 = built[j.jointA], def.joint2 = built[j.jointB];
+        def.ratio = j.ratio;
+        return world.CreateJoint(&def);
+    }
+    case JointType::Pulley: {
+        b2PulleyJointDef def;
+        def.bodyA = a, def.bodyB = b, def.collideConnected = j.collideConnected;
+        def.groundAnchorA = toB2(j.groundAnchorA), def.groundAnchorB = toB2(j.groundAnchorB);
+        def.localAnchorA = anchor.localA, def.localAnchorB = anchor.localB;
+        def.lengthA = j.lengthA.value_or((a->GetWorldPoint(anchor.localA) - def.groundAnchorA).Length());
+        def.lengthB = j.lengthB.value_or((b->GetWorldPoint(anchor.localB) - def.groundAnchorB).Length());
+        def.ratio = j.ratio;
+        return world.CreateJoint(&def);
+    }
     case JointType::Mouse: break;
     }
     throw Error("joints: mouse joints are interactive and not part of the scene format");
@@ -271,12 +293,13 @@ std::vector<b2Body*> Box2DScene::add(const Scene& fragment) {
         bodies.push_back(body);
     }
     const NameIndex index(fragment);
+    std::vector<b2Joint*> joints;
     for (size_t i = 0; i < fragment.joints.size(); ++i) {
         const SceneJoint& j = fragment.joints[i];
         const std::string where = "joints[" + std::to_string(i) + "]";
         b2Body* a = bodies[index(j.bodyA, where + ".body_a")];
         b2Body* b = bodies[index(j.bodyB, where + ".body_b")];
-        createJoint(*world_, j, a, b);
+        joints.push_back(createJoint(*world_, j, a, b, joints));
     }
     return bodies;
 }

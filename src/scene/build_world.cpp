@@ -68,7 +68,8 @@ JointFrame jointFrame(const SceneJoint& j, const World& world, const Scene& scen
     return f;
 }
 
-JointId createJoint(World& world, const SceneJoint& j, const JointFrame& f) {
+// `built`: the scene's joints created so far (a gear names two of them).
+JointId createJoint(World& world, const SceneJoint& j, const JointFrame& f, const std::vector<JointId>& built) {
     const Vec2 localAxisA = invRotate(f.frameA.q, normalize(j.axis));
     switch (j.type) {
         case JointType::Revolute:
@@ -107,6 +108,23 @@ JointId createJoint(World& world, const SceneJoint& j, const JointFrame& f) {
                 .bodyA = f.bodyA, .bodyB = f.bodyB, .linearOffset = j.linearOffset,
                 .angularOffset = j.angularOffset, .maxForce = j.maxForce, .maxTorque = j.maxTorque,
                 .collideConnected = j.collideConnected});
+        case JointType::Gear: {
+            const auto geared = [&](int index) {
+                if (index < 0 || index >= static_cast<int>(built.size())) throw Error("gear: no earlier joint " + std::to_string(index));
+                return built[index];
+            };
+            return world.createJoint(GearJointDef{.jointA = geared(j.jointA), .jointB = geared(j.jointB), .ratio = j.ratio,
+                                                  .collideConnected = j.collideConnected});
+        }
+        case JointType::Pulley: {
+            const Vec2 worldA = transformPoint(f.frameA, f.localAnchorA), worldB = transformPoint(f.frameB, f.localAnchorB);
+            return world.createJoint(PulleyJointDef{
+                .bodyA = f.bodyA, .bodyB = f.bodyB, .groundAnchorA = j.groundAnchorA, .groundAnchorB = j.groundAnchorB,
+                .localAnchorA = f.localAnchorA, .localAnchorB = f.localAnchorB,
+                .lengthA = j.lengthA.value_or(distance(j.groundAnchorA, worldA)),
+                .lengthB = j.lengthB.value_or(distance(j.groundAnchorB, worldB)), .ratio = j.ratio,
+                .collideConnected = j.collideConnected});
+        }
         case JointType::Mouse: break;
     }
     throw Error("mouse joints cannot be part of a scene");
@@ -136,7 +154,7 @@ SceneBodies addToWorld(World& world, const Scene& scene) {
     for (size_t i = 0; i < scene.joints.size(); ++i) {
         try {
             const SceneJoint& j = scene.joints[i];
-            built.joints.push_back(createJoint(world, j, jointFrame(j, world, scene, built.bodies, index)));
+            built.joints.push_back(createJoint(world, j, jointFrame(j, world, scene, built.bodies, index), built.joints));
         } catch (const Error& e) {
             throw Error(element("joints", i) + ": " + e.what());
         }

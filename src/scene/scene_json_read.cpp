@@ -1,4 +1,4 @@
-// Reading `perpdot-scene/1` (../shared/scene-format.md): defaults, strict keys, and validation.
+// Reading `perpdot-scene/1` (docs/scene-format.md): defaults, strict keys, and validation.
 // Every error is a perpdot::Error whose message starts with the JSON path of the offending value.
 #include <algorithm>
 #include <cmath>
@@ -16,14 +16,14 @@
 
 #include "perpdot/error.hpp"
 #include "perpdot/scene.hpp"
+#include "scene/scene_keys.hpp"
 #include "scene/scene_limits.hpp"
 
 namespace perpdot {
 namespace {
 
 using nlohmann::json;
-using Keys = std::initializer_list<std::string_view>;
-using KeyList = std::span<const std::string_view>;
+using scene_keys::KeyList;
 
 [[noreturn]] void fail(const std::string& path, const std::string& message) {
     throw Error((path.empty() ? std::string("(root)") : path) + ": " + message);
@@ -45,10 +45,11 @@ public:
     const std::string& path() const { return path_; }
     bool has(std::string_view key) const { return j_.contains(key); }
 
-    void allowOnly(Keys common, KeyList extra = {}) const {
+    // Keys outside every one of `lists` (scene_keys.hpp) are errors.
+    void allowOnly(std::initializer_list<KeyList> lists) const {
         for (const auto& item : j_.items()) {
-            const auto known = [&](auto keys) { return std::find(keys.begin(), keys.end(), item.key()) != keys.end(); };
-            if (!known(common) && !known(extra)) fail(member(path_, item.key()), "unknown key");
+            const auto known = [&](KeyList keys) { return std::find(keys.begin(), keys.end(), item.key()) != keys.end(); };
+            if (std::none_of(lists.begin(), lists.end(), known)) fail(member(path_, item.key()), "unknown key");
         }
     }
 
@@ -182,13 +183,14 @@ constexpr std::pair<const char*, SceneShape::Kind> shapeKinds[] = {
     {"segment", SceneShape::Kind::Segment}, {"chain", SceneShape::Kind::Chain}};
 constexpr std::pair<const char*, JointType> jointTypes[] = {
     {"revolute", JointType::Revolute}, {"prismatic", JointType::Prismatic}, {"distance", JointType::Distance},
-    {"weld", JointType::Weld}, {"wheel", JointType::Wheel}, {"motor", JointType::Motor}};
+    {"weld", JointType::Weld}, {"wheel", JointType::Wheel}, {"motor", JointType::Motor},
+    {"gear", JointType::Gear}, {"pulley", JointType::Pulley}};
 constexpr std::pair<const char*, SceneAction::Kind> actionKinds[] = {
     {"force", SceneAction::Kind::Force}, {"impulse", SceneAction::Kind::Impulse},
     {"torque", SceneAction::Kind::Torque}, {"angular_impulse", SceneAction::Kind::AngularImpulse}};
 
 Filter readFilter(const Object& o) {
-    o.allowOnly({"category", "mask", "group"});
+    o.allowOnly({scene_keys::filter});
     Filter f;
     f.category = static_cast<uint16_t>(o.integer("category", f.category, 0, 0xFFFF));
     f.mask = static_cast<uint16_t>(o.integer("mask", f.mask, 0, 0xFFFF));
@@ -200,16 +202,16 @@ SceneShape readShape(const Object& o) {
     SceneShape s;
     const std::string type = o.requiredString("type");
     s.kind = enumValue(type, shapeKinds, member(o.path(), "type"));
-    static constexpr std::string_view common[] = {"type", "density", "friction", "restitution", "sensor", "filter"};
+    const KeyList common = scene_keys::shape;
     switch (s.kind) {
         case SceneShape::Kind::Circle:
-            o.allowOnly({"radius", "center"}, common);
+            o.allowOnly({common, scene_keys::circle});
             s.radius = o.bounded("radius", 0.0f, maxCoordinate);
             if (s.radius <= 0.0f) fail(member(o.path(), "radius"), "must be positive");
             s.center = o.boundedVec("center", {}, maxCoordinate);
             break;
         case SceneShape::Kind::Box:
-            o.allowOnly({"half_extents", "center", "angle"}, common);
+            o.allowOnly({common, scene_keys::box});
             o.required("half_extents");
             s.halfExtents = o.boundedVec("half_extents", {}, maxCoordinate);
             if (s.halfExtents.x <= 0.0f || s.halfExtents.y <= 0.0f) fail(member(o.path(), "half_extents"), "must be positive");
@@ -217,7 +219,7 @@ SceneShape readShape(const Object& o) {
             s.angle = o.number("angle", 0.0f);
             break;
         case SceneShape::Kind::Polygon:
-            o.allowOnly({"vertices", "radius"}, common);
+            o.allowOnly({common, scene_keys::polygon});
             o.required("vertices");
             s.vertices = o.points("vertices");
             s.radius = o.nonNegative("radius", 0.0f, maxCoordinate);
@@ -228,7 +230,7 @@ SceneShape readShape(const Object& o) {
             }
             break;
         case SceneShape::Kind::Segment:
-            o.allowOnly({"v1", "v2"}, common);
+            o.allowOnly({common, scene_keys::segment});
             o.required("v1");
             o.required("v2");
             s.v1 = o.boundedVec("v1", {}, maxCoordinate);
@@ -236,7 +238,7 @@ SceneShape readShape(const Object& o) {
             if (distance(s.v1, s.v2) <= minEdgeLength) fail(o.path(), "segment is degenerate (v1 == v2)");
             break;
         case SceneShape::Kind::Chain: {
-            o.allowOnly({"vertices", "loop"}, common);
+            o.allowOnly({common, scene_keys::chain});
             o.required("vertices");
             s.vertices = o.points("vertices");
             s.loop = o.boolean("loop", false);
@@ -259,8 +261,7 @@ SceneShape readShape(const Object& o) {
 }
 
 SceneBody readBody(const Object& o, size_t index) {
-    o.allowOnly({"name", "type", "position", "angle", "linear_velocity", "angular_velocity", "linear_damping",
-                 "angular_damping", "gravity_scale", "fixed_rotation", "bullet", "allow_sleep", "shapes"});
+    o.allowOnly({scene_keys::body});
     SceneBody b;
     b.name = o.string("name", defaultBodyName(index));
     if (b.name.empty()) fail(member(o.path(), "name"), "must not be empty");
@@ -281,21 +282,15 @@ SceneBody readBody(const Object& o, size_t index) {
 
 // Keys each joint type accepts besides the common ones (scene-format.md, "Joints").
 KeyList jointKeys(JointType type) {
-    static constexpr std::string_view revolute[] = {"enable_limit", "lower_angle", "upper_angle",
-                                                    "enable_motor", "motor_speed", "max_motor_torque"};
-    static constexpr std::string_view distance[] = {"anchor_b", "length", "min_length", "max_length", "hertz", "damping_ratio"};
-    static constexpr std::string_view prismatic[] = {"axis", "enable_limit", "lower", "upper",
-                                                     "enable_motor", "motor_speed", "max_motor_force"};
-    static constexpr std::string_view weld[] = {"hertz", "damping_ratio"};
-    static constexpr std::string_view wheel[] = {"axis", "hertz", "damping_ratio", "enable_motor", "motor_speed", "max_motor_torque"};
-    static constexpr std::string_view motor[] = {"linear_offset", "angular_offset", "max_force", "max_torque"};
     switch (type) {
-        case JointType::Revolute: return revolute;
-        case JointType::Distance: return distance;
-        case JointType::Prismatic: return prismatic;
-        case JointType::Weld: return weld;
-        case JointType::Wheel: return wheel;
-        case JointType::Motor: return motor;
+        case JointType::Revolute: return scene_keys::revolute;
+        case JointType::Distance: return scene_keys::distance;
+        case JointType::Prismatic: return scene_keys::prismatic;
+        case JointType::Weld: return scene_keys::weld;
+        case JointType::Wheel: return scene_keys::wheel;
+        case JointType::Motor: return scene_keys::motor;
+        case JointType::Gear: return scene_keys::gear;
+        case JointType::Pulley: return scene_keys::pulley;
         case JointType::Mouse: break;  // not in the file format
     }
     return {};
@@ -311,8 +306,9 @@ void readAnchors(const Object& o, SceneJoint& j) {
     if (o.has("anchor_b")) {
         if (!j.anchor) fail(member(o.path(), "anchor_b"), "needs \"anchor\" as body A's world anchor");
         j.anchorB = o.vecAt("anchor_b");
-    } else if (j.type == JointType::Distance && j.anchor) {
-        fail(member(o.path(), "anchor_b"), "missing required key (a distance joint has two world anchors)");
+    } else if ((j.type == JointType::Distance || j.type == JointType::Pulley) && j.anchor) {
+        fail(member(o.path(), "anchor_b"), "missing required key (a " + std::string(j.type == JointType::Distance ? "distance" : "pulley") +
+                                               " joint has two world anchors)");
     }
     if (o.has("local_anchor_a")) {
         j.localAnchorA = o.vecAt("local_anchor_a");
@@ -324,16 +320,50 @@ void requireOrdered(const Object& o, std::string_view lowKey, float low, std::st
     if (low > high) fail(member(o.path(), highKey), "must not be less than " + std::string(lowKey));
 }
 
-SceneJoint readJoint(const Object& o, const std::set<std::string>& bodyNames) {
+// A gear names two earlier revolute or prismatic joints by index; its bodies are theirs body B.
+void readGear(const Object& o, SceneJoint& j, const std::vector<SceneJoint>& earlier) {
+    const auto readIndex = [&](const char* key, const std::string& body, const char* bodyKey) {
+        const std::string path = member(o.path(), key);
+        o.required(key);
+        const int index = static_cast<int>(o.integer(key, -1, 0, maxSceneSteps));
+        if (index >= static_cast<int>(earlier.size()))
+            fail(path, "must be the index of an earlier joint (this is joint " + std::to_string(earlier.size()) + ")");
+        const SceneJoint& geared = earlier[index];
+        if (geared.type != JointType::Revolute && geared.type != JointType::Prismatic)
+            fail(path, "must name a revolute or prismatic joint");
+        if (geared.bodyB != body)
+            fail(member(o.path(), bodyKey), "must be the geared joint's body_b, \"" + geared.bodyB + "\"");
+        return index;
+    };
+    j.jointA = readIndex("joint_a", j.bodyA, "body_a");
+    j.jointB = readIndex("joint_b", j.bodyB, "body_b");
+    j.ratio = o.bounded("ratio", 1.0f, maxCoordinate);
+    if (j.ratio == 0.0f) fail(member(o.path(), "ratio"), "must not be 0");
+}
+
+void readPulley(const Object& o, SceneJoint& j) {
+    o.required("ground_anchor_a");
+    o.required("ground_anchor_b");
+    j.groundAnchorA = o.boundedVec("ground_anchor_a", {}, maxCoordinate);
+    j.groundAnchorB = o.boundedVec("ground_anchor_b", {}, maxCoordinate);
+    for (auto [key, length] : {std::pair{"length_a", &j.lengthA}, std::pair{"length_b", &j.lengthB}}) {
+        if (!o.has(key)) continue;
+        *length = o.bounded(key, 0.0f, maxCoordinate);
+        if (!(**length > 0.0f)) fail(member(o.path(), key), "must be positive");
+    }
+    j.ratio = o.bounded("ratio", 1.0f, maxCoordinate);
+    if (!(j.ratio > 0.0f)) fail(member(o.path(), "ratio"), "must be positive");
+}
+
+SceneJoint readJoint(const Object& o, const std::set<std::string>& bodyNames, const std::vector<SceneJoint>& earlier) {
     SceneJoint j;
     const std::string type = o.requiredString("type");
     j.type = enumValue(type, jointTypes, member(o.path(), "type"));
-    const bool anchored = j.type != JointType::Motor;
+    const bool anchored = j.type != JointType::Motor && j.type != JointType::Gear;
     if (anchored)
-        o.allowOnly({"type", "body_a", "body_b", "collide_connected", "anchor", "local_anchor_a", "local_anchor_b"},
-                    jointKeys(j.type));
+        o.allowOnly({scene_keys::joint, scene_keys::jointAnchors, jointKeys(j.type)});
     else
-        o.allowOnly({"type", "body_a", "body_b", "collide_connected"}, jointKeys(j.type));
+        o.allowOnly({scene_keys::joint, jointKeys(j.type)});
     for (const char* key : {"body_a", "body_b"}) {
         const std::string name = o.requiredString(key);
         if (!bodyNames.contains(name)) fail(member(o.path(), key), "no body named \"" + name + "\"");
@@ -366,6 +396,8 @@ SceneJoint readJoint(const Object& o, const std::set<std::string>& bodyNames) {
     j.angularOffset = o.number("angular_offset", 0.0f);
     j.maxForce = o.nonNegative("max_force", j.maxForce);
     j.maxTorque = o.nonNegative("max_torque", j.maxTorque);
+    if (j.type == JointType::Gear) readGear(o, j, earlier);
+    if (j.type == JointType::Pulley) readPulley(o, j);
     return j;
 }
 
@@ -374,9 +406,9 @@ SceneAction readAction(const Object& o, const std::set<std::string>& bodyNames) 
     a.kind = enumValue(o.requiredString("type"), actionKinds, member(o.path(), "type"));
     const bool linear = a.kind == SceneAction::Kind::Force || a.kind == SceneAction::Kind::Impulse;
     if (linear)
-        o.allowOnly({"type", "body", "value", "point", "first_step", "last_step"});
+        o.allowOnly({scene_keys::action, scene_keys::actionPoint});
     else
-        o.allowOnly({"type", "body", "value", "first_step", "last_step"});
+        o.allowOnly({scene_keys::action});
     a.body = o.requiredString("body");
     if (!bodyNames.contains(a.body)) fail(member(o.path(), "body"), "no body named \"" + a.body + "\"");
     if (linear) {
@@ -392,14 +424,14 @@ SceneAction readAction(const Object& o, const std::set<std::string>& bodyNames) 
 }
 
 void readSolver(const Object& o, SceneSolver& solver) {
-    o.allowOnly({"substeps", "velocity_iterations", "position_iterations"});
+    o.allowOnly({scene_keys::solver});
     if (o.has("substeps")) solver.substeps = static_cast<int>(o.integer("substeps", 0, 1, maxSubsteps));
     solver.velocityIterations = static_cast<int>(o.integer("velocity_iterations", solver.velocityIterations, 1, maxIterations));
     solver.positionIterations = static_cast<int>(o.integer("position_iterations", solver.positionIterations, 0, maxIterations));
 }
 
 Scene readScene(const Object& o) {
-    o.allowOnly({"format", "name", "description", "gravity", "timestep", "steps", "solver", "bodies", "joints", "actions"});
+    o.allowOnly({scene_keys::root});
     const std::string format = o.requiredString("format");
     if (format != sceneFormat) fail("format", "expected \"" + std::string(sceneFormat) + "\", got \"" + format + "\"");
     Scene s;
@@ -418,7 +450,7 @@ Scene readScene(const Object& o) {
         if (!names.insert(s.bodies.back().name).second)
             fail(member(path, "name"), "duplicate body name \"" + s.bodies.back().name + "\"");
     }
-    for (const auto& [item, path] : o.array("joints")) s.joints.push_back(readJoint(Object(*item, path), names));
+    for (const auto& [item, path] : o.array("joints")) s.joints.push_back(readJoint(Object(*item, path), names, s.joints));
     for (const auto& [item, path] : o.array("actions")) s.actions.push_back(readAction(Object(*item, path), names));
     return s;
 }

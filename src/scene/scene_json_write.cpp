@@ -64,6 +64,8 @@ const char* name(JointType type) {
         case JointType::Weld: return "weld";
         case JointType::Wheel: return "wheel";
         case JointType::Motor: return "motor";
+        case JointType::Gear: return "gear";
+        case JointType::Pulley: return "pulley";
         case JointType::Mouse: break;
     }
     throw Error("mouse joints are interactive and cannot be saved in a scene");
@@ -189,6 +191,17 @@ Json jointJson(const SceneJoint& j) {
         put(o, "max_force", j.maxForce, d.maxForce);
         put(o, "max_torque", j.maxTorque, d.maxTorque);
     }
+    if (j.type == JointType::Gear) {
+        o["joint_a"] = j.jointA;
+        o["joint_b"] = j.jointB;
+    }
+    if (j.type == JointType::Pulley) {
+        o["ground_anchor_a"] = vec(j.groundAnchorA);
+        o["ground_anchor_b"] = vec(j.groundAnchorB);
+        if (j.lengthA) o["length_a"] = shortest(*j.lengthA);
+        if (j.lengthB) o["length_b"] = shortest(*j.lengthB);
+    }
+    if (j.type == JointType::Gear || j.type == JointType::Pulley) put(o, "ratio", j.ratio, d.ratio);
     return o;
 }
 

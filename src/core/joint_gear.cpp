@@ -1,0 +1,113 @@
+// Gear joint: coordinateA + ratio·coordinateB = constant, between the moving bodies of two
+// revolute or prismatic joints whose other body is static (Box2D's b2GearJoint with static C, D).
+// A revolute side's coordinate is its angle, Ċ-term ω (n = 0, s = 1); a prismatic side's is
+// axis·(anchor − base), Ċ-term axis·v + perpDot(r, axis) ω. One coupled row (joint_coupled_row.hpp),
+// B's terms scaled by the ratio.
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include "core/joint_coupled_row.hpp"
+#include "core/world_impl.hpp"
+
+namespace perpdot {
+
+namespace {
+
+// The side's coordinate with the body at rest at `body`, its anchor at arm r from the centre of mass.
+float coordinateAt(const GearSide& side, const Body& body, Vec2 r) {
+    if (side.kind == JointType::Revolute) return body.angle - side.offset;
+    return dot(body.center + r, side.axis) - side.offset;
+}
+
+// A revolute or prismatic joint seen from its moving body B: what the gear needs to measure it.
+GearSide gearSide(const World::Impl& w, const Joint& joint, const char* which) {
+    const std::string name = std::string("GearJointDef.") + which;
+    if (joint.type != JointType::Revolute && joint.type != JointType::Prismatic)
+        throw Error(name + " must be a revolute or prismatic joint");
+    const Body& base = w.bodies[joint.bodyA];
+    const Body& moving = w.bodies[joint.bodyB];
+    if (base.type != BodyType::Static)
+        throw Error(name + "'s body A must be static (perpdot's gear couples the two joints' bodies B)");
+    GearSide side{.kind = joint.type};
+    if (joint.type == JointType::Revolute) {
+        side.offset = base.angle + joint.referenceAngle;
+    } else {
+        side.axis = rotate(base.xf.q, joint.data.prismatic.localAxisA);
+        side.offset = dot(transformPoint(base.xf, joint.localAnchorA), side.axis);
+    }
+    side.coordinate = coordinateAt(side, moving, rotate(moving.xf.q, joint.localAnchorB - moving.localCenter));
+    return side;
+}
+
+// The side's coordinate now, and its Ċ-terms, from the body's step-start state plus Δp, Δq.
+struct SideNow {
+    float coordinate;
+    Vec2 n;
+    float s;
+};
+
+// `turned`: the body's Δθ summed over the substeps so far (as the body's angle will add it).
+SideNow sideNow(const GearSide& side, const BodyState& body, float turned, Vec2 anchor) {
+    if (side.kind == JointType::Revolute) return {side.coordinate + turned, {}, 1.0f};
+    const Vec2 r = rotate(body.dq, anchor);
+    return {side.coordinate + dot(body.dp + r - anchor, side.axis), side.axis, perpDot(r, side.axis)};
+}
+
+CoupledRow gearRow(const GearJoint& g, const SideNow& a, const SideNow& b) {
+    return {a.n, a.s, g.ratio * b.n, g.ratio * b.s};
+}
+
+}  // namespace
+
+JointId World::createJoint(const GearJointDef& def) {
+    requireFinite(std::isfinite(def.ratio), "GearJointDef.ratio");
+    if (def.ratio == 0.0f) throw Error("GearJointDef.ratio must not be 0");
+    const Joint& jointA = checkedJoint(*impl_, def.jointA);
+    const Joint& jointB = checkedJoint(*impl_, def.jointB);
+    const GearSide sideA = gearSide(*impl_, jointA, "jointA");
+    const GearSide sideB = gearSide(*impl_, jointB, "jointB");
+    const int bodyA = jointA.bodyB, bodyB = jointB.bodyB;
+    const Vec2 anchorA = jointA.localAnchorB, anchorB = jointB.localAnchorB;
+    if (bodyA == bodyB) throw Error("GearJointDef: the two joints move the same body");
+    Joint& j = addJoint(*impl_, JointType::Gear, impl_->bodyId(bodyA), impl_->bodyId(bodyB), anchorA, anchorB, 0.0f,
+                        def.collideConnected, def.userData);
+    GearJoint& g = *std::construct_at(&j.data.gear);
+    g.sideA = sideA;
+    g.sideB = sideB;
+    g.ratio = def.ratio;
+    g.constant = sideA.coordinate + def.ratio * sideB.coordinate;
+    return jointId(*impl_, j);
+}
+
+void prepareGear(PreparedJoint& j, const StepContext& ctx, const Body& a, const Body& b) {
+    GearJoint& g = j.data.gear;
+    g.sideA.coordinate = coordinateAt(g.sideA, a, j.anchorA);
+    g.sideB.coordinate = coordinateAt(g.sideB, b, j.anchorB);
+    const BodyState still{};
+    g.mass = effectiveMass(j.mass, gearRow(g, sideNow(g.sideA, still, 0.0f, j.anchorA), sideNow(g.sideB, still, 0.0f, j.anchorB)));
+    if (!ctx.enableWarmStarting) g.impulse = 0.0f;
+}
+
+void warmStartGear(PreparedJoint& j, JointPair& p) {
+    const GearJoint& g = j.data.gear;
+    applyRow(p, gearRow(g, sideNow(g.sideA, p.a, p.rotationA, j.anchorA), sideNow(g.sideB, p.b, p.rotationA + p.rotation, j.anchorB)),
+             g.impulse);
+}
+
+void solveGear(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool useBias) {
+    GearJoint& g = j.data.gear;
+    const SideNow a = sideNow(g.sideA, p.a, p.rotationA, j.anchorA), b = sideNow(g.sideB, p.b, p.rotationA + p.rotation, j.anchorB);
+    const float C = a.coordinate + g.ratio * b.coordinate - g.constant;
+    solveRow(p, gearRow(g, a, b), g.mass, C, rigidSoftness(ctx, useBias), g.impulse);
+}
+
+// On B: a torque for a revolute side, a force along the axis for a prismatic one.
+JointReaction reactionGear(const Joint& j) {
+    const GearJoint& g = j.data.gear;
+    const float impulse = g.ratio * g.impulse;
+    if (g.sideB.kind == JointType::Revolute) return {{}, impulse};
+    return {impulse * g.sideB.axis, 0.0f};
+}
+
+}  // namespace perpdot
