@@ -29,7 +29,9 @@ std::atomic<long> allocationCount{0};
 }  // namespace
 
 #if defined(PERPDOT_ASAN)
-#include <sanitizer/allocator_interface.h>
+// From <sanitizer/allocator_interface.h>, which gcc does not install (its libasan exports it).
+extern "C" int __sanitizer_install_malloc_and_free_hooks(void (*malloc_hook)(const volatile void*, std::size_t),
+                                                         void (*free_hook)(const volatile void*));
 
 namespace {
 void countAllocation(const volatile void*, std::size_t) { ++allocationCount; }
