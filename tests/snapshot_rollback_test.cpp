@@ -79,18 +79,23 @@ public:
     }
     World& world() { return built_.world; }
 
-    // What a rollback saves: the world, the step count (scene actions), the script and its groups.
+    // What a rollback saves: the world (full, or compact against a baseline), the step count
+    // (scene actions), the script and its groups.
     struct Saved {
         Bytes world;
+        Bytes compact;
+        const Bytes* baseline = nullptr;
         int stepIndex = 0;
         std::unique_ptr<SceneScript> script;
         std::vector<std::vector<BodyId>> groups;
     };
-    Saved save() const {
-        return {built_.world.snapshot(), built_.stepIndex, script_ ? script_->clone() : nullptr, groups_};
+    Saved save(const Bytes* baseline) const {
+        return {baseline ? Bytes{} : built_.world.snapshot(), baseline ? built_.world.compactSnapshot(*baseline) : Bytes{},
+                baseline, built_.stepIndex, script_ ? script_->clone() : nullptr, groups_};
     }
     void restore(const Saved& saved) {
-        built_.world.restore(saved.world);
+        if (saved.baseline) built_.world.restoreCompact(*saved.baseline, saved.compact);
+        else built_.world.restore(saved.world);
         built_.stepIndex = saved.stepIndex;
         script_ = saved.script ? saved.script->clone() : nullptr;
         groups_ = saved.groups;
@@ -127,7 +132,7 @@ Plan planFor(const std::string& name, int sceneSteps) {
 }
 
 struct Coverage {
-    int points = 0, withSleepingBodies = 0, withEvents = 0, editedBeforeSave = 0, disturbedBeforeRestore = 0;
+    int points = 0, compact = 0, withSleepingBodies = 0, withEvents = 0, editedBeforeSave = 0, disturbedBeforeRestore = 0;
 };
 
 // One restore point: save after step saveAt (0-based), run `ahead` steps, restore, re-simulate.
@@ -135,6 +140,7 @@ struct Point {
     int saveAt = 0, ahead = 1;
     bool edit = false;     // the user edits the world between the step and the save (in both runs)
     bool disturb = false;  // the world is changed after running ahead, before restoring
+    bool compact = false;  // saved as a compact snapshot against a baseline taken a few points earlier
 };
 
 std::vector<Point> drawPoints(Plan plan, std::mt19937& rng) {
@@ -147,6 +153,7 @@ std::vector<Point> drawPoints(Plan plan, std::mt19937& rng) {
         p.saveAt = k * stride + int(rng() % unsigned(std::max(1, stride - p.ahead)));
         p.edit = rng() % 4 == 0;
         p.disturb = rng() % 3 == 0;
+        p.compact = k % 2 == 1;
         drawn.push_back(p);
     }
     return drawn;
@@ -210,13 +217,15 @@ void checkRollback(const std::string& name, Make make, Plan plan, std::mt19937& 
     }
     std::unique_ptr<SceneRun> run = make();
     int s = 0;
+    Bytes baseline;
     for (const Point& point : points) {
         for (; s <= point.saveAt; ++s) {
             run->step();
             ASSERT_EQ(frameOf(run->world()), reference[size_t(s)]) << name << " step " << s;
         }
         if (point.edit) editBetweenSteps(run->world(), point.saveAt);
-        const SceneRun::Saved saved = run->save();
+        if (baseline.empty() || &point - points.data() == 8) baseline = run->world().baselineSnapshot();
+        const SceneRun::Saved saved = run->save(point.compact ? &baseline : nullptr);
         for (int i = 0; i < point.ahead; ++i) {
             run->step();
             ASSERT_EQ(frameOf(run->world()), reference[size_t(s + i)]) << name << " running ahead, step " << s + i;
@@ -236,6 +245,7 @@ void checkRollback(const std::string& name, Make make, Plan plan, std::mt19937& 
         ++coverage.points;
         coverage.withSleepingBodies += anySleeping(run->world()) ? 1 : 0;
         coverage.withEvents += events ? 1 : 0;
+        coverage.compact += point.compact ? 1 : 0;
         coverage.editedBeforeSave += point.edit ? 1 : 0;
         coverage.disturbedBeforeRestore += point.disturb ? 1 : 0;
     }
@@ -256,9 +266,10 @@ TEST(SnapshotRollback, EveryRestorePointReplaysTheSameFuture) {
     EXPECT_GT(coverage.withEvents, 0);
     EXPECT_GT(coverage.editedBeforeSave, 0);
     EXPECT_GT(coverage.disturbedBeforeRestore, 0);
-    std::printf("restore points: %d (%d with sleeping bodies, %d with events re-simulated, %d edited before saving, %d "
+    EXPECT_GT(coverage.compact, 0);
+    std::printf("restore points: %d (%d compact, %d with sleeping bodies, %d with events re-simulated, %d edited before saving, %d "
                 "disturbed before restoring)\n",
-                coverage.points, coverage.withSleepingBodies, coverage.withEvents, coverage.editedBeforeSave,
+                coverage.points, coverage.compact, coverage.withSleepingBodies, coverage.withEvents, coverage.editedBeforeSave,
                 coverage.disturbedBeforeRestore);
 }
 
