@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "joint_zoo.hpp"
+#include "perpdot/error.hpp"
 #include "perpdot/feature_scenes.hpp"
 #include "perpdot/scene.hpp"
 #include "perpdot/state_hash.hpp"
@@ -271,6 +272,44 @@ TEST(SnapshotRollback, EveryRestorePointReplaysTheSameFuture) {
                 "disturbed before restoring)\n",
                 coverage.points, coverage.compact, coverage.withSleepingBodies, coverage.withEvents, coverage.editedBeforeSave,
                 coverage.disturbedBeforeRestore);
+}
+
+// Compact snapshots: far smaller than full ones when little changed, refused against another
+// baseline, and refused (never crashing) when cut short or corrupted.
+TEST(SnapshotRollback, CompactSnapshotsNeedTheirBaselineAndRefuseBadBytes) {
+    SceneWorld built = buildWorld(findScene("pyramid"));
+    for (int i = 0; i < 100; ++i) built.step();
+    const Bytes baseline = built.world.baselineSnapshot();
+    for (int i = 0; i < 8; ++i) built.step();
+    const Bytes compact = built.world.compactSnapshot(baseline);
+    const Bytes full = built.world.snapshot();
+    EXPECT_LT(compact.size() * 4, full.size());
+    const uint64_t hash = stateHash(built.world);
+
+    World target;
+    target.restoreCompact(baseline, compact);
+    EXPECT_EQ(stateHash(target), hash);
+    Bytes otherBaseline = baseline;
+    otherBaseline.back() ^= 1;
+    try {
+        target.restoreCompact(otherBaseline, compact);
+        ADD_FAILURE() << "a compact snapshot was accepted against another baseline";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("another baseline"), std::string::npos) << e.what();
+    }
+    for (size_t size = 0; size < compact.size(); size += 13)
+        EXPECT_THROW(target.restoreCompact(baseline, std::span(compact.data(), size)), Error) << size;
+    for (size_t i = 24; i < compact.size(); i += 37) {  // past the header: run lengths and XORed bytes
+        Bytes bad = compact;
+        bad[i] ^= 0x5A;
+        try {
+            target.restoreCompact(baseline, bad);  // may load: then it is a consistent world
+            target.step(1.0f / 60);
+        } catch (const Error&) {
+        }
+    }
+    target.restoreCompact(baseline, compact);
+    EXPECT_EQ(stateHash(target), hash);
 }
 
 }  // namespace
