@@ -1,4 +1,5 @@
-// Micro-benchmarks: narrowphase per pair, the solver per contact row, broadphase re-fitting.
+// Micro-benchmarks: narrowphase per pair, the solver per contact row, broadphase re-fitting,
+// snapshot capture and restore for rollback.
 //   build/bench/perpdot-microbench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
@@ -24,14 +25,11 @@ void BM_NarrowphaseBoxBox(benchmark::State& state) {
 }
 BENCHMARK(BM_NarrowphaseBoxBox);
 
-// A settled 20-row pyramid stepped with 1, 2, 4 and 8 substeps: the cost that grows with the
-// substep count is the contact solver's (solve + relax per substep); items = contact rows solved.
-void BM_PyramidStep(benchmark::State& state) {
-    const int substeps = static_cast<int>(state.range(0));
+// A pyramid of 1 m boxes on a static ground, sleep off, settled for 120 steps.
+World settledPyramid(int rows, int substeps) {
     World world(WorldDef{.substeps = substeps, .enableSleep = false});
     const BodyId ground = world.createBody({.position = {0.0f, -0.5f}});
     world.createShape(ground, {}, makeBox(30.0f, 0.5f));
-    constexpr int rows = 20;
     for (int row = 0; row < rows; ++row)
         for (int i = 0; i < rows - row; ++i) {
             const float x = static_cast<float>(i) - 0.5f * static_cast<float>(rows - row - 1);
@@ -39,6 +37,14 @@ void BM_PyramidStep(benchmark::State& state) {
             world.createShape(box, {}, makeBox(0.5f, 0.5f));
         }
     for (int i = 0; i < 120; ++i) world.step(1.0f / 60.0f);
+    return world;
+}
+
+// A settled 20-row pyramid stepped with 1, 2, 4 and 8 substeps: the cost that grows with the
+// substep count is the contact solver's (solve + relax per substep); items = contact rows solved.
+void BM_PyramidStep(benchmark::State& state) {
+    const int substeps = static_cast<int>(state.range(0));
+    World world = settledPyramid(20, substeps);
     const int contacts = world.contactCount();
     for (auto _ : state) world.step(1.0f / 60.0f);
     state.SetItemsProcessed(state.iterations() * contacts * substeps);
@@ -73,6 +79,54 @@ void BM_BroadphaseUpdate(benchmark::State& state) {
     state.SetItemsProcessed(state.iterations() * count);
 }
 BENCHMARK(BM_BroadphaseUpdate)->Unit(benchmark::kMicrosecond);
+
+// Rollback on an 820-box pyramid (40 rows, every body awake, about 1,600 touching contacts).
+// Arg 0: full snapshots; arg 1: compact ones against a baseline taken 8 steps before.
+// Capture: the snapshot of the current state. Restore: restore it. Rollback: restore, then
+// re-simulate 8 frames (the netcode case). bytes_per_body = snapshot bytes / awake bodies.
+struct RollbackFixture {
+    World world = settledPyramid(40, 4);
+    std::vector<uint8_t> baseline, saved;
+    bool compact;
+    explicit RollbackFixture(bool compactMode) : compact(compactMode) {
+        baseline = world.baselineSnapshot();
+        for (int i = 0; i < 8; ++i) world.step(1.0f / 60.0f);
+        saved = capture();
+    }
+    std::vector<uint8_t> capture() const { return compact ? world.compactSnapshot(baseline) : world.snapshot(); }
+    void restore() {
+        if (compact) world.restoreCompact(baseline, saved);
+        else world.restore(saved);
+    }
+    void count(benchmark::State& state) const {
+        state.counters["bytes_per_body"] = static_cast<double>(saved.size()) / (world.bodyCount() - 1);
+        state.counters["bytes"] = static_cast<double>(saved.size());
+    }
+};
+
+void BM_SnapshotCapture(benchmark::State& state) {
+    RollbackFixture f(state.range(0) == 1);
+    for (auto _ : state) benchmark::DoNotOptimize(f.capture());
+    f.count(state);
+}
+BENCHMARK(BM_SnapshotCapture)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
+void BM_SnapshotRestore(benchmark::State& state) {
+    RollbackFixture f(state.range(0) == 1);
+    for (auto _ : state) f.restore();
+    f.count(state);
+}
+BENCHMARK(BM_SnapshotRestore)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
+void BM_RollbackRestoreAnd8Frames(benchmark::State& state) {
+    RollbackFixture f(state.range(0) == 1);
+    for (auto _ : state) {
+        f.restore();
+        for (int i = 0; i < 8; ++i) f.world.step(1.0f / 60.0f);
+    }
+    f.count(state);
+}
+BENCHMARK(BM_RollbackRestoreAnd8Frames)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace perpdot

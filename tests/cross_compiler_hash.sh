@@ -7,6 +7,11 @@
 # difference names the scene and the three hashes. SCENE:N runs N steps (perpdot run --steps N,
 # the scene's step count) instead of the scene's own, to keep the benchmark scenes short.
 #
+# Snapshots too: for each scene of `snapshotScenes` (SCENE:N:K), every build saves the run at step
+# K (`perpdot run --save-at`), the three files must be the same bytes, and every build loads every
+# build's file (`--load`) and runs on to step N: all nine state hashes must equal the hash of the
+# run that never saved.
+#
 #   tests/cross_compiler_hash.sh [GCC_BUILD_DIR [CLANG_BUILD_DIR [GCC_NO_SIMD_BUILD_DIR]]]
 #
 # Existing build dirs are reused (only the CLI target is built). PERPDOT_JOBS sets -j (default 2).
@@ -19,6 +24,8 @@ jobs="${PERPDOT_JOBS:-2}"
 scenes=(single_box vertical_stack pyramid bouncing_balls friction_ramp rolling_disc spinning_box
         off_center_push card_house newtons_cradle tumbler rain dominoes chain suspension_bridge ragdoll
         joint_grid:200)
+snapshotScenes=(pyramid:200:100 vertical_stack:500:400 ragdoll:120:60 car:150:75 bullet_wall:20:2
+                sensor_zone:160:80 tumbler:120:60 joint_grid:60:30)
 
 build() {  # dir compiler simd
     cmake -S "$root" -B "$1" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER="$2" -DPERPDOT_SIMD="$3" \
@@ -44,6 +51,30 @@ for scene in "${scenes[@]}"; do
         failed=1
     else
         echo "same      $scene $g"
+    fi
+done
+snapDir="$(mktemp -d)"
+trap 'rm -rf "$snapDir"' EXIT
+dirs=("$gccDir" "$clangDir" "$noSimdDir")
+names=(gcc clang gcc-no-simd)
+for entry in "${snapshotScenes[@]}"; do
+    IFS=: read -r scene steps saveAt <<<"$entry"
+    for i in 0 1 2; do
+        "${dirs[$i]}/perpdot" run "$scene" --steps "$steps" --save-at "$saveAt" "$snapDir/$scene.${names[$i]}" >/dev/null
+    done
+    hashes=("uninterrupted=$(hashOf "$gccDir" "$scene:$steps")")
+    for i in 0 1 2; do
+        cmp -s "$snapDir/$scene.gcc" "$snapDir/$scene.${names[$i]}" || { echo "DIFFERENT $scene snapshot bytes gcc vs ${names[$i]}"; failed=1; }
+        for j in 0 1 2; do
+            hashes+=("${names[$j]}<-${names[$i]}=$("${dirs[$j]}/perpdot" run "$scene" --steps "$steps" \
+                --load "$snapDir/$scene.${names[$i]}" | sed -n 's/.*state_hash=\([0-9a-f]*\).*/\1/p')")
+        done
+    done
+    if [[ "$(printf '%s\n' "${hashes[@]}" | sed 's/.*=//' | sort -u | wc -l)" != 1 || "${hashes[0]}" == *= ]]; then
+        echo "DIFFERENT $scene restored: ${hashes[*]}"
+        failed=1
+    else
+        echo "same      $scene saved at $saveAt, loaded by every build: ${hashes[0]#*=}"
     fi
 done
 exit $failed

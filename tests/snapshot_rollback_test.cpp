@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "joint_zoo.hpp"
+#include "perpdot/error.hpp"
 #include "perpdot/feature_scenes.hpp"
 #include "perpdot/scene.hpp"
 #include "perpdot/state_hash.hpp"
@@ -79,18 +80,23 @@ public:
     }
     World& world() { return built_.world; }
 
-    // What a rollback saves: the world, the step count (scene actions), the script and its groups.
+    // What a rollback saves: the world (full, or compact against a baseline), the step count
+    // (scene actions), the script and its groups.
     struct Saved {
         Bytes world;
+        Bytes compact;
+        const Bytes* baseline = nullptr;
         int stepIndex = 0;
         std::unique_ptr<SceneScript> script;
         std::vector<std::vector<BodyId>> groups;
     };
-    Saved save() const {
-        return {built_.world.snapshot(), built_.stepIndex, script_ ? script_->clone() : nullptr, groups_};
+    Saved save(const Bytes* baseline) const {
+        return {baseline ? Bytes{} : built_.world.snapshot(), baseline ? built_.world.compactSnapshot(*baseline) : Bytes{},
+                baseline, built_.stepIndex, script_ ? script_->clone() : nullptr, groups_};
     }
     void restore(const Saved& saved) {
-        built_.world.restore(saved.world);
+        if (saved.baseline) built_.world.restoreCompact(*saved.baseline, saved.compact);
+        else built_.world.restore(saved.world);
         built_.stepIndex = saved.stepIndex;
         script_ = saved.script ? saved.script->clone() : nullptr;
         groups_ = saved.groups;
@@ -127,7 +133,7 @@ Plan planFor(const std::string& name, int sceneSteps) {
 }
 
 struct Coverage {
-    int points = 0, withSleepingBodies = 0, withEvents = 0, editedBeforeSave = 0, disturbedBeforeRestore = 0;
+    int points = 0, compact = 0, withSleepingBodies = 0, withEvents = 0, editedBeforeSave = 0, disturbedBeforeRestore = 0;
 };
 
 // One restore point: save after step saveAt (0-based), run `ahead` steps, restore, re-simulate.
@@ -135,6 +141,7 @@ struct Point {
     int saveAt = 0, ahead = 1;
     bool edit = false;     // the user edits the world between the step and the save (in both runs)
     bool disturb = false;  // the world is changed after running ahead, before restoring
+    bool compact = false;  // saved as a compact snapshot against a baseline taken a few points earlier
 };
 
 std::vector<Point> drawPoints(Plan plan, std::mt19937& rng) {
@@ -147,6 +154,7 @@ std::vector<Point> drawPoints(Plan plan, std::mt19937& rng) {
         p.saveAt = k * stride + int(rng() % unsigned(std::max(1, stride - p.ahead)));
         p.edit = rng() % 4 == 0;
         p.disturb = rng() % 3 == 0;
+        p.compact = k % 2 == 1;
         drawn.push_back(p);
     }
     return drawn;
@@ -210,13 +218,15 @@ void checkRollback(const std::string& name, Make make, Plan plan, std::mt19937& 
     }
     std::unique_ptr<SceneRun> run = make();
     int s = 0;
+    Bytes baseline;
     for (const Point& point : points) {
         for (; s <= point.saveAt; ++s) {
             run->step();
             ASSERT_EQ(frameOf(run->world()), reference[size_t(s)]) << name << " step " << s;
         }
         if (point.edit) editBetweenSteps(run->world(), point.saveAt);
-        const SceneRun::Saved saved = run->save();
+        if (baseline.empty() || &point - points.data() == 8) baseline = run->world().baselineSnapshot();
+        const SceneRun::Saved saved = run->save(point.compact ? &baseline : nullptr);
         for (int i = 0; i < point.ahead; ++i) {
             run->step();
             ASSERT_EQ(frameOf(run->world()), reference[size_t(s + i)]) << name << " running ahead, step " << s + i;
@@ -236,6 +246,7 @@ void checkRollback(const std::string& name, Make make, Plan plan, std::mt19937& 
         ++coverage.points;
         coverage.withSleepingBodies += anySleeping(run->world()) ? 1 : 0;
         coverage.withEvents += events ? 1 : 0;
+        coverage.compact += point.compact ? 1 : 0;
         coverage.editedBeforeSave += point.edit ? 1 : 0;
         coverage.disturbedBeforeRestore += point.disturb ? 1 : 0;
     }
@@ -256,10 +267,49 @@ TEST(SnapshotRollback, EveryRestorePointReplaysTheSameFuture) {
     EXPECT_GT(coverage.withEvents, 0);
     EXPECT_GT(coverage.editedBeforeSave, 0);
     EXPECT_GT(coverage.disturbedBeforeRestore, 0);
-    std::printf("restore points: %d (%d with sleeping bodies, %d with events re-simulated, %d edited before saving, %d "
+    EXPECT_GT(coverage.compact, 0);
+    std::printf("restore points: %d (%d compact, %d with sleeping bodies, %d with events re-simulated, %d edited before saving, %d "
                 "disturbed before restoring)\n",
-                coverage.points, coverage.withSleepingBodies, coverage.withEvents, coverage.editedBeforeSave,
+                coverage.points, coverage.compact, coverage.withSleepingBodies, coverage.withEvents, coverage.editedBeforeSave,
                 coverage.disturbedBeforeRestore);
+}
+
+// Compact snapshots: far smaller than full ones when little changed, refused against another
+// baseline, and refused (never crashing) when cut short or corrupted.
+TEST(SnapshotRollback, CompactSnapshotsNeedTheirBaselineAndRefuseBadBytes) {
+    SceneWorld built = buildWorld(findScene("pyramid"));
+    for (int i = 0; i < 100; ++i) built.step();
+    const Bytes baseline = built.world.baselineSnapshot();
+    for (int i = 0; i < 8; ++i) built.step();
+    const Bytes compact = built.world.compactSnapshot(baseline);
+    const Bytes full = built.world.snapshot();
+    EXPECT_LT(compact.size() * 4, full.size());
+    const uint64_t hash = stateHash(built.world);
+
+    World target;
+    target.restoreCompact(baseline, compact);
+    EXPECT_EQ(stateHash(target), hash);
+    Bytes otherBaseline = baseline;
+    otherBaseline.back() ^= 1;
+    try {
+        target.restoreCompact(otherBaseline, compact);
+        ADD_FAILURE() << "a compact snapshot was accepted against another baseline";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("another baseline"), std::string::npos) << e.what();
+    }
+    for (size_t size = 0; size < compact.size(); size += 13)
+        EXPECT_THROW(target.restoreCompact(baseline, std::span(compact.data(), size)), Error) << size;
+    for (size_t i = 24; i < compact.size(); i += 37) {  // past the header: run lengths and XORed bytes
+        Bytes bad = compact;
+        bad[i] ^= 0x5A;
+        try {
+            target.restoreCompact(baseline, bad);  // may load: then it is a consistent world
+            target.step(1.0f / 60);
+        } catch (const Error&) {
+        }
+    }
+    target.restoreCompact(baseline, compact);
+    EXPECT_EQ(stateHash(target), hash);
 }
 
 }  // namespace

@@ -216,6 +216,15 @@ public:
     /// Replaces this world's state with a snapshot's (ids from the snapshotted world stay valid, the
     /// pre-solve callback stays). Corrupt or truncated bytes: Error, and the world is unchanged.
     void restore(std::span<const uint8_t> snapshot);
+    // Compact snapshots for rollback (docs/reliability.md): the bytes in which this world's state
+    // differs from `baseline`, any earlier snapshot() or baselineSnapshot() — unchanged bodies,
+    // sleeping islands and static geometry cost nothing. baselineSnapshot() is snapshot() without
+    // the contact values the next step recomputes (zeros: contacts() shows them only after a step),
+    // which makes deltas against it smaller. restoreCompact(baseline, compact) then continues bit
+    // for bit like restore(snapshot()); a compact snapshot of another baseline: Error.
+    std::vector<uint8_t> baselineSnapshot() const;
+    std::vector<uint8_t> compactSnapshot(std::span<const uint8_t> baseline) const;
+    void restoreCompact(std::span<const uint8_t> baseline, std::span<const uint8_t> compact);
 
     WorldStats stats() const;  ///< Pool sizes and health counters.
 

@@ -157,7 +157,18 @@ void readShape(ByteReader& in, ShapeData& s, std::vector<AABB>& proxies, int bod
 
 // --- contacts ---
 
-void writeContact(ByteWriter& out, const Contact& c) {
+// futureOnly: the values the next step's narrowphase recomputes for a contact with an awake body
+// are written as zeros (it keeps only touching, pointCount and each point's id and impulses).
+void writeContact(ByteWriter& out, const Contact& contact, bool futureOnly) {
+    Contact c = contact;
+    if (futureOnly && !c.sensor) {
+        c.friction = c.restitution = c.rollingResistance = c.tangentSpeed = 0;
+        c.normal = {};
+        for (ContactPointState& p : c.points) {
+            p.point = p.anchorA = p.anchorB = {};
+            p.separation = p.maxNormalImpulse = 0;
+        }
+    }
     writeFields(out, c);
     for (int i = 0; i < c.pointCount; ++i) writeFields(out, c.points[i]);
 }
@@ -235,8 +246,11 @@ std::vector<Event> readPending(ByteReader& in) {
 }  // namespace
 
 std::vector<uint8_t> World::snapshot() const {
-    const Impl& w = *impl_;
-    w.checkUnlocked("snapshot");
+    impl_->checkUnlocked("snapshot");
+    return writeSnapshot(*impl_, false);
+}
+
+std::vector<uint8_t> writeSnapshot(const World::Impl& w, bool futureOnly) {
     ByteWriter out;
     for (uint8_t m : magic) out.u8(m);
     out.u32(formatVersion);
@@ -263,7 +277,7 @@ std::vector<uint8_t> World::snapshot() const {
     out.u32(static_cast<uint32_t>(w.contacts.size()));
     for (const Contact& c : w.contacts) {
         out.boolean(c.alive);
-        if (c.alive) writeContact(out, c);
+        if (c.alive) writeContact(out, c, futureOnly && (w.bodies[c.bodyA].awake || w.bodies[c.bodyB].awake));
     }
     writeFreeList(out, w.freeContacts);
     writeJoints(out, w);
