@@ -17,15 +17,15 @@
 namespace perpdot {
 
 struct SceneShape {
-    enum class Kind { Circle, Box, Polygon, Segment, Chain };
+    enum class Kind { Circle, Box, Polygon, Segment, Chain, Capsule };
     Kind kind = Kind::Circle;
     // geometry; which fields matter depends on kind
-    float radius = 0.5f;           // circle radius; polygon rounding (default 0 for polygons)
+    float radius = 0.5f;           // circle and capsule radius; polygon rounding (default 0 for polygons)
     Vec2 center{};                 // circle, box
     Vec2 halfExtents{0.5f, 0.5f};  // box
     float angle = 0.0f;            // box
     std::vector<Vec2> vertices{};  // polygon, chain
-    Vec2 v1{}, v2{};               // segment
+    Vec2 v1{}, v2{};               // segment; capsule centres (JSON "center1", "center2")
     bool loop = false;             // chain
     // material
     float density = 1.0f;

@@ -12,6 +12,7 @@
 #include "perpdot/ids.hpp"
 #include "perpdot/joints.hpp"
 #include "perpdot/math.hpp"
+#include "perpdot/mover.hpp"
 #include "perpdot/queries.hpp"
 #include "perpdot/shapes.hpp"
 
@@ -110,6 +111,9 @@ public:
     ShapeId createShape(BodyId body, const ShapeDef& def, const Polygon& polygon);
     ShapeId createShape(BodyId body, const ShapeDef& def, const Segment& segment);
     ShapeId createShape(BodyId body, const ShapeDef& def, const Chain& chain);
+    /// Attach a capsule; Error on a non-finite or out-of-range centre, radius <= 0, or centres
+    /// closer than the linear slop (0.005 m).
+    ShapeId createShape(BodyId body, const ShapeDef& def, const Capsule& capsule);
     void destroyShape(ShapeId shape);
     bool isValid(ShapeId shape) const;
     std::vector<ShapeId> shapes(BodyId body) const;
@@ -119,6 +123,8 @@ public:
     const Polygon& polygon(ShapeId shape) const;
     const Segment& segment(ShapeId shape) const;
     const Chain& chain(ShapeId shape) const;
+    /// The capsule geometry (body frame); Error if the shape is not a capsule.
+    const Capsule& capsule(ShapeId shape) const;
     float friction(ShapeId shape) const;
     float restitution(ShapeId shape) const;
     float density(ShapeId shape) const;
@@ -176,6 +182,15 @@ public:
     // Shapes overlapping a query shape placed at `xf`.
     std::vector<ShapeId> overlapShape(const Circle& shape, const Transform& xf, const Filter& filter = {}) const;
     std::vector<ShapeId> overlapShape(const Polygon& shape, const Transform& xf, const Filter& filter = {}) const;
+
+    // --- character movers (perpdot/mover.hpp) ---
+    /// Create a mover's kinematic capsule body with its capsule centre at `position`; Error on an
+    /// invalid MoverDef or position.
+    MoverState createMover(const MoverDef& def, Vec2 position);
+    /// Move the mover for one frame of `dt` seconds (call after step(dt)): be pushed out of what
+    /// moved into it, ride the platform under it, walk/fall/jump with collide-and-slide, climb
+    /// steps, snap to the ground, push dynamic bodies it walks into, and place its body there.
+    void moveMover(const MoverDef& def, MoverState& state, const MoverInput& input, float dt);
 
     // --- snapshots (bit-exact: restore + N steps equals N steps) ---
     // Versioned bytes of the whole state: settings, bodies, shapes, joints, and the contact cache
