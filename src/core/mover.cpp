@@ -20,6 +20,7 @@ namespace {
 
 constexpr int maxCastIterations = 20;
 constexpr float minMove = 1.0e-6f;  // m: shorter displacements are not cast
+constexpr float parallel = 1.0e-3f; // moving within ~0.06° of a surface's tangent is sliding along it
 
 struct Hit {
     bool hit = false;
@@ -88,7 +89,7 @@ public:
                 // A one-way shape counts only when met from above, the capsule not already in it.
                 if (fromAboveOnly && (!walkable(g.normal) || (i == 0 && g.gap < def_.skin - tolerance))) return;
                 const float approach = -dot(translation, g.normal);  // −g′(t)
-                if (approach <= 0.0f) return;                        // g never falls again (convex)
+                if (approach <= parallel * length(translation)) return;  // g never falls again (convex)
                 if (g.gap <= def_.skin + tolerance) {
                     if (t < best.fraction || !best.hit) best = {true, t, g.normal, g.point, key.shape};
                     return;
@@ -137,8 +138,39 @@ public:
         body.w += b.invInertia * perpDot(r, j);
     }
 
-    // Climb a step: up by stepHeight, forward by `forward`, down onto walkable ground.
+    // Whether a ray from the bottom of the feet straight down meets walkable ground within `reach`:
+    // a capsule resting on an edge has a steep contact normal, yet stands on the step it is over.
+    bool walkableBelow(Vec2 center, float reach) const {
+        const Vec2 p1 = center - Vec2{0.0f, def_.halfHeight + def_.radius - def_.skin};
+        const Vec2 p2 = p1 - Vec2{0.0f, reach + 2.0f * def_.skin};
+        bool found = false;
+        w_.collision.rayCastTree(p1, p2, [&](int proxy, float maxFraction) {
+            const collide::ChildKey key = w_.collision.proxyKey(proxy);
+            const ShapeData& s = w_.shapes[key.shape];
+            if (s.body == body_ || s.sensor || !shouldCollide(def_.filter, s.filter)) return -1.0f;
+            collide::RayCastResult result;
+            if (!w_.collision.rayCast(key, w_.bodies[s.body].xf, p1, p2, maxFraction, result)) return -1.0f;
+            found = walkable(result.normal);
+            return result.fraction;
+        });
+        return found;
+    }
+
+    // Ground under a downward cast's hit: a walkable surface, or an edge over walkable ground.
+    bool standsOn(const Hit& hit, Vec2 center, float reach) const {
+        return hit.hit && (walkable(hit.normal) || walkableBelow(center, reach));
+    }
+
+    // Landing on a step: an edge counts only with walkable ground right under the feet (a cap's
+    // depth below the edge), not the floor the step stands on.
+    bool landsOn(const Hit& hit, Vec2 center, float drop) const {
+        return hit.hit && (walkable(hit.normal) || walkableBelow(center, hit.fraction * drop + def_.radius * (1.0f - cosMaxSlope_)));
+    }
+
+    // Climb a step: up by stepHeight, forward by `forward` (at least a radius, so the feet clear
+    // the edge in one stride), down onto walkable ground.
     bool stepUp(Vec2& center, Vec2 forward) const {
+        if (std::fabs(forward.x) < def_.radius) forward.x = std::copysign(def_.radius, forward.x);
         const Vec2 up{0.0f, def_.stepHeight};
         const Hit rise = cast(center, up);
         Vec2 p = center + rise.fraction * up;
@@ -147,7 +179,7 @@ public:
         p += ahead.fraction * forward;
         const Vec2 down{0.0f, -(rise.fraction * def_.stepHeight + 2.0f * def_.skin)};
         const Hit land = cast(p, down);
-        if (!land.hit || !walkable(land.normal)) return false;
+        if (!landsOn(land, p, -down.y)) return false;
         center = p + land.fraction * down;
         return true;
     }
@@ -177,7 +209,8 @@ public:
             if (const float into = dot(remaining, n); into < 0.0f) remaining -= into * n;
             if (const float into = dot(velocity, n); into < 0.0f) velocity -= into * n;
             // Two planes met in turn pin the capsule in their crease (2D: nowhere left to slide).
-            if (lengthSquared(previous) > 0.0f && dot(remaining, previous) < 0.0f) return;
+            // (A curved surface met twice is one plane turning, not a crease.)
+            if (lengthSquared(previous) > 0.0f && dot(n, previous) < 0.99f && dot(remaining, previous) < 0.0f) return;
             previous = n;
         }
     }
@@ -186,13 +219,13 @@ public:
     void probeGround(MoverState& s, float reach, bool snap) const {
         const Vec2 down{0.0f, -reach};
         const Hit hit = cast(s.position, down);
-        s.grounded = hit.hit && walkable(hit.normal) && (snap || hit.fraction * reach <= 2.0f * def_.skin);
+        s.grounded = standsOn(hit, s.position, reach) && (snap || hit.fraction * reach <= 2.0f * def_.skin);
         if (!s.grounded) {
             s.ground = {};
             return;
         }
         s.position += hit.fraction * down;
-        s.groundNormal = hit.normal;
+        s.groundNormal = walkable(hit.normal) ? hit.normal : Vec2{0.0f, 1.0f};  // on an edge: level
         s.ground = w_.shapeId(hit.shape);
     }
 
@@ -293,8 +326,9 @@ void World::moveMover(const MoverDef& def, MoverState& s, const MoverInput& inpu
     s.velocity.y = std::min(s.velocity.y, velocity.y - s.pushVelocity.y);  // ceilings and landings stop it
     if (velocity.y == 0.0f) s.pushVelocity.y = 0.0f;
 
-    // (4) Ground: snap down when it was grounded and did not jump, else look just below the feet.
-    if (s.velocity.y <= 0.0f) {
+    // (4) Ground: snap down when it was grounded and did not jump (walking uphill moves up too),
+    // else look just below the feet unless rising.
+    if (s.grounded || s.velocity.y <= 0.0f) {
         solver.probeGround(s, s.grounded ? def.snapDistance : 2.0f * def.skin, s.grounded);
         if (s.grounded) s.velocity.y = 0.0f;
     } else {
