@@ -150,6 +150,24 @@ TEST(Capsule, QueriesSeeTheRoundedSurface) {
     EXPECT_EQ(world.overlapShape(Circle{{}, 0.1f}, Transform{{0.0f, 0.55f}, {}}).size(), 1u);
 }
 
+TEST(Capsule, SnapshotRestoresBitExactly) {
+    World world;
+    addGround(world);
+    const BodyId body = addDynamic(world, {0.0f, 2.0f});
+    world.setAngularVelocity(body, 1.0f);
+    world.createShape(body, {}, Capsule{{-0.5f, 0.0f}, {0.5f, 0.2f}, 0.25f});
+    run(world, 20);
+    const std::vector<uint8_t> bytes = world.snapshot();
+    run(world, 60);
+    const Transform first = world.transform(body);
+    World copy;
+    copy.restore(bytes);
+    run(copy, 60);
+    EXPECT_EQ(copy.transform(body).p, first.p);
+    EXPECT_EQ(copy.transform(body).q, first.q);
+    EXPECT_EQ(copy.capsule(copy.shapes(body)[0]), (Capsule{{-0.5f, 0.0f}, {0.5f, 0.2f}, 0.25f}));
+}
+
 TEST(Capsule, SceneJsonRoundTripsAndRefusesBadInput) {
     const std::string json = R"({"format": "perpdot-scene/1", "bodies": [{"type": "dynamic",
         "shapes": [{"type": "capsule", "center1": [-0.5, 0], "center2": [0.5, 0], "radius": 0.25}]}]})";
