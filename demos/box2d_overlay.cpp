@@ -30,6 +30,16 @@ void drawSceneShape(DebugDraw& draw, const SceneShape& s, const Transform& xf, C
             break;
         }
         case SceneShape::Kind::Segment: draw.drawSegment(transformPoint(xf, s.v1), transformPoint(xf, s.v2), color); break;
+        case SceneShape::Kind::Capsule: {
+            // outline: the two cap circles and the two sides
+            const Vec2 c1 = transformPoint(xf, s.v1), c2 = transformPoint(xf, s.v2);
+            const Vec2 side = s.radius * perp(normalize(c2 - c1));
+            draw.drawCircle(c1, s.radius, color);
+            draw.drawCircle(c2, s.radius, color);
+            draw.drawSegment(c1 + side, c2 + side, color);
+            draw.drawSegment(c1 - side, c2 - side, color);
+            break;
+        }
         case SceneShape::Kind::Chain: {
             const size_t n = s.vertices.size();
             for (size_t i = 0; n >= 2 && i < (s.loop ? n : n - 1); ++i) {

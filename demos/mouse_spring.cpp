@@ -20,6 +20,13 @@ bool containsLocal(const World& world, ShapeId shape, Vec2 p) {
             }
             return true;
         }
+        case ShapeType::Capsule: {
+            // within r of the core segment c1–c2
+            const Capsule& c = world.capsule(shape);
+            const Vec2 e = c.center2 - c.center1;
+            const float t = std::clamp(dot(p - c.center1, e) / dot(e, e), 0.0f, 1.0f);
+            return lengthSquared(p - (c.center1 + t * e)) <= c.radius * c.radius;
+        }
         default: return false;  // segments and chains have no inside
     }
 }

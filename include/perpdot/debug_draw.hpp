@@ -37,7 +37,8 @@ public:
     virtual ~DebugDraw() = default;  ///< destroyed through the interface
     /// Closed polygon outline, world vertices.
     virtual void drawPolygon(std::span<const Vec2> vertices, Color color) = 0;
-    /// Filled polygon with outline, world vertices, optionally rounded by `radius`.
+    /// Filled polygon with outline, world vertices, optionally rounded by `radius`. A capsule comes
+    /// as its two centres rounded by its radius.
     virtual void drawSolidPolygon(std::span<const Vec2> vertices, float radius, Color color) = 0;
     /// Circle outline.
     virtual void drawCircle(Vec2 center, float radius, Color color) = 0;

@@ -20,16 +20,16 @@ namespace perpdot {
 /// A shape of a scene body, in the body frame.
 struct SceneShape {
     /// The geometry.
-    enum class Kind { Circle, Box, Polygon, Segment, Chain };
+    enum class Kind { Circle, Box, Polygon, Segment, Chain, Capsule };
     Kind kind = Kind::Circle;  ///< which geometry
     // geometry; which fields matter depends on kind
-    float radius = 0.5f;           ///< circle radius; polygon rounding (default 0 for polygons)
+    float radius = 0.5f;           ///< circle and capsule radius; polygon rounding (default 0 for polygons)
     Vec2 center{};                 ///< circle, box
     Vec2 halfExtents{0.5f, 0.5f};  ///< box
     float angle = 0.0f;            ///< box
     std::vector<Vec2> vertices{};  ///< polygon, chain
-    Vec2 v1{};                     ///< segment start
-    Vec2 v2{};                     ///< segment end
+    Vec2 v1{};                     ///< segment start; capsule center1 (JSON "center1")
+    Vec2 v2{};                     ///< segment end; capsule center2 (JSON "center2")
     bool loop = false;             ///< chain
     // material
     float density = 1.0f;  ///< kg/m²

@@ -21,7 +21,7 @@ inline constexpr float maxShapeCoordinate = 1.0e5f;
 inline bool withinShapeRange(Vec2 v) { return std::fabs(v.x) <= maxShapeCoordinate && std::fabs(v.y) <= maxShapeCoordinate; }
 
 /// Which geometry a shape holds.
-enum class ShapeType : uint8_t { Circle, Polygon, Segment, Chain };
+enum class ShapeType : uint8_t { Circle, Polygon, Segment, Chain, Capsule };
 
 /// A solid disc.
 struct Circle {
@@ -63,6 +63,19 @@ Polygon makePolygon(std::span<const Vec2> points, float radius = 0.0f);
 /// Box with half extents (hx, hy), centred at `center` and turned by `angle` in the body frame.
 Polygon makeBox(float hx, float hy, Vec2 center = {}, float angle = 0.0f);
 
+/// A capsule: the set of points within `radius` of the segment center1–center2 (a rectangle of
+/// length |center2 − center1| and width 2·radius capped by two half-discs), in the body frame.
+/// Collides with every shape type; in Box2D 2.4 terms it is a 2-vertex b2PolygonShape whose
+/// m_radius is `radius`. The centres must be at least the linear slop (0.005 m) apart (use a
+/// Circle otherwise) and the radius finite and > 0.
+struct Capsule {
+    Vec2 center1{};   ///< first cap centre, body frame
+    Vec2 center2{1.0f, 0.0f};  ///< second cap centre, body frame
+    float radius = 0.25f;  ///< cap radius and half width, m
+    /// Exact equality of every field.
+    friend bool operator==(const Capsule&, const Capsule&) = default;
+};
+
 /// Collision filtering as in Box2D: two shapes collide when each one's category is in the other's
 /// mask, unless they share a non-zero group (positive: always collide, negative: never).
 struct Filter {
@@ -102,6 +115,10 @@ struct MassData {
 /// Area integrals: m = ρ∫dA, c = ∫r dA / A, I = ρ∫|r - c|² dA.
 MassData computeMass(const Circle& circle, float density);
 MassData computeMass(const Polygon& polygon, float density);  ///< includes the rounding radius
+/// Capsule mass properties: a 2r × L rectangle plus two half-discs, shifted to the capsule's
+/// midpoint by the parallel-axis theorem: m = ρ(2rL + πr²),
+/// I = ρ[2rL(L² + 4r²)/12 + πr²(r²/2 + L²/4) + 4r³L/3].
+MassData computeMass(const Capsule& capsule, float density);
 
 /// Parallel-axis sum: parts about their own centres -> whole about the combined centre.
 MassData combineMass(std::span<const MassData> parts);

@@ -13,6 +13,7 @@
 #include "perpdot/ids.hpp"
 #include "perpdot/joints.hpp"
 #include "perpdot/math.hpp"
+#include "perpdot/mover.hpp"
 #include "perpdot/queries.hpp"
 #include "perpdot/shapes.hpp"
 
@@ -125,6 +126,9 @@ public:
     /// A new segment on `body`.
     ShapeId createShape(BodyId body, const ShapeDef& def, const Segment& segment);
     ShapeId createShape(BodyId body, const ShapeDef& def, const Chain& chain);  ///< A new chain on `body`.
+    /// Attach a capsule; Error on a non-finite or out-of-range centre, radius <= 0, or centres
+    /// closer than the linear slop (0.005 m).
+    ShapeId createShape(BodyId body, const ShapeDef& def, const Capsule& capsule);
     void destroyShape(ShapeId shape);  ///< Also destroys its contacts; the body's mass is recomputed.
     bool isValid(ShapeId shape) const;  ///< Whether `shape` names a live shape.
     std::vector<ShapeId> shapes(BodyId body) const;  ///< The shapes of `body`.
@@ -134,6 +138,8 @@ public:
     const Polygon& polygon(ShapeId shape) const;  ///< Error if not a polygon
     const Segment& segment(ShapeId shape) const;  ///< Error if not a segment
     const Chain& chain(ShapeId shape) const;  ///< Error if not a chain
+    /// The capsule geometry (body frame); Error if the shape is not a capsule.
+    const Capsule& capsule(ShapeId shape) const;
     float friction(ShapeId shape) const;  ///< ShapeDef::friction
     float restitution(ShapeId shape) const;  ///< ShapeDef::restitution
     float density(ShapeId shape) const;  ///< ShapeDef::density
@@ -207,6 +213,15 @@ public:
     /// Every shape child the swept shape touches, ordered by fraction (see castShapeClosest).
     std::vector<ShapeCastHit> castShape(const CastShape& shape, const Transform& xf, Vec2 translation,
                                         const Filter& filter = {}) const;
+
+    // --- character movers (perpdot/mover.hpp) ---
+    /// Create a mover's kinematic capsule body with its capsule centre at `position`; Error on an
+    /// invalid MoverDef or position.
+    MoverState createMover(const MoverDef& def, Vec2 position);
+    /// Move the mover for one frame of `dt` seconds (call after step(dt)): be pushed out of what
+    /// moved into it, ride the platform under it, walk/fall/jump with collide-and-slide, climb
+    /// steps, snap to the ground, push dynamic bodies it walks into, and place its body there.
+    void moveMover(const MoverDef& def, MoverState& state, const MoverInput& input, float dt);
 
     // --- snapshots (bit-exact: restore + N steps equals N steps) ---
     /// Versioned bytes of the whole state: settings, bodies, shapes, joints, and the contact cache

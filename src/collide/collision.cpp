@@ -2,6 +2,8 @@
 #include "collide/collision.hpp"
 #include "collide/time_of_impact.hpp"
 
+#include "collide/capsule_b2.hpp"
+
 #include <box2d/b2_circle_shape.h>
 #include <box2d/b2_collision.h>
 #include <box2d/b2_distance.h>
@@ -78,7 +80,8 @@ b2PolygonShape toB2(const Polygon& polygon) {
 int rank(ShapeType t) {
     switch (t) {
         case ShapeType::Circle: return 0;
-        case ShapeType::Polygon: return 1;
+        case ShapeType::Polygon:
+        case ShapeType::Capsule: return 1;  // a 2-vertex b2PolygonShape
         case ShapeType::Segment:
         case ShapeType::Chain: return 2;
     }
@@ -106,6 +109,7 @@ void CollisionSystem::setGeometry(int shape, const Circle& circle) { impl_->slot
 void CollisionSystem::setGeometry(int shape, const Polygon& polygon) { impl_->slot(shape) = toB2(polygon); }
 
 void CollisionSystem::setGeometry(int shape, const Segment& segment) { impl_->slot(shape) = toB2(segment); }
+void CollisionSystem::setGeometry(int shape, const Capsule& capsule) { impl_->slot(shape) = capsuleToB2(capsule); }
 
 void CollisionSystem::setGeometry(int shape, const Chain& chain) {
     const std::vector<Vec2>& v = chain.vertices;
@@ -246,6 +250,9 @@ Manifold CollisionSystem::collide(ChildKey a, const Transform& xfA, ChildKey b, 
         default:
             break;
     }
+    // Capsules against a polygon, capsule or segment (not chains: their one-sided rules decide).
+    const bool chainChild = std::holds_alternative<ChainEdges>(ga);
+    if (!circleB && !chainChild && (isCapsule(shapeA) || isCapsule(shapeB))) capsuleManifold(m, shapeA, ta, shapeB, tb);
 
     Manifold out;
     out.pointCount = m.pointCount;
@@ -284,13 +291,33 @@ bool CollisionSystem::testOverlap(ChildKey a, const Transform& xfA, const Polygo
 bool CollisionSystem::testPoint(int shape, const Transform& xf, Vec2 point) const {
     const Geometry& g = impl_->geometry[shape];
     if (std::holds_alternative<ChainEdges>(g) || std::holds_alternative<b2EdgeShape>(g)) return false;
+    if (isCapsule(childShape(g, 0))) return capsuleContains(std::get<b2PolygonShape>(g), toB2(xf), toB2(point));
     return childShape(g, 0).TestPoint(toB2(xf), toB2(point));
+}
+
+CoreDistance CollisionSystem::coreDistance(ChildKey a, const Transform& xfA, ChildKey b, const Transform& xfB) const {
+    const b2Shape& shapeA = childShape(impl_->geometry[a.shape], a.child);
+    const b2Shape& shapeB = childShape(impl_->geometry[b.shape], b.child);
+    b2DistanceInput input;
+    input.proxyA.Set(&shapeA, 0);
+    input.proxyB.Set(&shapeB, 0);
+    input.transformA = toB2(xfA);
+    input.transformB = toB2(xfB);
+    input.useRadii = false;
+    b2SimplexCache cache;
+    cache.count = 0;
+    b2DistanceOutput output;
+    b2Distance(&output, &cache, &input);
+    return {fromB2(output.pointA), fromB2(output.pointB), output.distance, shapeA.m_radius, shapeB.m_radius};
 }
 
 bool CollisionSystem::rayCast(ChildKey key, const Transform& xf, Vec2 p1, Vec2 p2, float maxFraction, RayCastResult& result) const {
     b2RayCastInput input{toB2(p1), toB2(p2), maxFraction};
     b2RayCastOutput output;
-    if (!childShape(impl_->geometry[key.shape], key.child).RayCast(&output, input, toB2(xf), 0)) return false;
+    const b2Shape& shape = childShape(impl_->geometry[key.shape], key.child);
+    const bool hit = isCapsule(shape) ? rayCastCapsule(static_cast<const b2PolygonShape&>(shape), toB2(xf), input, output)
+                                      : shape.RayCast(&output, input, toB2(xf), 0);
+    if (!hit) return false;
     result = {fromB2(output.normal), output.fraction};
     return true;
 }

@@ -45,6 +45,14 @@ struct RayCastResult {
     float fraction = 1.0f;
 };
 
+// Closest points of two children's cores (rounding radii left out) and the radii to add back:
+// the surfaces are `distance - radiusA - radiusB` apart.
+struct CoreDistance {
+    Vec2 pointA, pointB;  // world
+    float distance = 0.0f;
+    float radiusA = 0.0f, radiusB = 0.0f;  // circle/capsule radius; polygon skin + rounding; edge skin
+};
+
 // A shape child: a whole circle or polygon, or one segment of a chain.
 struct ChildKey {
     int shape = -1;
@@ -63,6 +71,7 @@ public:
     void setGeometry(int shape, const Polygon& polygon);
     void setGeometry(int shape, const Segment& segment);
     void setGeometry(int shape, const Chain& chain);
+    void setGeometry(int shape, const Capsule& capsule);
     void clearGeometry(int shape);
     int childCount(int shape) const;
     AABB computeAABB(int shape, int child, const Transform& xf) const;
@@ -108,6 +117,9 @@ public:
     bool testOverlap(ChildKey a, const Transform& xfA, const Circle& query, const Transform& xf) const;
     bool testOverlap(ChildKey a, const Transform& xfA, const Polygon& query, const Transform& xf) const;
     bool testPoint(int shape, const Transform& xf, Vec2 point) const;  // false for segments and chains
+
+    // b2Distance between two children's cores.
+    CoreDistance coreDistance(ChildKey a, const Transform& xfA, ChildKey b, const Transform& xfB) const;
 
     // The ray p1 -> p2 against one child; a hit below maxFraction fills `result`.
     bool rayCast(ChildKey key, const Transform& xf, Vec2 p1, Vec2 p2, float maxFraction, RayCastResult& result) const;

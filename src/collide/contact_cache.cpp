@@ -19,6 +19,7 @@ float mixRestitution(float a, float b) { return std::max(a, b); }
 float roundingRadius(const ShapeData& s) {
     if (auto* c = std::get_if<Circle>(&s.geometry)) return c->radius;
     if (auto* p = std::get_if<Polygon>(&s.geometry)) return p->radius;
+    if (auto* c = std::get_if<Capsule>(&s.geometry)) return c->radius;
     return 0.0f;
 }
 float mixRollingResistance(const ShapeData& a, const ShapeData& b) {

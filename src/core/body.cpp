@@ -48,6 +48,7 @@ void World::Impl::updateMass(int index) {
             if (shape.density <= 0.0f) continue;
             if (auto* c = std::get_if<Circle>(&shape.geometry)) parts.push_back(computeMass(*c, shape.density));
             if (auto* p = std::get_if<Polygon>(&shape.geometry)) parts.push_back(computeMass(*p, shape.density));
+            if (auto* c = std::get_if<Capsule>(&shape.geometry)) parts.push_back(computeMass(*c, shape.density));
         }
         const MassData total = combineMass(parts);
         // A dynamic body always has positive mass, as in Box2D.

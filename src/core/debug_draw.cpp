@@ -66,6 +66,14 @@ void drawShape(const World& world, ShapeId shape, const Transform& xf, Color col
             else draw.drawSolidPolygon(span, polygon.radius, color);
             break;
         }
+        case ShapeType::Capsule: {
+            // A 2-vertex polygon rounded by the radius: two half-discs joined by the sides.
+            const Capsule& capsule = world.capsule(shape);
+            const Vec2 centers[2] = {transformPoint(xf, capsule.center1), transformPoint(xf, capsule.center2)};
+            if (sensor) draw.drawPolygon(centers, color);
+            else draw.drawSolidPolygon(centers, capsule.radius, color);
+            break;
+        }
         case ShapeType::Segment: {
             const Segment& segment = world.segment(shape);
             draw.drawSegment(transformPoint(xf, segment.v1), transformPoint(xf, segment.v2), color);

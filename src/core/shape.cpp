@@ -47,6 +47,14 @@ void validateGeometry(const Chain& c) {
     }
 }
 
+void validateGeometry(const Capsule& c) {
+    if (!isFinite(c.center1) || !isFinite(c.center2)) throw Error("capsule centers must be finite");
+    if (!withinShapeRange(c.center1) || !withinShapeRange(c.center2)) throw Error("capsule center is more than 100000 m from the body origin");
+    if (!(std::isfinite(c.radius) && c.radius > 0.0f)) throw Error("capsule radius must be finite and > 0");
+    if (distance(c.center1, c.center2) < collide::linearSlop)
+        throw Error("capsule centers are closer than the linear slop (0.005 m): use a circle");
+}
+
 namespace {
 
 // m = ρA and I must be representable: a huge density on a large shape overflows to infinity.
@@ -54,6 +62,7 @@ void requireFiniteMass(const ShapeData::Geometry& geometry, float density) {
     MassData m;
     if (auto* c = std::get_if<Circle>(&geometry)) m = computeMass(*c, density);
     if (auto* p = std::get_if<Polygon>(&geometry)) m = computeMass(*p, density);
+    if (auto* c = std::get_if<Capsule>(&geometry)) m = computeMass(*c, density);
     if (!std::isfinite(m.mass) || !std::isfinite(m.rotationalInertia) || !isFinite(m.center))
         throw Error("shape mass is not finite: density " + std::to_string(density) + " is too large for its area");
 }
@@ -71,7 +80,8 @@ ShapeId create(World::Impl& w, BodyId bodyId, const ShapeDef& def, const Geometr
     w.shapes[index].minExtent = w.collision.minExtent(index);
     w.shapes[index].maxExtent = w.collision.maxExtent(index);
     w.createProxies(index);
-    if constexpr (std::is_same_v<Geometry, Circle> || std::is_same_v<Geometry, Polygon>) w.updateMass(bodyId.index);
+    if constexpr (std::is_same_v<Geometry, Circle> || std::is_same_v<Geometry, Polygon> || std::is_same_v<Geometry, Capsule>)
+        w.updateMass(bodyId.index);
     return w.shapeId(index);
 }
 
@@ -161,6 +171,7 @@ ShapeId World::createShape(BodyId body, const ShapeDef& def, const Circle& circl
 ShapeId World::createShape(BodyId body, const ShapeDef& def, const Polygon& polygon) { return create(*impl_, body, def, polygon); }
 ShapeId World::createShape(BodyId body, const ShapeDef& def, const Segment& segment) { return create(*impl_, body, def, segment); }
 ShapeId World::createShape(BodyId body, const ShapeDef& def, const Chain& chain) { return create(*impl_, body, def, chain); }
+ShapeId World::createShape(BodyId body, const ShapeDef& def, const Capsule& capsule) { return create(*impl_, body, def, capsule); }
 
 void World::destroyShape(ShapeId id) {
     Impl& w = *impl_;
@@ -205,6 +216,7 @@ const Circle& World::circle(ShapeId id) const { return geometryOf<Circle>(impl_-
 const Polygon& World::polygon(ShapeId id) const { return geometryOf<Polygon>(impl_->shape(id), "polygon"); }
 const Segment& World::segment(ShapeId id) const { return geometryOf<Segment>(impl_->shape(id), "segment"); }
 const Chain& World::chain(ShapeId id) const { return geometryOf<Chain>(impl_->shape(id), "chain"); }
+const Capsule& World::capsule(ShapeId id) const { return geometryOf<Capsule>(impl_->shape(id), "capsule"); }
 float World::friction(ShapeId id) const { return impl_->shape(id).friction; }
 float World::restitution(ShapeId id) const { return impl_->shape(id).restitution; }
 float World::density(ShapeId id) const { return impl_->shape(id).density; }

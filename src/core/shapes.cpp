@@ -139,6 +139,24 @@ MassData computeMass(const Polygon& polygon, float density) {
     return combineMass(std::span(parts.data(), count));
 }
 
+MassData computeMass(const Capsule& capsule, float density) {
+    const float r = capsule.radius;
+    const Vec2 axis = capsule.center2 - capsule.center1;
+    const float len = length(axis);
+    const Vec2 u = (1.0f / len) * axis;
+    // The 2r × L rectangle: m = ρ·2rL, I = m(L² + (2r)²)/12 about its centre.
+    const float mRect = density * 2.0f * r * len;
+    // Each half-disc: m = ρπr²/2, centroid 4r/(3π) beyond its cap centre, I = m r²/2 − m d² about it.
+    const float mHalf = density * 0.5f * pi * r * r;
+    const float d = 4.0f * r / (3.0f * pi);
+    const MassData parts[3] = {
+        {mRect, 0.5f * (capsule.center1 + capsule.center2), mRect * (len * len + 4.0f * r * r) / 12.0f},
+        {mHalf, capsule.center1 - d * u, mHalf * (0.5f * r * r - d * d)},
+        {mHalf, capsule.center2 + d * u, mHalf * (0.5f * r * r - d * d)},
+    };
+    return combineMass(parts);
+}
+
 MassData combineMass(std::span<const MassData> parts) {
     MassData total;
     Vec2 moment;

@@ -69,6 +69,10 @@ void writeGeometry(ByteWriter& out, const ShapeData& s) {
     } else if (auto* seg = std::get_if<Segment>(&s.geometry)) {
         out.vec2(seg->v1);
         out.vec2(seg->v2);
+    } else if (auto* cap = std::get_if<Capsule>(&s.geometry)) {
+        out.vec2(cap->center1);
+        out.vec2(cap->center2);
+        out.f32(cap->radius);
     } else {
         const Chain& chain = std::get<Chain>(s.geometry);
         out.u32(static_cast<uint32_t>(chain.vertices.size()));
@@ -117,6 +121,15 @@ void readGeometry(ByteReader& in, ShapeData& s) {
                 chain.loop = in.boolean();
                 validateGeometry(chain);
                 s.geometry = std::move(chain);
+                break;
+            }
+            case 4: {
+                Capsule cap;
+                cap.center1 = in.finiteVec2();
+                cap.center2 = in.finiteVec2();
+                cap.radius = in.finite();
+                validateGeometry(cap);
+                s.geometry = cap;
                 break;
             }
             default:

@@ -49,7 +49,7 @@ struct ShapeData {
     bool alive = false;
     int body = -1;
     ShapeType type = ShapeType::Circle;
-    using Geometry = std::variant<Circle, Polygon, Segment, Chain>;
+    using Geometry = std::variant<Circle, Polygon, Segment, Chain, Capsule>;  // index = ShapeType
     Geometry geometry;
     float density = 1, friction = 0.6f, restitution = 0;
     float rollingResistance = 0, tangentSpeed = 0;
@@ -117,6 +117,7 @@ void validateGeometry(const Circle& circle);
 void validateGeometry(const Polygon& polygon);
 void validateGeometry(const Segment& segment);
 void validateGeometry(const Chain& chain);
+void validateGeometry(const Capsule& capsule);
 
 struct World::Impl {
     WorldDef def;

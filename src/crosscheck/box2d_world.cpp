@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <unordered_map>
 
+#include "collide/capsule_b2.hpp"
 #include "crosscheck/stepper.hpp"
 #include "perpdot/error.hpp"
 #include "perpdot/shapes.hpp"
@@ -104,6 +105,17 @@ void createFixture(b2Body* body, const SceneShape& s) {
         body->CreateFixture(&def);
         return;
     }
+    case SceneShape::Kind::Capsule: {
+        // Box2D 2.4 has no capsule; its exact equivalent is a 2-vertex b2PolygonShape whose
+        // m_radius is the capsule radius (b2Distance, b2TimeOfImpact and the polygon manifolds take
+        // it). b2PolygonShape::ComputeMass cannot (zero core area), so the fixture carries no
+        // density and roundedMass() gives the body perpdot's capsule mass.
+        const b2PolygonShape shape = collide::capsuleToB2(Capsule{s.v1, s.v2, s.radius});
+        b2FixtureDef def = fixtureDef(s, &shape);
+        def.density = 0.0f;
+        body->CreateFixture(&def);
+        return;
+    }
     case SceneShape::Kind::Chain: {
         std::vector<b2Vec2> v;
         for (Vec2 p : s.vertices) v.push_back(toB2(p));
@@ -116,12 +128,12 @@ void createFixture(b2Body* body, const SceneShape& s) {
     }
 }
 
-// Rounded polygons: Box2D 2.4 leaves the rounding out of the mass, perpdot includes it. Give the
+// Rounded polygons and capsules: Box2D 2.4 leaves the rounding out of the mass, perpdot includes it. Give the
 // Box2D body perpdot's mass properties (area integrals of the rounded shapes) so the comparison
-// measures the dynamics, not the mass model. Only bodies with a rounded polygon are touched.
+// measures the dynamics, not the mass model. Only bodies with a rounded polygon or a capsule are touched.
 void roundedMass(b2Body* body, const SceneBody& b) {
     const bool rounded = std::any_of(b.shapes.begin(), b.shapes.end(), [](const SceneShape& s) {
-        return s.kind == SceneShape::Kind::Polygon && s.radius > 0.0f && !s.sensor;
+        return ((s.kind == SceneShape::Kind::Polygon && s.radius > 0.0f) || s.kind == SceneShape::Kind::Capsule) && !s.sensor;
     });
     if (!rounded || b.type != BodyType::Dynamic) return;
     std::vector<MassData> parts;
@@ -133,6 +145,7 @@ void roundedMass(b2Body* body, const SceneBody& b) {
             parts.push_back(computeMass(makeBox(s.halfExtents.x, s.halfExtents.y, s.center, s.angle), s.density));
             break;
         case SceneShape::Kind::Polygon: parts.push_back(computeMass(makePolygon(s.vertices, s.radius), s.density)); break;
+        case SceneShape::Kind::Capsule: parts.push_back(computeMass(Capsule{s.v1, s.v2, s.radius}, s.density)); break;
         case SceneShape::Kind::Segment:
         case SceneShape::Kind::Chain: break;
         }

@@ -61,6 +61,7 @@ std::vector<Vec2> insideOutline(const SceneBody& container) {
                 for (const Vec2 v : s.vertices) extend(v, s.radius);
                 break;
             case SceneShape::Kind::Segment: extend(s.v1, 0.0f), extend(s.v2, 0.0f); break;
+            case SceneShape::Kind::Capsule: extend(s.v1, s.radius), extend(s.v2, s.radius); break;
             case SceneShape::Kind::Chain:
                 for (const Vec2 v : s.vertices) extend(v, 0.0f);
                 break;

@@ -33,6 +33,7 @@ ShapeId createShape(World& world, BodyId body, const SceneShape& s) {
             return world.createShape(body, def, makeBox(s.halfExtents.x, s.halfExtents.y, s.center, s.angle));
         case SceneShape::Kind::Polygon: return world.createShape(body, def, makePolygon(s.vertices, s.radius));
         case SceneShape::Kind::Segment: return world.createShape(body, def, Segment{s.v1, s.v2});
+        case SceneShape::Kind::Capsule: return world.createShape(body, def, Capsule{s.v1, s.v2, s.radius});
         case SceneShape::Kind::Chain: break;
     }
     return world.createShape(body, def, Chain{s.vertices, s.loop});

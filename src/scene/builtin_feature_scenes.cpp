@@ -39,6 +39,26 @@ Scene oneWayPlatform() {
     return s;
 }
 
+// Capsules: a row dropped flat (two-point manifolds), one balanced on its end cap (tips over), and
+// capsules on a 0.3 rad ramp (tan 0.3 < μ = 0.6: they stay) and a 0.7 rad ramp (they slide).
+Scene capsules() {
+    Scene s;
+    s.steps = 600;
+    addGround(s, 12.0f);
+    for (int i = 0; i < 4; ++i)
+        addBody(s, {.position = {-9.0f + 1.5f * i, 1.0f + 0.6f * i}, .shapes = {capsuleShape({-0.5f, 0.0f}, {0.5f, 0.0f}, 0.25f)}});
+    addBody(s, {.name = "upright", .position = {-2.0f, 0.85f}, .angularVelocity = 0.05f,
+                .shapes = {capsuleShape({0.0f, -0.6f}, {0.0f, 0.6f}, 0.25f)}});
+    for (const float angle : {0.3f, 0.7f}) {
+        const float x = angle < 0.5f ? 2.0f : 8.0f;
+        const Vec2 down{std::cos(angle), -std::sin(angle)}, normal{std::sin(angle), std::cos(angle)};
+        addBody(s, {.type = BodyType::Static, .position = {x, 3.0f}, .shapes = {segmentShape(-3.0f * down, 3.0f * down)}});
+        addBody(s, {.position = Vec2{x, 3.0f} - 1.5f * down + 0.26f * normal, .angle = -angle,
+                    .shapes = {capsuleShape({-0.4f, 0.0f}, {0.4f, 0.0f}, 0.25f)}});
+    }
+    return s;
+}
+
 // A platform's contact is enabled only while it pushes the visitor up, i.e. the visitor came from above.
 SceneBehaviour oneWayBehaviour() {
     return {.setup = [](SceneWorld& sw) {
@@ -169,6 +189,8 @@ std::vector<BuiltinScene> featureScenes() {
         {"bullet_wall", "0.1 m bullets at 500 m/s stop at a 0.1 m wall and a thin plank (continuous collision)", bulletWall},
         {"conveyor", "two conveyor belts (tangent speed +-2 m/s) carry boxes right, then left", conveyor},
         {"laser", "a ray-cast laser reflects off boxes, balls and a turning mirror", laser},
+        {"capsules", "capsules land flat on two points, tip over from an end cap, hold on a gentle ramp and slide down a steep one",
+         capsules},
     };
 }
 

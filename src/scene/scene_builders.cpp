@@ -39,6 +39,15 @@ SceneShape polygonShape(std::vector<Vec2> vertices, float radius) {
     return s;
 }
 
+SceneShape capsuleShape(Vec2 center1, Vec2 center2, float radius) {
+    SceneShape s;
+    s.kind = SceneShape::Kind::Capsule;
+    s.v1 = center1;
+    s.v2 = center2;
+    s.radius = radius;
+    return s;
+}
+
 SceneBody& addBody(Scene& scene, SceneBody body) {
     if (body.name.empty()) body.name = defaultBodyName(scene.bodies.size());
     scene.bodies.push_back(std::move(body));

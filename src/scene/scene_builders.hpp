@@ -11,6 +11,7 @@ SceneShape boxShape(float hx, float hy, Vec2 center = {}, float angle = 0.0f);
 SceneShape circleShape(float radius, Vec2 center = {});
 SceneShape segmentShape(Vec2 v1, Vec2 v2);
 SceneShape polygonShape(std::vector<Vec2> vertices, float radius = 0.0f);
+SceneShape capsuleShape(Vec2 center1, Vec2 center2, float radius);
 
 // Appends `body` (named "body<index>" if it has no name) and returns it.
 SceneBody& addBody(Scene& scene, SceneBody body);

@@ -180,7 +180,7 @@ constexpr std::pair<const char*, BodyType> bodyTypes[] = {
     {"static", BodyType::Static}, {"kinematic", BodyType::Kinematic}, {"dynamic", BodyType::Dynamic}};
 constexpr std::pair<const char*, SceneShape::Kind> shapeKinds[] = {
     {"circle", SceneShape::Kind::Circle}, {"box", SceneShape::Kind::Box}, {"polygon", SceneShape::Kind::Polygon},
-    {"segment", SceneShape::Kind::Segment}, {"chain", SceneShape::Kind::Chain}};
+    {"segment", SceneShape::Kind::Segment}, {"chain", SceneShape::Kind::Chain}, {"capsule", SceneShape::Kind::Capsule}};
 constexpr std::pair<const char*, JointType> jointTypes[] = {
     {"revolute", JointType::Revolute}, {"prismatic", JointType::Prismatic}, {"distance", JointType::Distance},
     {"weld", JointType::Weld}, {"wheel", JointType::Wheel}, {"motor", JointType::Motor},
@@ -236,6 +236,17 @@ SceneShape readShape(const Object& o) {
             s.v1 = o.boundedVec("v1", {}, maxCoordinate);
             s.v2 = o.boundedVec("v2", {}, maxCoordinate);
             if (distance(s.v1, s.v2) <= minEdgeLength) fail(o.path(), "segment is degenerate (v1 == v2)");
+            break;
+        case SceneShape::Kind::Capsule:
+            o.allowOnly({"center1", "center2", "radius"}, common);
+            o.required("center1");
+            o.required("center2");
+            o.required("radius");
+            s.v1 = o.boundedVec("center1", {}, maxCoordinate);
+            s.v2 = o.boundedVec("center2", {}, maxCoordinate);
+            s.radius = o.bounded("radius", 0.0f, maxCoordinate);
+            if (s.radius <= 0.0f) fail(member(o.path(), "radius"), "must be positive");
+            if (distance(s.v1, s.v2) <= minEdgeLength) fail(member(o.path(), "center2"), "is within 0.005 m of center1 (use a circle)");
             break;
         case SceneShape::Kind::Chain: {
             o.allowOnly({common, scene_keys::chain});

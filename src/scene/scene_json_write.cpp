@@ -106,6 +106,12 @@ Json shapeJson(const SceneShape& s) {
             o["v1"] = vec(s.v1);
             o["v2"] = vec(s.v2);
             break;
+        case SceneShape::Kind::Capsule:
+            o["type"] = "capsule";
+            o["center1"] = vec(s.v1);
+            o["center2"] = vec(s.v2);
+            o["radius"] = shortest(s.radius);
+            break;
         case SceneShape::Kind::Chain:
             o["type"] = "chain";
             o["vertices"] = points(s.vertices);
