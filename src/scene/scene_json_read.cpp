@@ -238,7 +238,7 @@ SceneShape readShape(const Object& o) {
             if (distance(s.v1, s.v2) <= minEdgeLength) fail(o.path(), "segment is degenerate (v1 == v2)");
             break;
         case SceneShape::Kind::Capsule:
-            o.allowOnly({"center1", "center2", "radius"}, common);
+            o.allowOnly({common, scene_keys::capsule});
             o.required("center1");
             o.required("center2");
             o.required("radius");

@@ -25,6 +25,7 @@ inline constexpr std::string_view box[] = {"half_extents", "center", "angle"};
 inline constexpr std::string_view polygon[] = {"vertices", "radius"};
 inline constexpr std::string_view segment[] = {"v1", "v2"};
 inline constexpr std::string_view chain[] = {"vertices", "loop"};
+inline constexpr std::string_view capsule[] = {"center1", "center2", "radius"};
 
 inline constexpr std::string_view joint[] = {"type", "body_a", "body_b", "collide_connected"};
 inline constexpr std::string_view jointAnchors[] = {"anchor", "local_anchor_a", "local_anchor_b"};
@@ -44,7 +45,7 @@ inline constexpr std::string_view actionPoint[] = {"point"};  // force and impul
 
 // Every list above, for the documentation test.
 inline std::vector<KeyList> all() {
-    return {root,     solver, body,     filter,    shape, circle, box,   polygon, segment, chain,
+    return {root,     solver, body,     filter,    shape, circle, box,   polygon, segment, chain, capsule,
             joint,    jointAnchors, revolute, distance, prismatic, weld, wheel, motor, gear, pulley, action, actionPoint};
 }
 
