@@ -15,6 +15,7 @@ std::vector<BuiltinScene> benchScenes();  // bench_scenes.cpp: the large scenes 
 BuiltinScene ragdollRainScene();          // ragdoll_rain.cpp: the benchmark whose script spawns ragdolls
 std::vector<BuiltinScene> demoScenes();
 std::vector<BuiltinScene> jointScenes();  // builtin_joint_scenes.cpp: pendulums, chain, bridge, ragdoll, car, joint grid, windmill, slider
+std::vector<BuiltinScene> stressScenes();   // stress_scenes.cpp: the torture suite of `perpdot stress`
 std::vector<BuiltinScene> featureScenes();  // builtin_feature_scenes.cpp: one-way platforms, sensors, bullets, conveyors, laser   // builtin_demo_scenes.cpp: showcases for the viewer (card house, dominoes, ...)
 
 }  // namespace perpdot
