@@ -27,5 +27,6 @@ int crosscheckCommand(Args args);  // cmd_crosscheck.cpp
 int recordCommand(Args args);      // cmd_golden.cpp
 int compareCommand(Args args);     // cmd_golden.cpp
 int benchCommand(Args args);       // cmd_bench.cpp
+int stressCommand(Args args);      // cmd_stress.cpp
 
 }  // namespace perpdot::cli

@@ -18,6 +18,7 @@ const Command commands[] = {
     {"record", "perpdot record SCENE|FILE --out FILE.csv [--engine perpdot|box2d] [--steps N]", recordCommand},
     {"compare", "perpdot compare SCENE|FILE --against FILE.csv [--tolerance METRES] [--angle-tolerance RAD]", compareCommand},
     {"bench", "perpdot bench [SCENE...] [--steps N] [--repeat R] [--engine perpdot|box2d]", benchCommand},
+    {"stress", "perpdot stress [CASE...] [--short]", stressCommand},
 };
 
 void printUsage(std::FILE* out) {

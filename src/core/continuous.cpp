@@ -1,12 +1,13 @@
-// Continuous collision (Box2D v3's scheme): after the solve, a body that moved more than half its
-// smallest extent this step is swept from its step-start pose to its end pose with b2TimeOfImpact
-// against the static shapes around the sweep — bullets against every non-bullet body — and moved
-// back to the earliest time of impact t < 1. Its velocity is kept: the next step's contact stops it.
+// Continuous collision against static geometry (Box2D v3's scheme): after the solve, a body that
+// moved more than half its smallest extent this step is swept from its step-start pose to its end
+// pose with b2TimeOfImpact against the static shapes around the sweep, and moved back to the
+// earliest time of impact t < 1. Its velocity is kept: the next step's contact stops it.
+// Bullets against moving bodies: continuous_impacts.cpp.
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "core/world_impl.hpp"
+#include "core/continuous.hpp"
 
 namespace perpdot {
 
@@ -14,15 +15,7 @@ namespace {
 
 constexpr float safetyFactor = 0.5f;  // of the smallest extent: slower bodies cannot tunnel
 
-AABB combine(const AABB& a, const AABB& b) {
-    return {{std::min(a.lower.x, b.lower.x), std::min(a.lower.y, b.lower.y)},
-            {std::max(a.upper.x, b.upper.x), std::max(a.upper.y, b.upper.y)}};
-}
-
 Vec2 middle(const AABB& box) { return 0.5f * (box.lower + box.upper); }
-
-// Solid shapes are swept; sensors and (massless) segments and chains on a moving body are not.
-bool sweeps(const ShapeData& s) { return !s.sensor && s.minExtent > 0.0f; }
 
 // The world endpoints of a segment or of one chain child.
 bool segmentOf(const ShapeData& s, int child, const Transform& xf, Vec2& p1, Vec2& p2) {
@@ -76,25 +69,21 @@ bool World::Impl::isFast(int index, Vec2 c0, float a0) const {
     return travel > safetyFactor * minExtent;
 }
 
-void World::Impl::solveContinuous(int index, Vec2 c0, float a0) {
-    Body& b = bodies[index];
-    const collide::Sweep sweep{b.localCenter, c0, b.center, a0, b.angle};
-    const Rot q0 = Rot::fromAngle(a0);
-    const Transform xf0{c0 - rotate(q0, b.localCenter), q0};
+float World::Impl::staticImpact(int index, const collide::Sweep& sweep) const {
+    const Body& b = bodies[index];
+    const Rot q0 = Rot::fromAngle(sweep.a1), q1 = Rot::fromAngle(sweep.a2);
+    const Transform xf0{sweep.c1 - rotate(q0, b.localCenter), q0}, xf1{sweep.c2 - rotate(q1, b.localCenter), q1};
     float t = 1.0f;
     for (int s : b.shapes) {
         const ShapeData& shape = shapes[s];
         if (!sweeps(shape)) continue;
-        const AABB start = collision.computeAABB(s, 0, xf0), end = collision.computeAABB(s, 0, b.xf);
-        // Bullets sweep against every body; others only against static shapes, in their own tree.
-        auto sweepAgainst = [&](int proxy) {
+        const AABB start = collision.computeAABB(s, 0, xf0), end = collision.computeAABB(s, 0, xf1);
+        collision.queryStatic(combine(start, end), [&](int proxy) {
             const collide::ChildKey key = collision.proxyKey(proxy);
             const ShapeData& other = shapes[key.shape];
             const Body& ob = bodies[other.body];
-            if (other.body == index || other.sensor) return true;
-            if (ob.type != BodyType::Static && !(b.bullet && !ob.bullet)) return true;
-            if (!collide::CollisionSystem::canCollide(shape.type, other.type) || !shouldCollide(shape.filter, other.filter) ||
-                !jointAllowsCollision(*this, index, other.body))
+            if (other.sensor || !collide::CollisionSystem::canCollide(shape.type, other.type) ||
+                !shouldCollide(shape.filter, other.filter) || !jointAllowsCollision(*this, index, other.body))
                 return true;
             Vec2 p1, p2;
             SegmentPass pass = SegmentPass::Nears;  // what a non-segment shape is treated as
@@ -102,7 +91,6 @@ void World::Impl::solveContinuous(int index, Vec2 c0, float a0) {
                 pass = passOfCentre(p1, p2, other.type == ShapeType::Chain, middle(start), middle(end), shape.maxExtent);
                 if (pass == SegmentPass::Misses) return true;
             }
-            // The other body stands still at its final pose.
             const collide::Sweep still{ob.localCenter, ob.center, ob.center, ob.angle, ob.angle};
             float toi = collision.timeOfImpact({s, 0}, sweep, key, still);
             // The shape's core (a circle of a quarter of its extent, which turning does not change)
@@ -113,10 +101,14 @@ void World::Impl::solveContinuous(int index, Vec2 c0, float a0) {
                 toi = collision.coreTimeOfImpact(s, 0.25f * shape.minExtent, sweep, key, still);
             if (toi > 0.0f && toi < t) t = toi;
             return true;
-        };
-        if (b.bullet) collision.query(combine(start, end), sweepAgainst);
-        else collision.queryStatic(combine(start, end), sweepAgainst);
+        });
     }
+    return t;
+}
+
+void World::Impl::solveContinuous(int index, Vec2 c0, float a0) {
+    Body& b = bodies[index];
+    const float t = staticImpact(index, {b.localCenter, c0, b.center, a0, b.angle});
     if (t >= 1.0f) return;
     // Back to the pose at the time of impact: c = c0 + t (c1 - c0), θ = θ0 + t (θ1 - θ0).
     b.center = c0 + t * (b.center - c0);

@@ -120,9 +120,10 @@ void integratePositions(World::Impl& w, const StepContext& ctx) {
 
 // Write the solver state back: c = c0 + Δp, θ = θ0 + Δθ, origin = c - R(θ) localCenter.
 // Fast bodies are then swept from their step-start pose against static shapes; bullets wait
-// until every other body is final, then sweep against dynamic shapes too.
-void finalizeBodies(World::Impl& w) {
-    w.bullets.clear();
+// until every other body is final, then meet moving bodies too (continuous_impacts.cpp).
+void finalizeBodies(World::Impl& w, float h) {
+    w.movers.clear();
+    bool anyBullet = false;
     for (size_t k = 0; k < w.awakeBodies.size(); ++k) {
         const int index = w.awakeBodies[k];
         Body& b = w.bodies[index];
@@ -146,24 +147,20 @@ void finalizeBodies(World::Impl& w) {
         b.angle = b.angle + dAngle;
         b.xf.q = Rot::fromAngle(b.angle);
         b.xf.p = b.center - rotate(b.xf.q, b.localCenter);
+        anyBullet = anyBullet || b.bullet;
         if (w.def.enableContinuous && w.isFast(index, c0, a0)) {
-            if (b.bullet) {
-                w.bullets.push_back(static_cast<int>(k));
-                continue;
+            w.movers.push_back({.body = index, .c0 = c0, .a0 = a0, .v = b.v, .w = b.w, .stepStart = c0, .fast = true});
+            if (!b.bullet) {
+                w.solveContinuous(index, c0, a0);
+                w.synchronizeProxies(index, b.center - c0);
             }
-            w.solveContinuous(index, c0, a0);
-            w.synchronizeProxies(index, b.center - c0);
+            w.movers.back().c1 = b.center;
+            w.movers.back().a1 = b.angle;
             continue;
         }
         w.synchronizeProxies(index, s.dp);
     }
-    for (int k : w.bullets) {
-        const int index = w.awakeBodies[k];
-        Body& b = w.bodies[index];
-        const Vec2 c0 = b.center - w.states[k + 1].dp;
-        w.solveContinuous(index, c0, b.angle - w.stepRotation[k + 1]);
-        w.synchronizeProxies(index, b.center - c0);
-    }
+    if (anyBullet && !w.movers.empty()) w.solveMovingImpacts(h);
     for (Body& b : w.bodies) {
         b.force = {};
         b.torque = 0.0f;
@@ -207,7 +204,7 @@ void World::Impl::solve(float h) {
     storeJointImpulses(*this, ctx);
     storeContactImpulses(*this);
     reportHitEvents(*this);
-    finalizeBodies(*this);
+    finalizeBodies(*this, h);
 }
 
 }  // namespace perpdot

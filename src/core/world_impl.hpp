@@ -106,6 +106,32 @@ inline uint64_t proxyPairKey(int proxyA, int proxyB) {
     return (static_cast<uint64_t>(lo) << 32) | hi;
 }
 
+// A body's path over the rest of a step, for continuous collision between moving bodies
+// (continuous_impacts.cpp): centre of mass and angle go linearly from (c0, a0) at time t0 to
+// (c1, a1) at the step's end; times are fractions of the step.
+struct Mover {
+    int body = -1;
+    float t0 = 0;
+    Vec2 c0, c1;
+    float a0 = 0, a1 = 0;
+    Vec2 v;      // velocity along the path
+    float w = 0;
+    Vec2 stepStart;  // centre at the step's start: the broadphase displacement
+    AABB swept;      // of its shapes over the whole step (fast movers)
+    bool fast = false;      // found fast by isFast (else: met by a fast mover)
+    bool sweepStatic = false;  // its path still has to be swept against static shapes
+    bool moved = false;     // its path differs from what finalizeBodies wrote to the body
+    float staticTime = 1;   // time of impact with static shapes (valid when !sweepStatic)
+};
+
+// Two movers of which at least one is a bullet, with their next time of impact.
+struct MoverPair {
+    int a = -1, b = -1;  // movers, a < b
+    bool dirty = true;   // a path changed: the time of impact is to be recomputed
+    float time = 1;
+    collide::ChildKey keyA, keyB;  // the children that meet first
+};
+
 // A pair found by the broadphase this step, child keys in order (a < b).
 struct NewPair {
     collide::ChildKey a, b;
@@ -147,7 +173,9 @@ struct World::Impl {
     bool anyHitEvents = false;  // a shape with enableHitEvents was ever created: look for hits
     // Every category and every mask bit of the shapes ever created (never cleared).
     uint16_t shapeCategories = 0, shapeMasks = 0;
-    std::vector<int> bullets;  // continuous.cpp scratch: bullets wait until the others are final
+    std::vector<Mover> movers;          // continuous_impacts.cpp scratch: fast bodies and what they may hit,
+    std::vector<MoverPair> moverPairs;  // the pairs among them that include a bullet,
+    std::vector<int> moverOfBody;       // and each body's mover (-1: none)
 
     // Solver arrays, rebuilt each step without reallocating.
     std::vector<BodyState> states;
@@ -211,6 +239,15 @@ struct World::Impl {
     // (centre c0, angle a0) to its current one; moves it back to the earliest time of impact.
     bool isFast(int body, Vec2 c0, float a0) const;
     void solveContinuous(int body, Vec2 c0, float a0);
+    // The earliest time of impact in [0, 1] of the body's shapes along `sweep` with static shapes.
+    float staticImpact(int body, const collide::Sweep& sweep) const;
+    // Bullets against moving bodies (continuous_impacts.cpp): `movers` holds the fast bodies of
+    // this step (bullets not yet synchronised); finds their impacts in time order, resolves each
+    // with Hecker's collision impulse and moves the pair on for the rest of the step.
+    void solveMovingImpacts(float h);
+    void collectMoverPairs();
+    void pairImpact(MoverPair& pair, float t) const;
+    void resolveImpact(const MoverPair& pair, float t, float h);
 };
 
 // Contact solver stages (contact_solver.cpp, and contact_solver_wide.cpp for the rows solved in

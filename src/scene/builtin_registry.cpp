@@ -11,7 +11,7 @@ namespace {
 
 std::vector<BuiltinScene> allScenes() {
     std::vector<BuiltinScene> all;
-    for (std::vector<BuiltinScene> group : {coreScenes(), benchScenes(), demoScenes(), featureScenes(), jointScenes(), coupledJointScenes()})
+    for (std::vector<BuiltinScene> group : {coreScenes(), benchScenes(), demoScenes(), featureScenes(), jointScenes(), coupledJointScenes(), stressScenes()})
         for (BuiltinScene& entry : group) {
             for (const BuiltinScene& existing : all)
                 if (existing.name == entry.name) throw Error("built-in scene \"" + entry.name + "\" is defined twice");

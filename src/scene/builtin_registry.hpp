@@ -16,6 +16,7 @@ BuiltinScene ragdollRainScene();          // ragdoll_rain.cpp: the benchmark who
 std::vector<BuiltinScene> demoScenes();
 std::vector<BuiltinScene> jointScenes();  // builtin_joint_scenes.cpp: pendulums, chain, bridge, ragdoll, car, joint grid, windmill, slider
 std::vector<BuiltinScene> coupledJointScenes();  // builtin_coupled_joint_scenes.cpp: gears, pulley
+std::vector<BuiltinScene> stressScenes();   // stress_scenes.cpp: the torture suite of `perpdot stress`
 std::vector<BuiltinScene> featureScenes();  // builtin_feature_scenes.cpp: one-way platforms, sensors, bullets, conveyors, laser   // builtin_demo_scenes.cpp: showcases for the viewer (card house, dominoes, ...)
 
 }  // namespace perpdot
