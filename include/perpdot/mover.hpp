@@ -53,6 +53,7 @@ struct MoverState {
     Vec2 groundNormal{0.0f, 1.0f};  ///< normal of that ground
     ShapeId ground;           ///< the shape it stands on (invalid when airborne)
     Vec2 lastDisplacement{};  ///< how far the last moveMover() moved it, m
+    /// Exact equality of every field (a replayed mover compares equal).
     friend bool operator==(const MoverState&, const MoverState&) = default;
 };
 

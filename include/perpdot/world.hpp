@@ -232,13 +232,15 @@ public:
     /// pre-solve callback stays). Corrupt or truncated bytes: Error, and the world is unchanged.
     void restore(std::span<const uint8_t> snapshot);
     // Compact snapshots for rollback (docs/reliability.md): the bytes in which this world's state
-    // differs from `baseline`, any earlier snapshot() or baselineSnapshot() — unchanged bodies,
-    // sleeping islands and static geometry cost nothing. baselineSnapshot() is snapshot() without
-    // the contact values the next step recomputes (zeros: contacts() shows them only after a step),
-    // which makes deltas against it smaller. restoreCompact(baseline, compact) then continues bit
-    // for bit like restore(snapshot()); a compact snapshot of another baseline: Error.
+    // differs from `baseline`, any earlier snapshot() or baselineSnapshot(); unchanged bodies,
+    // sleeping islands and static geometry cost nothing.
+    /// snapshot() without the contact values the next step recomputes (zeros: contacts() shows them
+    /// only after a step), which makes deltas against it smaller.
     std::vector<uint8_t> baselineSnapshot() const;
+    /// The XOR delta of this world's state against `baseline`, unchanged runs skipped.
     std::vector<uint8_t> compactSnapshot(std::span<const uint8_t> baseline) const;
+    /// Replaces this world's state with `baseline` patched by `compact`, continuing bit for bit
+    /// like restore(snapshot()); a compact snapshot of another baseline: Error.
     void restoreCompact(std::span<const uint8_t> baseline, std::span<const uint8_t> compact);
 
     WorldStats stats() const;  ///< Pool sizes and health counters.
