@@ -34,6 +34,10 @@ struct WorldDef {
     bool enableSleep = true;  ///< bodies at rest fall asleep (islands)
     bool enableWarmStarting = true;  ///< start each step from the last step's impulses
     bool enableContinuous = true;         ///< time of impact for fast bodies against static shapes
+    /// m: a touching contact keeps its manifold (normal, anchors) while its bodies' relative pose
+    /// moves its anchors less than this since the last narrowphase; 0 rebuilds every step, as
+    /// Box2D 2.4's b2World does. Kept manifolds are what hold tall stacks up (docs/solver.md).
+    float contactReuseDistance = 0.05f;
 };
 
 /// One point of a contact manifold.

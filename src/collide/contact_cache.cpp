@@ -4,6 +4,7 @@
 #include <cmath>
 #include <tuple>
 
+#include "core/manifold_reuse.hpp"
 #include "core/world_impl.hpp"
 
 namespace perpdot {
@@ -22,9 +23,39 @@ float roundingRadius(const ShapeData& s) {
     if (auto* c = std::get_if<Capsule>(&s.geometry)) return c->radius;
     return 0.0f;
 }
+// Flat surfaces meet at vertices, which are points of the bodies: their manifold may be kept
+// (manifold_reuse.hpp). A round surface's contact point rolls over it as the body turns.
+bool isFlat(const ShapeData& s) { return roundingRadius(s) == 0.0f; }
+
 float mixRollingResistance(const ShapeData& a, const ShapeData& b) {
     const float resistance = std::max(a.rollingResistance, b.rollingResistance);
     return resistance > 0.0f ? resistance * std::max(roundingRadius(a), roundingRadius(b)) : 0.0f;
+}
+
+// A new manifold for `c`: its points inherit the accumulated impulses of the old points with the
+// same feature id, and the bodies' pose is remembered for keeping it (manifold_reuse.hpp).
+void takeManifold(Contact& c, const collide::Manifold& m, const Body& ba, const Body& bb, bool keepable) {
+    ContactPointState next[2];
+    for (int i = 0; i < m.pointCount; ++i) {
+        ContactPointState& p = next[i];
+        p.point = m.points[i].point;
+        p.separation = m.points[i].separation;
+        p.id = m.points[i].id;
+        p.anchorA = p.point - ba.center;
+        p.anchorB = p.point - bb.center;
+        for (int j = 0; j < c.pointCount; ++j) {
+            if (c.points[j].id == p.id) {
+                p.normalImpulse = c.points[j].normalImpulse;
+                p.tangentImpulse = c.points[j].tangentImpulse;
+                break;
+            }
+        }
+    }
+    c.normal = m.normal;
+    c.pointCount = m.pointCount;
+    c.points[0] = next[0];
+    c.points[1] = next[1];
+    rememberManifoldPose(c, ba, bb, keepable);
 }
 
 void linkEdge(World::Impl& w, int contact, int side, int bodyIndex) {
@@ -149,8 +180,7 @@ void World::Impl::destroyContactsOf(int bodyIndex, int shapeIndex) {
     }
 }
 
-// Narrowphase for every contact with an awake body: a new manifold, whose points inherit the
-// accumulated impulses of the old points with the same feature id.
+// Narrowphase for every contact with an awake body: its kept manifold, or a new one.
 void World::Impl::updateContacts() {
     for (int index = 0; index < static_cast<int>(contacts.size()); ++index) {
         Contact& c = contacts[index];
@@ -170,39 +200,19 @@ void World::Impl::updateContacts() {
             }
             continue;
         }
-        const collide::Manifold m = collision.collide(c.a, ba.xf, c.b, bb.xf);
         const ShapeData& sa = shapes[c.a.shape];
         const ShapeData& sb = shapes[c.b.shape];
         c.friction = mixFriction(sa.friction, sb.friction);
         c.restitution = mixRestitution(sa.restitution, sb.restitution);
         c.rollingResistance = mixRollingResistance(sa, sb);
         c.tangentSpeed = sa.tangentSpeed + sb.tangentSpeed;
-
-        ContactPointState next[2];
-        for (int i = 0; i < m.pointCount; ++i) {
-            ContactPointState& p = next[i];
-            p.point = m.points[i].point;
-            p.separation = m.points[i].separation;
-            p.id = m.points[i].id;
-            p.anchorA = p.point - ba.center;
-            p.anchorB = p.point - bb.center;
-            for (int j = 0; j < c.pointCount; ++j) {
-                if (c.points[j].id == p.id) {
-                    p.normalImpulse = c.points[j].normalImpulse;
-                    p.tangentImpulse = c.points[j].tangentImpulse;
-                    break;
-                }
-            }
-        }
         const bool wasTouching = c.touching;
-        c.normal = m.normal;
-        c.pointCount = m.pointCount;
-        c.points[0] = next[0];
-        c.points[1] = next[1];
-        c.touching = m.pointCount > 0;
+        if (!reuseManifold(c, ba, bb, def.contactReuseDistance)) takeManifold(c, collision.collide(c.a, ba.xf, c.b, bb.xf), ba, bb, isFlat(sa) && isFlat(sb));
+        c.touching = c.pointCount > 0;
         if (c.touching && preSolve && (sa.enablePreSolveEvents || sb.enablePreSolveEvents) && !preSolve(shapeId(c.a.shape), shapeId(c.b.shape), contactData(c))) {
-            c.pointCount = 0;  // disabled for this step
+            c.pointCount = 0;  // disabled for this step, and its manifold is not kept
             c.touching = false;
+            c.reuseValid = false;
         }
         if (!c.touching) c.rollingImpulse = 0.0f;
         if (c.touching != wasTouching) reportTouch(c, c.touching);

@@ -15,8 +15,9 @@
 namespace perpdot {
 
 // 1: joint type data as raw struct bytes. 2: every struct through its field list. 3: end events
-// raised between steps (a body or shape destroyed), which the next step reports.
-constexpr uint32_t formatVersion = 3;
+// raised between steps (a body or shape destroyed), which the next step reports. 4: kept
+// manifolds (manifold_reuse.hpp) and WorldDef::contactReuseDistance; older snapshots rebuild.
+constexpr uint32_t formatVersion = 4;
 
 // A struct whose layout changed must have its field list reviewed (then update the size here).
 template <class T, size_t Size>
@@ -33,7 +34,7 @@ constexpr auto fields(const Softness*) {
 
 // --- world ---
 
-static_assert(reviewedLayout<WorldDef, 48>);
+static_assert(reviewedLayout<WorldDef, 52>);
 constexpr auto fields(const WorldDef*) {
     using D = WorldDef;
     return std::tuple{field("gravity", &D::gravity),
@@ -48,7 +49,8 @@ constexpr auto fields(const WorldDef*) {
                       field("hitEventThreshold", &D::hitEventThreshold),
                       field("enableSleep", &D::enableSleep),
                       field("enableWarmStarting", &D::enableWarmStarting),
-                      field("enableContinuous", &D::enableContinuous)};
+                      field("enableContinuous", &D::enableContinuous),
+                      field("contactReuseDistance", &D::contactReuseDistance).since(4)};
 }
 
 // Not listed: generation and alive (written by the pool), userData, shapes and contactHead
@@ -110,7 +112,7 @@ namespace collide {
 constexpr auto fields(const ChildKey*) { return std::tuple{field("shape", &ChildKey::shape), field("child", &ChildKey::child)}; }
 }  // namespace collide
 
-static_assert(reviewedLayout<ContactPointState, 44>);
+static_assert(reviewedLayout<ContactPointState, 48>);
 constexpr auto fields(const ContactPointState*) {
     using P = ContactPointState;
     return std::tuple{field("point", &P::point).anyBits(),
@@ -120,12 +122,13 @@ constexpr auto fields(const ContactPointState*) {
                       field("normalImpulse", &P::normalImpulse).anyBits(),
                       field("tangentImpulse", &P::tangentImpulse).anyBits(),
                       field("maxNormalImpulse", &P::maxNormalImpulse).anyBits(),
-                      field("id", &P::id)};
+                      field("id", &P::id),
+                      field("baseSeparation", &P::baseSeparation).anyBits().since(4)};
 }
 
 // Not listed: alive (written by the pool); pairKey, proxies and bodies (derived from the child
 // keys); points (the first pointCount, written after the list); edges (written as body lists).
-static_assert(reviewedLayout<Contact, 184>);
+static_assert(reviewedLayout<Contact, 216>);
 constexpr auto fields(const Contact*) {
     using C = Contact;
     return std::tuple{field("touching", &C::touching),
@@ -139,7 +142,11 @@ constexpr auto fields(const Contact*) {
                       field("tangentSpeed", &C::tangentSpeed).anyBits(),
                       field("rollingImpulse", &C::rollingImpulse).anyBits(),
                       field("normal", &C::normal).anyBits(),
-                      field("pointCount", &C::pointCount)};
+                      field("pointCount", &C::pointCount),
+                      field("reuseValid", &C::reuseValid).since(4),
+                      field("reuseOffset", &C::reuseOffset).anyBits().since(4),
+                      field("reuseAngleA", &C::reuseAngleA).anyBits().since(4),
+                      field("reuseAngleB", &C::reuseAngleB).anyBits().since(4)};
 }
 
 // --- joints: any float bits; each type's list in declaration order (format 1 was raw bytes) ---

@@ -67,6 +67,7 @@ struct ContactPointState {
     float separation = 0;
     float normalImpulse = 0, tangentImpulse = 0, maxNormalImpulse = 0;
     uint32_t id = 0;
+    float baseSeparation = 0;  // at the last narrowphase, for a kept manifold (manifold_reuse.hpp)
 };
 
 struct ContactEdge {
@@ -88,6 +89,10 @@ struct Contact {
     Vec2 normal;
     int pointCount = 0;
     ContactPointState points[2];
+    // The pose at the last narrowphase (manifold_reuse.hpp): B's centre in A's frame, both angles.
+    bool reuseValid = false;
+    Vec2 reuseOffset;
+    float reuseAngleA = 0, reuseAngleB = 0;
     ContactEdge edges[2];  // in bodyA's list (side 0) and bodyB's (side 1)
 };
 

@@ -1,0 +1,58 @@
+#include "core/manifold_reuse.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace perpdot {
+
+namespace {
+
+// B's centre of mass in A's rotation frame: unchanged while the two move as one.
+Vec2 relativeOffset(const Body& a, const Body& b) { return invRotate(a.xf.q, b.center - a.center); }
+
+// Beyond this turn of either body the stored normal is no longer trusted (0.1 rad, under 6°).
+constexpr float maxTurn = 0.1f;
+
+}  // namespace
+
+bool reuseManifold(Contact& c, const Body& a, const Body& b, float tolerance) {
+    if (!c.reuseValid || c.pointCount == 0 || !(tolerance > 0.0f)) return false;
+    const float turnA = a.angle - c.reuseAngleA, turnB = b.angle - c.reuseAngleB;
+    if (!(std::fabs(turnA) < maxTurn && std::fabs(turnB) < maxTurn)) return false;
+    // Travel of the farthest anchor relative to A: the drift of B's centre plus |r| |Δθ_rel|.
+    float reach = 0.0f;
+    for (int i = 0; i < c.pointCount; ++i)
+        reach = std::max({reach, length(c.points[i].anchorA), length(c.points[i].anchorB)});
+    const float drift = length(relativeOffset(a, b) - c.reuseOffset) + reach * std::fabs(turnB - turnA);
+    if (!(drift < tolerance)) return false;
+
+    const Rot qA = Rot::fromAngle(turnA), qB = Rot::fromAngle(turnB);
+    Vec2 points[2];
+    float separations[2];
+    for (int i = 0; i < c.pointCount; ++i) {
+        const ContactPointState& p = c.points[i];
+        const Vec2 pointA = a.center + rotate(qA, p.anchorA);  // the material points that met
+        const Vec2 pointB = b.center + rotate(qB, p.anchorB);
+        separations[i] = p.baseSeparation + dot(pointB - pointA, c.normal);
+        // A new narrowphase would drop a point whose skins no longer overlap (and end the touch).
+        if (!(separations[i] <= 0.0f)) return false;
+        points[i] = 0.5f * (pointA + pointB);
+    }
+    for (int i = 0; i < c.pointCount; ++i) {
+        c.points[i].separation = separations[i];
+        c.points[i].point = points[i];
+    }
+    return true;
+}
+
+void rememberManifoldPose(Contact& c, const Body& a, const Body& b, bool keepable) {
+    // Only two-point manifolds: a kept manifold never gains a point, so one with a single point
+    // would miss the second corner coming down until the pose moved past the tolerance.
+    c.reuseValid = keepable && c.pointCount == 2;
+    c.reuseOffset = relativeOffset(a, b);
+    c.reuseAngleA = a.angle;
+    c.reuseAngleB = b.angle;
+    for (int i = 0; i < c.pointCount; ++i) c.points[i].baseSeparation = c.points[i].separation;
+}
+
+}  // namespace perpdot
