@@ -64,23 +64,10 @@ private:
     SurfacePtr sheet_;
 };
 
-// One line: how far perpdot and Box2D 2.4's b2World drift apart over the same steps.
+// How perpdot and Box2D 2.4's b2World compare over the same steps, as a finding in words.
 void printCrosscheck(const Scene& scene, int steps) {
     try {
-        const crosscheck::Report report = crosscheck::run(scene, {.steps = steps});
-        const crosscheck::BodyMetrics* worst = nullptr;
-        for (const crosscheck::BodyMetrics& b : report.bodies) {
-            if (!worst || b.position.max > worst->position.max) worst = &b;
-        }
-        if (!worst) {
-            std::printf("crosscheck vs Box2D 2.4: no moving bodies\n");
-            return;
-        }
-        std::printf("crosscheck vs Box2D 2.4 over %d steps: max position error %.4g m (%s, step %d); ", report.steps,
-                    worst->position.max, worst->name.c_str(), worst->position.maxStep);
-        if (report.withinTolerance()) std::printf("within %.3g m / %.3g rad throughout\n", report.options.tolerance,
-                                                  report.options.angleTolerance);
-        else std::printf("diverged at step %d (%s)\n", report.divergenceStep, report.divergedBody.c_str());
+        std::fputs(crosscheck::summarize(scene, steps).c_str(), stdout);
     } catch (const Error& e) {
         std::printf("crosscheck vs Box2D 2.4: not available for this scene: %s\n", e.what());
     }

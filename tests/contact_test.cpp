@@ -124,6 +124,20 @@ TEST(Contact, BlockOnSteepInclineSlidesWithCoulombDeceleration) {
     EXPECT_NEAR(a, expected, mu * std::fabs(vn2 - vn1) / 1.0f + 2e-3f);
 }
 
+// A 1 m box dropped 1 cm rests on its true surface (each polygon keeps 0.5 mm of Box2D's skin as a
+// rest gap); with WorldDef::box2dSkin it rests on Box2D 2.4's skins as b2World does: 0.015 m higher.
+TEST(Contact, BoxRestsOnItsTrueSurfaceOrOnBox2DsSkin) {
+    for (const bool box2dSkin : {false, true}) {
+        World world({.box2dSkin = box2dSkin});
+        test::addGround(world);
+        const BodyId box = test::addBox(world, {0.0f, 0.51f}, 0.5f, 0.5f);
+        test::run(world, 120);
+        const float rest = box2dSkin ? 0.5f + 2 * 0.01f - 0.005f : 0.5f;  // skins less the linear slop
+        EXPECT_NEAR(world.position(box).y, rest, 2e-3f) << (box2dSkin ? "on Box2D's skin" : "true surfaces");
+        EXPECT_NEAR(world.linearVelocity(box).y, 0.0f, 1e-3f);
+    }
+}
+
 TEST(Contact, DiscRollsWithoutSlippingAtTwoThirdsGSinTheta) {
     // A disc (I = m r²/2) rolling without slip: a = g sin θ / (1 + I/(m r²)) = ⅔ g sin θ and ω r = v.
     // Friction needed: ⅓ m g sin θ ≤ μ m g cos θ for μ ≥ tan θ / 3 = 0.19; μ = 0.8 keeps it rolling.

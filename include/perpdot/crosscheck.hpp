@@ -130,6 +130,12 @@ std::vector<BodyMetrics> compare(const Trajectory& a, const Trajectory& b, const
 /// Earliest divergence over `bodies` (index into it, or -1) — the verdict of run() and compare().
 int firstDiverged(const std::vector<BodyMetrics>& bodies);
 
+/// The cross-check as a finding in words, a few lines: where bodies end at rest in both engines,
+/// how much lower perpdot rests them and why (Box2D 2.4's polygon skin); how far the trajectories
+/// drift apart; and, unless the scene already rests on the skin, the same for the like-for-like
+/// run with Scene::solver.box2dSkin. `steps` -1: the scene's.
+std::string summarize(const Scene& scene, int steps = -1);
+
 /// Side-by-side timing (`perpdot bench`): each repeat builds both worlds afresh (untimed), then
 /// times the steps with a steady clock, alternating which engine goes first.
 struct TimingOptions {

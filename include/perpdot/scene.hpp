@@ -121,6 +121,7 @@ struct SceneSolver {
     std::optional<int> substeps{};  ///< perpdot; default WorldDef::substeps
     int velocityIterations = 8;   ///< Box2D, in cross-checks and benchmarks
     int positionIterations = 3;  ///< Box2D
+    bool box2dSkin = false;  ///< perpdot rests on Box2D 2.4's polygon skin (WorldDef::box2dSkin)
     /// Equal in every field (a scene that round-trips through JSON compares equal).
     friend bool operator==(const SceneSolver&, const SceneSolver&) = default;
 };

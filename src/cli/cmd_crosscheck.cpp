@@ -1,4 +1,5 @@
 // perpdot crosscheck SCENE|FILE [--steps N] [--tolerance METRES] [--angle-tolerance RAD] [--report DIR]
+//                    [--box2d-skin]
 // Runs the scene in perpdot and in Box2D's b2World in lockstep; exit 0 within tolerance, 1 diverged.
 #include <cstdio>
 
@@ -28,9 +29,10 @@ void printAggregates(const crosscheck::Report& r) {
 }  // namespace
 
 int crosscheckCommand(Args args) {
-    const Flags flags(args, {"--steps", "--tolerance", "--angle-tolerance", "--report"});
+    const Flags flags(args, {"--steps", "--tolerance", "--angle-tolerance", "--report"}, {"--box2d-skin"});
     if (flags.positional().size() != 1) throw UsageError{"expected one scene name or file"};
-    const Scene scene = findScene(flags.positional()[0]);
+    Scene scene = findScene(flags.positional()[0]);
+    if (flags.has("--box2d-skin")) scene.solver.box2dSkin = true;  // like-for-like rest heights
     crosscheck::Options options;
     options.steps = flags.integer("--steps", -1, 0);
     options.tolerance = flags.number("--tolerance", options.tolerance, 0.0f);

@@ -17,11 +17,15 @@ T parse(const std::string& name, const std::string& text) {
 
 }  // namespace
 
-Flags::Flags(Args args, std::initializer_list<const char*> names) {
+Flags::Flags(Args args, std::initializer_list<const char*> names, std::initializer_list<const char*> switches) {
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& arg = args[i];
         if (arg.size() < 2 || arg.compare(0, 2, "--") != 0) {
             positional_.push_back(arg);
+            continue;
+        }
+        if (std::any_of(switches.begin(), switches.end(), [&](const char* n) { return arg == n; })) {
+            switches_.insert(arg);
             continue;
         }
         if (std::none_of(names.begin(), names.end(), [&](const char* n) { return arg == n; })) {

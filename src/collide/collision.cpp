@@ -217,7 +217,20 @@ void CollisionSystem::shiftOrigin(Vec2 newOrigin) {
     impl_->staticTree.ShiftOrigin(toB2(newOrigin));
 }
 
-Manifold CollisionSystem::collide(ChildKey a, const Transform& xfA, ChildKey b, const Transform& xfB) const {
+namespace {
+
+// The part of Box2D's skin a polygon or segment keeps as a rest gap: a box resting on a row of
+// separate tiles then slides over their seams without catching a tile's side face (docs/solver.md).
+constexpr float keptSkin = 0.1f * linearSlop;
+
+// How much of a shape's b2 radius perpdot does not count as surface: Box2D's skin less keptSkin.
+float skin(const b2Shape& shape) {
+    return shape.m_type == b2Shape::e_circle || isCapsule(shape) ? 0.0f : polygonRadius - keptSkin;
+}
+
+}  // namespace
+
+Manifold CollisionSystem::collide(ChildKey a, const Transform& xfA, ChildKey b, const Transform& xfB, bool box2dSkin) const {
     const Geometry& ga = impl_->geometry[a.shape];
     const Geometry& gb = impl_->geometry[b.shape];
     const b2Shape& shapeA = childShape(ga, a.child);
@@ -260,9 +273,12 @@ Manifold CollisionSystem::collide(ChildKey a, const Transform& xfA, ChildKey b, 
     b2WorldManifold wm;
     wm.Initialize(&m, ta, shapeA.m_radius, tb, shapeB.m_radius);
     out.normal = fromB2(wm.normal);
+    // Between the true surfaces the gap is skinA + skinB wider, and its midpoint moves by half the
+    // difference along n.
+    const float skinA = box2dSkin ? 0.0f : skin(shapeA), skinB = box2dSkin ? 0.0f : skin(shapeB);
     for (int i = 0; i < m.pointCount; ++i) {
-        out.points[i].point = fromB2(wm.points[i]);
-        out.points[i].separation = wm.separations[i];
+        out.points[i].point = fromB2(wm.points[i]) + (0.5f * (skinB - skinA)) * out.normal;
+        out.points[i].separation = wm.separations[i] + skinA + skinB;
         out.points[i].id = m.points[i].id.key;
     }
     return out;

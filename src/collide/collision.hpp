@@ -13,7 +13,7 @@ namespace perpdot::collide {
 
 // Box2D's tolerances, kept so perpdot and Box2D rest bodies at the same separations.
 inline constexpr float linearSlop = 0.005f;
-inline constexpr float polygonRadius = 2.0f * linearSlop;  // collision skin of polygons
+inline constexpr float polygonRadius = 2.0f * linearSlop;  // Box2D 2.4's collision skin of polygons and segments
 
 struct ManifoldPoint {
     Vec2 point;               // world, midway between the two surfaces
@@ -107,7 +107,11 @@ public:
 
     // Narrowphase: the contact manifold of child A at xfA against child B at xfB (A's shape type must
     // be the "larger" one as ordered by orderPair).
-    Manifold collide(ChildKey a, const Transform& xfA, ChildKey b, const Transform& xfB) const;
+    // Box2D 2.4 finds manifold points where the skins (polygonRadius around every polygon and
+    // segment) overlap and measures separations between the skins. perpdot measures them between
+    // the true surfaces, so the skin is only a speculative margin; `box2dSkin` keeps Box2D's
+    // separations (WorldDef::box2dSkin: bodies rest where b2World rests them).
+    Manifold collide(ChildKey a, const Transform& xfA, ChildKey b, const Transform& xfB, bool box2dSkin) const;
     // True when the pair must be swapped so that collide() receives (A, B) in Box2D's order
     // (polygon before circle, segment/chain before either).
     static bool mustSwap(ShapeType a, ShapeType b);

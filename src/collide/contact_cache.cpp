@@ -17,12 +17,6 @@ float mixRestitution(float a, float b) { return std::max(a, b); }
 
 // Box2D v3's rules: rolling resistance is the larger coefficient times the larger rounding
 // radius (a lever arm), and the surfaces' tangent speeds add.
-float roundingRadius(const ShapeData& s) {
-    if (auto* c = std::get_if<Circle>(&s.geometry)) return c->radius;
-    if (auto* p = std::get_if<Polygon>(&s.geometry)) return p->radius;
-    if (auto* c = std::get_if<Capsule>(&s.geometry)) return c->radius;
-    return 0.0f;
-}
 // Flat surfaces meet at vertices, which are points of the bodies: their manifold may be kept
 // (manifold_reuse.hpp). A round surface's contact point rolls over it as the body turns.
 bool isFlat(const ShapeData& s) { return roundingRadius(s) == 0.0f; }
@@ -207,7 +201,7 @@ void World::Impl::updateContacts() {
         c.rollingResistance = mixRollingResistance(sa, sb);
         c.tangentSpeed = sa.tangentSpeed + sb.tangentSpeed;
         const bool wasTouching = c.touching;
-        if (!reuseManifold(c, ba, bb, def.contactReuseDistance)) takeManifold(c, collision.collide(c.a, ba.xf, c.b, bb.xf), ba, bb, isFlat(sa) && isFlat(sb));
+        if (!reuseManifold(c, ba, bb, def.contactReuseDistance)) takeManifold(c, collision.collide(c.a, ba.xf, c.b, bb.xf, def.box2dSkin), ba, bb, isFlat(sa) && isFlat(sb));
         c.touching = c.pointCount > 0;
         if (c.touching && preSolve && (sa.enablePreSolveEvents || sb.enablePreSolveEvents) && !preSolve(shapeId(c.a.shape), shapeId(c.b.shape), contactData(c))) {
             c.pointCount = 0;  // disabled for this step, and its manifold is not kept

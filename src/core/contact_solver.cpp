@@ -48,6 +48,8 @@ void prepareContacts(World::Impl& w, const StepContext& ctx) {
         c.massScale = softness.massScale;
         c.impulseScale = softness.impulseScale;
         c.pointCount = contact.pointCount;
+        c.turnsA = roundingRadius(w.shapes[contact.a.shape]) == 0.0f ? 1.0f : 0.0f;
+        c.turnsB = roundingRadius(w.shapes[contact.b.shape]) == 0.0f ? 1.0f : 0.0f;
 
         const Vec2 n = contact.normal, t = perp(n);
         const BodyState& sa = states[c.indexA];

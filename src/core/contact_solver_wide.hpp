@@ -33,6 +33,9 @@ struct ContactRows {
     F rollingResistance{}, tangentSpeed{};
     F rollingMass{}, rollingImpulse{};  // angular row: 1/(1/IA + 1/IB), accumulated λ
     F biasRate{}, massScale{}, impulseScale{};  // the row's Softness (softness.hpp)
+    // 1 where a body's surface is flat: its anchor is a point of the body and turns with it. 0 for a
+    // round surface, whose contact point stays under its centre as it rolls.
+    F turnsA{}, turnsB{};
     ContactPointRows<F> points[2];
 };
 
@@ -78,16 +81,18 @@ void solveContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, const Ste
     // Non-penetration: λn ≥ 0.
     F totalNormalImpulse = 0.0f;
     for (ContactPointRows<F>& cp : c.points) {
-        // Current separation without a new narrowphase: s = base + (ΔpB + rB' - ΔpA - rA')·n.
+        // Current separation without a new narrowphase: s = base + (ΔpB + rB' - ΔpA - rA')·n, with
+        // r' the anchor turned with its body where the surface is flat.
         const Vec2T<F> rA = cp.anchorA, rB = cp.anchorB;
-        const F s = cp.baseSeparation + dot(dp + rotate(b.dq, rB) - rotate(a.dq, rA), n);
+        const Vec2T<F> turnedA = rA + c.turnsA * (rotate(a.dq, rA) - rA), turnedB = rB + c.turnsB * (rotate(b.dq, rB) - rB);
+        const F s = cp.baseSeparation + dot(dp + turnedB - turnedA, n);
         // Speculative (s > 0): bias = s/hs, a rigid row that may close the gap this substep, no more.
         const simd::MaskOf<F> speculative = s > F(0.0f);
         F bias = select(speculative, s * F(ctx.invHs), F(0.0f));
         F massScale = 1.0f, impulseScale = 0.0f;
         if (useBias) {
-            // Push out only what exceeds the linear slop, so resting contacts stay touching.
-            const F push = max(c.biasRate * simd::min(s + F(collide::linearSlop), F(0.0f)), F(-ctx.maxBiasVelocity));
+            // Soft push-out of the overlap, at most maxBiasVelocity.
+            const F push = max(c.biasRate * simd::min(s + F(ctx.pushSlop), F(0.0f)), F(-ctx.maxBiasVelocity));
             bias = select(speculative, bias, push);
             massScale = select(speculative, massScale, c.massScale);
             impulseScale = select(speculative, impulseScale, c.impulseScale);

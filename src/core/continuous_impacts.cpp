@@ -29,7 +29,8 @@ namespace perpdot {
 
 namespace {
 
-constexpr int impulseSweeps = 8;      // passes over a manifold's (at most two) points
+constexpr int impulseSweeps = 64;     // passes over a manifold's (at most two) points: 8 left a 0.05 m box
+                                      // closing on a 1 m box (1 : 400) at 1.2 m/s after the impact
 constexpr int impactsPerMover = 4;    // bound on the impacts taken per step, per mover and per pair
 constexpr float coreFraction = 0.25f; // of the smallest extent: the disc swept when shapes touch at the start
 
@@ -191,8 +192,10 @@ void World::Impl::resolveImpact(const MoverPair& pair, float t, float h) {
     const ShapeData& shapeA = shapes[pair.keyA.shape];
     const ShapeData& shapeB = shapes[pair.keyB.shape];
     const bool swap = collide::CollisionSystem::mustSwap(shapeA.type, shapeB.type);
+    // Box2D's separations: the time of impact stops at Box2D's target distance in skin terms, and
+    // going back by the skin overlap leaves the pair a skin apart, never inside each other.
     const collide::Manifold manifold =
-        swap ? collision.collide(pair.keyB, xfB, pair.keyA, xfA) : collision.collide(pair.keyA, xfA, pair.keyB, xfB);
+        swap ? collision.collide(pair.keyB, xfB, pair.keyA, xfA, true) : collision.collide(pair.keyA, xfA, pair.keyB, xfB, true);
     if (manifold.pointCount == 0) {  // nothing to push on: both wait at the impact (continuous.cpp's answer)
         for (Mover* m : {&a, &b}) {
             restartAt(*m, t);

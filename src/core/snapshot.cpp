@@ -24,6 +24,11 @@ constexpr uint8_t magic[8] = {'P', 'E', 'R', 'P', 'D', 'O', 'T', 'S'};
 
 WorldDef readDef(ByteReader& in) {
     WorldDef d;
+    // Worlds saved before format 4 rested on Box2D's skin and rebuilt every manifold.
+    if (in.version < 4) {
+        d.box2dSkin = true;
+        d.contactReuseDistance = 0.0f;
+    }
     readFields(in, d);
     if (d.substeps < 1 || d.substeps > 64) in.fail("substeps " + std::to_string(d.substeps) + " is outside [1, 64]");
     return d;

@@ -16,7 +16,7 @@ namespace perpdot {
 
 // 1: joint type data as raw struct bytes. 2: every struct through its field list. 3: end events
 // raised between steps (a body or shape destroyed), which the next step reports. 4: kept
-// manifolds (manifold_reuse.hpp) and WorldDef::contactReuseDistance; older snapshots rebuild.
+// manifolds (manifold_reuse.hpp), WorldDef::contactReuseDistance and box2dSkin (older: true).
 constexpr uint32_t formatVersion = 4;
 
 // A struct whose layout changed must have its field list reviewed (then update the size here).
@@ -34,7 +34,7 @@ constexpr auto fields(const Softness*) {
 
 // --- world ---
 
-static_assert(reviewedLayout<WorldDef, 52>);
+static_assert(reviewedLayout<WorldDef, 56>);
 constexpr auto fields(const WorldDef*) {
     using D = WorldDef;
     return std::tuple{field("gravity", &D::gravity),
@@ -50,7 +50,8 @@ constexpr auto fields(const WorldDef*) {
                       field("enableSleep", &D::enableSleep),
                       field("enableWarmStarting", &D::enableWarmStarting),
                       field("enableContinuous", &D::enableContinuous),
-                      field("contactReuseDistance", &D::contactReuseDistance).since(4)};
+                      field("contactReuseDistance", &D::contactReuseDistance).since(4),
+                      field("box2dSkin", &D::box2dSkin).since(4)};
 }
 
 // Not listed: generation and alive (written by the pool), userData, shapes and contactHead

@@ -184,6 +184,7 @@ void World::Impl::solve(float h) {
     ctx.jointSoftness = makeSoftness(std::min(def.jointHertz, 0.25f * ctx.invHs), def.jointDampingRatio, ctx.hs);
     ctx.restitutionThreshold = def.restitutionThreshold;
     ctx.maxBiasVelocity = def.contactPushMaxVelocity;
+    ctx.pushSlop = def.box2dSkin ? collide::linearSlop : 0.0f;
     ctx.enableWarmStarting = def.enableWarmStarting;
 
     integrateVelocities(*this, ctx);

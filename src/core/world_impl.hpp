@@ -61,6 +61,15 @@ struct ShapeData {
     std::vector<int> proxies;  // broadphase proxy of each child
 };
 
+// The radius a shape's surface is rounded by (a circle's, a capsule's, a rounded polygon's), 0 for
+// flat surfaces: these meet other shapes at their vertices, which are points of the body.
+inline float roundingRadius(const ShapeData& s) {
+    if (auto* c = std::get_if<Circle>(&s.geometry)) return c->radius;
+    if (auto* p = std::get_if<Polygon>(&s.geometry)) return p->radius;
+    if (auto* c = std::get_if<Capsule>(&s.geometry)) return c->radius;
+    return 0.0f;
+}
+
 struct ContactPointState {
     Vec2 point;             // world, at the last narrowphase
     Vec2 anchorA, anchorB;  // from each body's centre of mass to the point

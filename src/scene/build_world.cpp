@@ -169,6 +169,7 @@ SceneBodies addToWorld(World& world, const Scene& scene) {
 SceneWorld buildWorld(const Scene& scene) {
     WorldDef def{.gravity = scene.gravity, .enableSleep = scene.enableSleep};
     if (scene.solver.substeps) def.substeps = *scene.solver.substeps;
+    def.box2dSkin = scene.solver.box2dSkin;
     SceneWorld built{.world = World(def), .scene = scene};
     SceneBodies added = addToWorld(built.world, scene);
     built.bodies = std::move(added.bodies);

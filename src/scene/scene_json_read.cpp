@@ -439,6 +439,7 @@ void readSolver(const Object& o, SceneSolver& solver) {
     if (o.has("substeps")) solver.substeps = static_cast<int>(o.integer("substeps", 0, 1, maxSubsteps));
     solver.velocityIterations = static_cast<int>(o.integer("velocity_iterations", solver.velocityIterations, 1, maxIterations));
     solver.positionIterations = static_cast<int>(o.integer("position_iterations", solver.positionIterations, 0, maxIterations));
+    solver.box2dSkin = o.boolean("box2d_skin", false);
 }
 
 Scene readScene(const Object& o) {

@@ -248,6 +248,7 @@ std::string toJson(const Scene& scene) {
     if (scene.solver.substeps) solver["substeps"] = *scene.solver.substeps;
     solver["velocity_iterations"] = scene.solver.velocityIterations;
     solver["position_iterations"] = scene.solver.positionIterations;
+    if (scene.solver.box2dSkin) solver["box2d_skin"] = true;
     header["solver"] = std::move(solver);
 
     std::string out = "{";

@@ -13,7 +13,7 @@ using KeyList = std::span<const std::string_view>;
 
 inline constexpr std::string_view root[] = {"format", "name",   "description", "gravity", "timestep",
                                             "steps",  "solver", "bodies",      "joints",  "actions"};
-inline constexpr std::string_view solver[] = {"substeps", "velocity_iterations", "position_iterations"};
+inline constexpr std::string_view solver[] = {"substeps", "velocity_iterations", "position_iterations", "box2d_skin"};
 inline constexpr std::string_view body[] = {"name", "type", "position", "angle", "linear_velocity", "angular_velocity",
                                             "linear_damping", "angular_damping", "gravity_scale", "fixed_rotation",
                                             "bullet", "allow_sleep", "shapes"};
