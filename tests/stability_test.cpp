@@ -95,7 +95,7 @@ int columnFallStep(const WorldDef& def, int steps) {
     return steps;
 }
 
-// The cause of tall stacks falling (docs/solver.md): a manifold rebuilt every step turns its normal
+// The cause of tall stacks falling (docs/stress.md): a manifold rebuilt every step turns its normal
 // with the lower box and moves its points with the upper box's corners, and the column's bending
 // grows ×2.2 a second until it topples (~7 s). Kept manifolds hold it for a minute.
 TEST(Stability, ThirtyBoxColumnFallsOnlyWhenManifoldsAreRebuiltEveryStep) {

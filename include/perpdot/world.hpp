@@ -36,7 +36,7 @@ struct WorldDef {
     bool enableContinuous = true;         ///< time of impact for fast bodies against static shapes
     /// m: a touching contact keeps its manifold (normal, anchors) while its bodies' relative pose
     /// moves its anchors less than this since the last narrowphase; 0 rebuilds every step, as
-    /// Box2D 2.4's b2World does. Kept manifolds are what hold tall stacks up (docs/solver.md).
+    /// Box2D 2.4's b2World does. Kept manifolds are what hold tall stacks up (docs/stress.md).
     float contactReuseDistance = 0.05f;
     /// Rest on Box2D 2.4's polygon skin as b2World does: polygons and segments keep 1 cm of skin
     /// each, so a 1 m box rests at 0.515 m (like-for-like cross-checks). Off (the default): contacts

@@ -4,7 +4,7 @@
 //   s = s₀ + ((cB − cA) + R(ΔθB) rB − R(ΔθA) rA) · n
 // A manifold rebuilt every step follows every small tilt of the bodies: the normal turns with one
 // body and the points move with the other's corners, and in a tall stack that feedback grows
-// into a bending mode that topples it (docs/solver.md, "Why tall stacks fell"). Box2D v3.2
+// into a bending mode that topples it (docs/stress.md, "Why tall stacks fell"). Box2D v3.2
 // keeps manifolds the same way ("contact recycling").
 #pragma once
 
