@@ -63,6 +63,16 @@ TEST(CrosscheckCli, DivergenceExitsOne) {
     EXPECT_NE(r.output.find("verdict: DIVERGED at step"), std::string::npos) << r.output;
 }
 
+TEST(CrosscheckCli, Box2DSkinComparesRestHeightsLikeForLike) {
+    // A box at rest: perpdot on its true surface is 0.014 m below b2World's box on its skin, beyond
+    // 1 cm; with --box2d-skin both rest on Box2D's skin and agree.
+    const Result own = perpdot("crosscheck stress_box_rest");
+    EXPECT_EQ(own.status, 1) << own.output;
+    const Result skinned = perpdot("crosscheck stress_box_rest --box2d-skin");
+    EXPECT_EQ(skinned.status, 0) << skinned.output;
+    EXPECT_EQ(perpdot("crosscheck stress_box_rest --box2d-skin 1").status, 2);  // a switch takes no value
+}
+
 TEST(CrosscheckCli, BadInputExitsTwo) {
     EXPECT_EQ(perpdot("crosscheck no_such_scene_anywhere").status, 2);
     EXPECT_EQ(perpdot("crosscheck " + gates + "projectile.json --tolerance -1").status, 2);

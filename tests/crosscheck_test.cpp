@@ -185,6 +185,20 @@ TEST(CrosscheckPhysics, StackRestsAtBox2DHeights) {
     EXPECT_EQ(r.perpdot.contactCount.back(), r.box2d.contactCount.back());
 }
 
+// The main job's summary says why the engines' rest heights differ and compares like for like.
+TEST(CrosscheckSummary, ExplainsTheSkinAndComparesLikeForLike) {
+    const Scene scene = findScene("stress_box_rest");
+    const std::string text = crosscheck::summarize(scene, 120);
+    EXPECT_NE(text.find("rest heights: perpdot rests 1 bodies 0.014"), std::string::npos) << text;
+    EXPECT_NE(text.find("Box2D 2.4 rests polygons on a 1 cm skin each"), std::string::npos) << text;
+    EXPECT_NE(text.find("like for like (perpdot on Box2D's skin, --box2d-skin): rest heights agree within"), std::string::npos) << text;
+    Scene skinned = scene;
+    skinned.solver.box2dSkin = true;
+    const std::string same = crosscheck::summarize(skinned, 120);
+    EXPECT_EQ(same.find("rest heights: perpdot rests"), std::string::npos) << same;
+    EXPECT_NE(same.find("on Box2D's skin (box2d_skin): rest heights agree within"), std::string::npos) << same;
+}
+
 // Dropped 1 cm, the box comes to rest with its 0.01 m skin touching the ground's, overlapping by at
 // most the 0.005 m linear slop: its centre between 0.515 and 0.52 m, in both engines.
 TEST(CrosscheckPhysics, BoxRestsOnGroundInBothEngines) {
