@@ -246,8 +246,7 @@ struct World::Impl {
     ContactData contactData(const Contact& c) const;
     void destroyContactsOf(int body, int shape);  // shape = -1: all of the body's contacts
 
-    // The step (solver.cpp, contact_solver.cpp, sleep.cpp)
-    void solve(float h);
+    // Stages of the step run by step.cpp (stages.hpp; contact_cache.cpp, sleep.cpp, continuous*.cpp)
     void updateSleep(float h);
     // Continuous collision (continuous.cpp): sweep a fast body from its step-start pose
     // (centre c0, angle a0) to its current one; moves it back to the earliest time of impact.

@@ -1,7 +1,5 @@
-// World::step: broadphase, narrowphase, then the soft-step solver.
-//
-// The rows run `substeps` times per step: forces, warm start, solve with soft bias, x += hs v,
-// relax without bias; then one restitution pass, and the impulses are kept for the next step.
+// The body stages of the step (stages.hpp): gather awake bodies and integrate their forces, apply
+// a substep's forces, x += hs v, and write the solver state back (with continuous collision).
 //
 // Forces are integrated semi-implicitly (v first, then x). A body with no touching contact and
 // no joint is integrated once per step in Box2D 2.4's order — v += h (g·gravityScale + F/m),
@@ -11,28 +9,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/world_impl.hpp"
+#include "core/stages.hpp"
 
 namespace perpdot {
-
-void World::step(float timeStep) {
-    Impl& w = *impl_;
-    if (!(timeStep > 0.0f) || !std::isfinite(timeStep) || w.locked) return;
-    // Unlocks however step() ends: an exception thrown by the user's pre-solve callback leaves
-    // the step unfinished but the world usable.
-    struct Lock {
-        bool& locked;
-        explicit Lock(bool& l) : locked(l) { locked = true; }
-        ~Lock() { locked = false; }
-    } lock(w.locked);
-    w.beginEvents();
-    w.updatePairs();
-    w.updateContacts();
-    w.solve(timeStep);
-    w.updateSleep(timeStep);
-    w.contactEndReported = w.contactEndEvents.size();
-    w.sensorEndReported = w.sensorEndEvents.size();
-}
 
 namespace {
 
@@ -43,6 +22,8 @@ void markTouching(World::Impl& w) {
     for (const Contact& c : w.contacts)
         if (c.alive && c.touching) w.touchingBodies[c.bodyA] = w.touchingBodies[c.bodyB] = 1;
 }
+
+}  // namespace
 
 // Gather awake bodies into the solver arrays and integrate forces: whole step for free bodies,
 // substep pieces (SubstepForces) for constrained ones.
@@ -92,6 +73,8 @@ void applySubstepForces(World::Impl& w) {
     }
 }
 
+namespace {
+
 // v scaled down to `maxSpeed` along its own direction. v·v overflows beyond 1.8e19 m/s: the
 // direction then comes from v divided by its largest component first.
 Vec2 clampSpeed(Vec2 v, float maxSpeed) {
@@ -103,6 +86,8 @@ Vec2 clampSpeed(Vec2 v, float maxSpeed) {
     }
     return v * (maxSpeed / len);
 }
+
+}  // namespace
 
 // x += hs v, θ += hs ω for one substep, with speeds clamped against blow-ups.
 void integratePositions(World::Impl& w, const StepContext& ctx) {
@@ -165,47 +150,6 @@ void finalizeBodies(World::Impl& w, float h) {
         b.force = {};
         b.torque = 0.0f;
     }
-}
-
-}  // namespace
-
-void World::Impl::solve(float h) {
-    StepContext ctx;
-    ctx.h = h;
-    ctx.invH = 1.0f / h;
-    ctx.substeps = def.substeps;
-    ctx.hs = h / static_cast<float>(def.substeps);
-    ctx.invHs = 1.0f / ctx.hs;
-    ctx.states = &states;
-    // Contact stiffness is capped at a quarter of the substep rate; static contacts are twice as stiff.
-    const float contactHertz = std::min(def.contactHertz, 0.25f * ctx.invHs);
-    ctx.contactSoftness = makeSoftness(contactHertz, def.contactDampingRatio, ctx.hs);
-    ctx.staticSoftness = makeSoftness(2.0f * contactHertz, def.contactDampingRatio, ctx.hs);
-    ctx.jointSoftness = makeSoftness(std::min(def.jointHertz, 0.25f * ctx.invHs), def.jointDampingRatio, ctx.hs);
-    ctx.restitutionThreshold = def.restitutionThreshold;
-    ctx.maxBiasVelocity = def.contactPushMaxVelocity;
-    ctx.pushSlop = def.box2dSkin ? collide::linearSlop : 0.0f;
-    ctx.enableWarmStarting = def.enableWarmStarting;
-
-    integrateVelocities(*this, ctx);
-    prepareJoints(*this, ctx);
-    prepareContacts(*this, ctx);
-    for (int i = 0; i < ctx.substeps; ++i) {
-        applySubstepForces(*this);
-        warmStartJoints(*this, ctx);
-        warmStartContacts(*this, ctx);
-        solveJoints(*this, ctx, true);
-        solveContacts(*this, ctx, true);
-        integratePositions(*this, ctx);
-        solveJoints(*this, ctx, false);
-        solveContacts(*this, ctx, false);
-    }
-    unpackContactBlocks(*this);
-    applyRestitution(*this, ctx);
-    storeJointImpulses(*this, ctx);
-    storeContactImpulses(*this);
-    reportHitEvents(*this);
-    finalizeBodies(*this, h);
 }
 
 }  // namespace perpdot

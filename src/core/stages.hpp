@@ -1,0 +1,25 @@
+// The stages of World::step (step.cpp), in the order it runs them, each a function of the world
+// and the step's context: the units the speed issue's threads will run. The contact and joint
+// stages are defined beside their rows (contact_solver*.cpp, joint*.cpp), the body stages in
+// integrate.cpp; pairs, narrowphase, continuous and sleep are World::Impl members.
+#pragma once
+
+#include "core/joint.hpp"
+#include "core/world_impl.hpp"
+
+namespace perpdot {
+
+// The step's constants: substep, softness of contact and joint rows, thresholds.
+StepContext makeStepContext(const World::Impl& w, float h);
+
+// Integrate velocities: gather the awake bodies into the solver arrays; free bodies take the
+// whole step's forces now, constrained ones per substep.
+void integrateVelocities(World::Impl& w, const StepContext& ctx);
+// A substep's share of the forces on the constrained bodies.
+void applySubstepForces(World::Impl& w);
+// Integrate positions: x += hs v, θ += hs ω.
+void integratePositions(World::Impl& w, const StepContext& ctx);
+// Store the solver state in the bodies and sweep the fast ones (continuous collision).
+void finalizeBodies(World::Impl& w, float h);
+
+}  // namespace perpdot

@@ -1,0 +1,73 @@
+// World::step, stage by stage (stages.hpp). The soft step of Box2D v3: the rows run `substeps`
+// times per step — forces, warm start, solve with soft bias, x += hs v, relax without bias — then
+// one restitution pass, and the impulses are kept for the next step's warm start.
+#include <algorithm>
+#include <cmath>
+
+#include "core/stages.hpp"
+
+namespace perpdot {
+
+StepContext makeStepContext(const World::Impl& w, float h) {
+    const WorldDef& def = w.def;
+    StepContext ctx;
+    ctx.h = h;
+    ctx.invH = 1.0f / h;
+    ctx.substeps = def.substeps;
+    ctx.hs = h / static_cast<float>(def.substeps);
+    ctx.invHs = 1.0f / ctx.hs;
+    // Contact stiffness is capped at a quarter of the substep rate; static contacts are twice as stiff.
+    const float contactHertz = std::min(def.contactHertz, 0.25f * ctx.invHs);
+    ctx.contactSoftness = makeSoftness(contactHertz, def.contactDampingRatio, ctx.hs);
+    ctx.staticSoftness = makeSoftness(2.0f * contactHertz, def.contactDampingRatio, ctx.hs);
+    ctx.jointSoftness = makeSoftness(std::min(def.jointHertz, 0.25f * ctx.invHs), def.jointDampingRatio, ctx.hs);
+    ctx.restitutionThreshold = def.restitutionThreshold;
+    ctx.maxBiasVelocity = def.contactPushMaxVelocity;
+    ctx.pushSlop = def.box2dSkin ? collide::linearSlop : 0.0f;
+    ctx.enableWarmStarting = def.enableWarmStarting;
+    return ctx;
+}
+
+void World::step(float timeStep) {
+    Impl& w = *impl_;
+    if (!(timeStep > 0.0f) || !std::isfinite(timeStep) || w.locked) return;
+    // Unlocks however step() ends: an exception thrown by the user's pre-solve callback leaves
+    // the step unfinished but the world usable.
+    struct Lock {
+        bool& locked;
+        explicit Lock(bool& l) : locked(l) { locked = true; }
+        ~Lock() { locked = false; }
+    } lock(w.locked);
+    w.beginEvents();
+
+    w.updatePairs();     // pairs: proxies that left their fat AABB meet new partners
+    w.updateContacts();  // narrowphase: each contact keeps its manifold or takes a new one
+
+    StepContext ctx = makeStepContext(w, timeStep);
+    ctx.states = &w.states;
+    integrateVelocities(w, ctx);
+    prepareJoints(w, ctx);  // prepare: effective masses, anchors, warm-start impulses
+    prepareContacts(w, ctx);
+    for (int i = 0; i < ctx.substeps; ++i) {
+        applySubstepForces(w);
+        warmStartJoints(w, ctx);
+        warmStartContacts(w, ctx);
+        solveJoints(w, ctx, true);  // solve, with soft bias
+        solveContacts(w, ctx, true);
+        integratePositions(w, ctx);
+        solveJoints(w, ctx, false);  // relax: the same rows without bias
+        solveContacts(w, ctx, false);
+    }
+    unpackContactBlocks(w);
+    applyRestitution(w, ctx);  // restitution: Hecker's bounce, once per step
+    storeJointImpulses(w, ctx);  // store: impulses for the next step's warm start
+    storeContactImpulses(w);
+    reportHitEvents(w);
+    finalizeBodies(w, timeStep);  // positions back into the bodies; continuous collision
+
+    w.updateSleep(timeStep);  // sleep: islands at rest
+    w.contactEndReported = w.contactEndEvents.size();
+    w.sensorEndReported = w.sensorEndEvents.size();
+}
+
+}  // namespace perpdot
