@@ -219,11 +219,7 @@ void CollisionSystem::shiftOrigin(Vec2 newOrigin) {
 
 namespace {
 
-// The part of Box2D's skin a polygon or segment keeps as a rest gap: a box resting on a row of
-// separate tiles then slides over their seams without catching a tile's side face (docs/stress.md).
-constexpr float keptSkin = 0.1f * linearSlop;
-
-// How much of a shape's b2 radius perpdot does not count as surface: Box2D's skin less keptSkin.
+// What perpdot adds to a b2 shape's separations (collision.hpp's skinOffset, by b2 type).
 float skin(const b2Shape& shape) {
     return shape.m_type == b2Shape::e_circle || isCapsule(shape) ? 0.0f : polygonRadius - keptSkin;
 }

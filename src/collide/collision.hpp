@@ -14,6 +14,16 @@ namespace perpdot::collide {
 // Box2D's tolerances, kept so perpdot and Box2D rest bodies at the same separations.
 inline constexpr float linearSlop = 0.005f;
 inline constexpr float polygonRadius = 2.0f * linearSlop;  // Box2D 2.4's collision skin of polygons and segments
+// The part of Box2D's skin a polygon or segment keeps as a rest gap: a box resting on a row of
+// separate tiles then slides over their seams without catching a tile's side face (docs/stress.md).
+inline constexpr float keptSkin = 0.1f * linearSlop;
+
+// Box2D 2.4's skin around a shape: polygons, segments and chains have one, circles and capsules not.
+constexpr float box2dSkin(ShapeType type) {
+    return type == ShapeType::Polygon || type == ShapeType::Segment || type == ShapeType::Chain ? polygonRadius : 0.0f;
+}
+// What perpdot adds to Box2D's separations for a shape: its skin less keptSkin.
+constexpr float skinOffset(ShapeType type) { return box2dSkin(type) > 0.0f ? box2dSkin(type) - keptSkin : 0.0f; }
 
 struct ManifoldPoint {
     Vec2 point;               // world, midway between the two surfaces

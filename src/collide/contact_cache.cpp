@@ -201,7 +201,13 @@ void World::Impl::updateContacts() {
         c.rollingResistance = mixRollingResistance(sa, sb);
         c.tangentSpeed = sa.tangentSpeed + sb.tangentSpeed;
         const bool wasTouching = c.touching;
-        if (!reuseManifold(c, ba, bb, def.contactReuseDistance)) takeManifold(c, collision.collide(c.a, ba.xf, c.b, bb.xf, def.box2dSkin), ba, bb, isFlat(sa) && isFlat(sb));
+        const ReuseLimits limits{.distance = def.contactReuseDistance,
+                                 .reach = c.pointCount > 0 ? 0.0f  // only used without points
+                                                           : std::max(sa.maxExtent + length(ba.localCenter), sb.maxExtent + length(bb.localCenter)),
+                                 .box2dMargin = collide::box2dSkin(sa.type) + collide::box2dSkin(sb.type),
+                                 .skinOffset = def.box2dSkin ? 0.0f : collide::skinOffset(sa.type) + collide::skinOffset(sb.type)};
+        if (!reuseManifold(c, ba, bb, limits))
+            takeManifold(c, collision.collide(c.a, ba.xf, c.b, bb.xf, def.box2dSkin), ba, bb, isFlat(sa) && isFlat(sb));
         c.touching = c.pointCount > 0;
         if (c.touching && preSolve && (sa.enablePreSolveEvents || sb.enablePreSolveEvents) && !preSolve(shapeId(c.a.shape), shapeId(c.b.shape), contactData(c))) {
             c.pointCount = 0;  // disabled for this step, and its manifold is not kept

@@ -15,16 +15,21 @@ constexpr float maxTurn = 0.1f;
 
 }  // namespace
 
-bool reuseManifold(Contact& c, const Body& a, const Body& b, float tolerance) {
-    if (!c.reuseValid || c.pointCount == 0 || !(tolerance > 0.0f)) return false;
+bool reuseManifold(Contact& c, const Body& a, const Body& b, const ReuseLimits& limits) {
+    if (!c.reuseValid || !(limits.distance > 0.0f)) return false;
     const float turnA = a.angle - c.reuseAngleA, turnB = b.angle - c.reuseAngleB;
     if (!(std::fabs(turnA) < maxTurn && std::fabs(turnB) < maxTurn)) return false;
-    // Travel of the farthest anchor relative to A: the drift of B's centre plus |r| |Δθ_rel|.
-    float reach = 0.0f;
+    // Travel of the farthest surface point relative to A: the drift of B's centre plus |r| |Δθ_rel|,
+    // r the anchors of a kept manifold, or the shapes' reach when there are no points.
+    float reach = c.pointCount == 0 ? limits.reach : 0.0f;
     for (int i = 0; i < c.pointCount; ++i)
         reach = std::max({reach, length(c.points[i].anchorA), length(c.points[i].anchorB)});
     const float drift = length(relativeOffset(a, b) - c.reuseOffset) + reach * std::fabs(turnB - turnA);
+    // Apart, the shapes were more than Box2D's margin apart: travelling less than half of it they
+    // stay apart (and reach the speculative margin with half of it to spare).
+    const float tolerance = c.pointCount == 0 ? std::min(limits.distance, 0.5f * limits.box2dMargin) : limits.distance;
     if (!(drift < tolerance)) return false;
+    if (c.pointCount == 0) return true;
 
     const Rot qA = Rot::fromAngle(turnA), qB = Rot::fromAngle(turnB);
     Vec2 points[2];
@@ -35,7 +40,7 @@ bool reuseManifold(Contact& c, const Body& a, const Body& b, float tolerance) {
         const Vec2 pointB = b.center + rotate(qB, p.anchorB);
         separations[i] = p.baseSeparation + dot(pointB - pointA, c.normal);
         // A new narrowphase would drop a point whose skins no longer overlap (and end the touch).
-        if (!(separations[i] <= 0.0f)) return false;
+        if (!(separations[i] <= limits.skinOffset)) return false;
         points[i] = 0.5f * (pointA + pointB);
     }
     for (int i = 0; i < c.pointCount; ++i) {
@@ -46,9 +51,9 @@ bool reuseManifold(Contact& c, const Body& a, const Body& b, float tolerance) {
 }
 
 void rememberManifoldPose(Contact& c, const Body& a, const Body& b, bool keepable) {
-    // Only two-point manifolds: a kept manifold never gains a point, so one with a single point
+    // Two-point manifolds, or none: a kept manifold never gains a point, so one with a single point
     // would miss the second corner coming down until the pose moved past the tolerance.
-    c.reuseValid = keepable && c.pointCount == 2;
+    c.reuseValid = c.pointCount == 0 || (keepable && c.pointCount == 2);
     c.reuseOffset = relativeOffset(a, b);
     c.reuseAngleA = a.angle;
     c.reuseAngleB = b.angle;
