@@ -3,6 +3,7 @@
 #include "collide/time_of_impact.hpp"
 
 #include "collide/capsule_b2.hpp"
+#include "collide/polygon_b2.hpp"
 
 #include <box2d/b2_circle_shape.h>
 #include <box2d/b2_collision.h>
@@ -57,25 +58,6 @@ b2EdgeShape toB2(const Segment& segment) {
     return e;
 }
 
-// perpdot polygons are already validated convex and counter-clockwise (makePolygon), so they go to
-// Box2D as they are: b2PolygonShape::Set would re-run its own hull with other tolerances, and it
-// asserts on thin polygons that pass perpdot's checks (a fuzz finding).
-b2PolygonShape toB2(const Polygon& polygon) {
-    const int n = polygon.count;
-    b2PolygonShape p;
-    p.m_count = n;
-    for (int i = 0; i < n; ++i) {
-        const Vec2 edge = polygon.vertices[(i + 1) % n] - polygon.vertices[i];
-        p.m_vertices[i] = toB2(polygon.vertices[i]);
-        p.m_normals[i] = toB2(normalize(Vec2{edge.y, -edge.x}));  // outward for counter-clockwise
-    }
-    Polygon core = polygon;
-    core.radius = 0.0f;
-    p.m_centroid = toB2(computeMass(core, 1.0f).center);
-    p.m_radius = polygonRadius + polygon.radius;
-    return p;
-}
-
 // Box2D's dispatch order: circle < polygon < edge.
 int rank(ShapeType t) {
     switch (t) {
@@ -106,7 +88,7 @@ CollisionSystem::CollisionSystem() : impl_(std::make_unique<Impl>()) {}
 CollisionSystem::~CollisionSystem() = default;
 
 void CollisionSystem::setGeometry(int shape, const Circle& circle) { impl_->slot(shape) = toB2(circle); }
-void CollisionSystem::setGeometry(int shape, const Polygon& polygon) { impl_->slot(shape) = toB2(polygon); }
+void CollisionSystem::setGeometry(int shape, const Polygon& polygon) { impl_->slot(shape) = polygonToB2(polygon); }
 
 void CollisionSystem::setGeometry(int shape, const Segment& segment) { impl_->slot(shape) = toB2(segment); }
 void CollisionSystem::setGeometry(int shape, const Capsule& capsule) { impl_->slot(shape) = capsuleToB2(capsule); }
@@ -297,7 +279,7 @@ bool CollisionSystem::testOverlap(ChildKey a, const Transform& xfA, const Circle
 }
 
 bool CollisionSystem::testOverlap(ChildKey a, const Transform& xfA, const Polygon& query, const Transform& xf) const {
-    return overlap(childShape(impl_->geometry[a.shape], a.child), toB2(xfA), toB2(query), toB2(xf));
+    return overlap(childShape(impl_->geometry[a.shape], a.child), toB2(xfA), polygonToB2(query), toB2(xf));
 }
 
 bool CollisionSystem::testPoint(int shape, const Transform& xf, Vec2 point) const {
@@ -365,7 +347,7 @@ bool CollisionSystem::shapeCast(ChildKey key, const Transform& xfKey, const Circ
 
 bool CollisionSystem::shapeCast(ChildKey key, const Transform& xfKey, const Polygon& query, const Transform& xf,
                                 Vec2 translation, ShapeCastResult& result) const {
-    const b2PolygonShape shape = toB2(query);
+    const b2PolygonShape shape = polygonToB2(query);
     return shapeCastOf(childShape(impl_->geometry[key.shape], key.child), 0, toB2(xfKey), shape, toB2(xf), translation, result);
 }
 

@@ -6,6 +6,7 @@
 #include <unordered_map>
 
 #include "collide/capsule_b2.hpp"
+#include "collide/polygon_b2.hpp"
 #include "crosscheck/stepper.hpp"
 #include "perpdot/error.hpp"
 #include "perpdot/shapes.hpp"
@@ -85,15 +86,11 @@ void createFixture(b2Body* body, const SceneShape& s) {
         return;
     }
     case SceneShape::Kind::Polygon: {
-        // perpdot's validation and winding, so both engines get the same counter-clockwise vertices.
-        const Polygon polygon = makePolygon(s.vertices, s.radius);
-        b2Vec2 v[b2_maxPolygonVertices];
-        for (int i = 0; i < polygon.count; ++i) v[i] = toB2(polygon.vertices[size_t(i)]);
-        b2PolygonShape shape;
-        shape.Set(v, polygon.count);
+        // perpdot's validated polygon as it is, as the collide adapter hands it to Box2D:
+        // b2PolygonShape::Set re-runs its own hull and asserts on thin polygons perpdot accepts.
         // Box2D 2.4 has no rounded polygons: the rounding joins the skin radius for collision,
         // and the mass (which Box2D computes from the core polygon only) is set by roundedMass().
-        shape.m_radius += polygon.radius;
+        const b2PolygonShape shape = collide::polygonToB2(makePolygon(s.vertices, s.radius));
         const b2FixtureDef def = fixtureDef(s, &shape);
         body->CreateFixture(&def);
         return;
@@ -284,10 +281,32 @@ b2Joint* createJoint(b2World& world, const SceneJoint& j, b2Body* a, b2Body* b, 
     throw Error("joints: mouse joints are interactive and not part of the scene format");
 }
 
+// b2ChainShape asserts (aborts) unless every edge, a loop's closing one included (its fixture's
+// clone checks it), is longer than Box2D's linear slop; perpdot accepts edges of exactly the slop
+// and a loop's short closing edge. Refused here with the shape's path instead.
+void checkChainsForBox2D(const Scene& fragment) {
+    for (size_t i = 0; i < fragment.bodies.size(); ++i)
+        for (size_t k = 0; k < fragment.bodies[i].shapes.size(); ++k) {
+            const SceneShape& s = fragment.bodies[i].shapes[k];
+            if (s.kind != SceneShape::Kind::Chain) continue;
+            const size_t n = s.vertices.size(), edges = s.loop ? n : n - 1;
+            for (size_t e = 0; e < edges; ++e) {
+                const size_t next = (e + 1) % n;
+                if (b2DistanceSquared(toB2(s.vertices[e]), toB2(s.vertices[next])) > b2_linearSlop * b2_linearSlop) continue;
+                throw Error("bodies[" + std::to_string(i) + "].shapes[" + std::to_string(k) + "]: Box2D 2.4 cannot build this chain: vertices " +
+                            std::to_string(e) + " and " + std::to_string(next) +
+                            " are not more than its linear slop (0.005 m) apart (perpdot runs it; only the cross-check refuses it)");
+            }
+        }
+}
+
 }  // namespace
 
 Box2DScene::Box2DScene(const Scene& scene)
     : scene_(scene), world_(std::make_unique<b2World>(toB2(scene.gravity))) {
+    // Box2D asserts on definitions perpdot refuses with an Error (a gear on a weld joint, a joint
+    // between a body and itself, ...): let perpdot's checks speak first.
+    (void)buildWorld(scene_);
     world_->SetAllowSleeping(scene.enableSleep);
     bodies_ = add(scene_);
     const NameIndex index(scene_);
@@ -297,6 +316,7 @@ Box2DScene::Box2DScene(const Scene& scene)
 }
 
 std::vector<b2Body*> Box2DScene::add(const Scene& fragment) {
+    checkChainsForBox2D(fragment);
     std::vector<b2Body*> bodies;
     for (const SceneBody& b : fragment.bodies) {
         const b2BodyDef def = bodyDef(b);
