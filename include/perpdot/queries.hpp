@@ -19,6 +19,19 @@ struct RayHit {
     float fraction = 0.0f;  ///< t of the hit point along the translation
 };
 
+/// A radial impulse for World::explode. A shape of a dynamic body whose true surface comes within
+/// `radius` of `position` takes the impulse impulse·(1 − d/radius) at its surface point nearest
+/// the centre, d away, pointing from the centre to that point (from the centre to the body's centre
+/// of mass when the centre is inside the shape): linear falloff, nothing at `radius` and beyond.
+/// Off-centre points also spin the body: Δω = perpDot(p − c, J)/I.
+struct ExplosionDef {
+    Vec2 position;                 ///< the centre, world
+    float radius = 1.0f;           ///< m, > 0
+    float impulse = 1.0f;          ///< N·s on a shape at the centre, ≥ 0
+    bool blockedByStatic = false;  ///< a shape whose nearest point is hidden from the centre by a static shape takes nothing
+    Filter filter{};               ///< shapes pushed: those with shouldCollide(filter, shape's filter)
+};
+
 /// A shape to sweep with World::castShape: a circle, a convex polygon (a box from makeBox) or a
 /// segment, in its own frame; the cast places it at a transform.
 using CastShape = std::variant<Circle, Polygon, Segment>;

@@ -222,6 +222,11 @@ public:
     std::vector<ShapeCastHit> castShape(const CastShape& shape, const Transform& xf, Vec2 translation,
                                         const Filter& filter = {}) const;
 
+    /// Applies the explosion to every dynamic body shape it reaches (see ExplosionDef) and wakes
+    /// them; returns how many shapes it pushed. Throws perpdot::Error for a non-finite position,
+    /// a radius not > 0 or a negative or non-finite impulse.
+    int explode(const ExplosionDef& def);
+
     // --- character movers (perpdot/mover.hpp) ---
     /// Create a mover's kinematic capsule body with its capsule centre at `position`; Error on an
     /// invalid MoverDef or position.

@@ -305,6 +305,28 @@ CoreDistance CollisionSystem::coreDistance(ChildKey a, const Transform& xfA, Chi
     return {fromB2(output.pointA), fromB2(output.pointB), output.distance, shapeA.m_radius, shapeB.m_radius};
 }
 
+CollisionSystem::SurfacePoint CollisionSystem::closestSurfacePoint(ChildKey key, const Transform& xf, Vec2 point) const {
+    const b2Shape& shape = childShape(impl_->geometry[key.shape], key.child);
+    b2DistanceInput input;
+    input.proxyA.Set(&shape, 0);  // a chain child is already its own edge
+    const b2Vec2 p = toB2(point);
+    input.proxyB.m_vertices = &p;
+    input.proxyB.m_count = 1;
+    input.proxyB.m_radius = 0.0f;
+    input.transformA = toB2(xf);
+    input.transformB = b2Transform(b2Vec2(0.0f, 0.0f), b2Rot(0.0f));
+    input.useRadii = false;
+    b2SimplexCache cache;
+    cache.count = 0;
+    b2DistanceOutput output;
+    b2Distance(&output, &cache, &input);
+    const float rounding = shape.m_radius - (shape.m_type == b2Shape::e_circle || isCapsule(shape) ? 0.0f : polygonRadius);
+    if (!(output.distance > rounding)) return {point, 0.0f};
+    const Vec2 core = fromB2(output.pointA);
+    const Vec2 toPoint = (1.0f / output.distance) * (point - core);
+    return {core + rounding * toPoint, output.distance - rounding};
+}
+
 bool CollisionSystem::rayCast(ChildKey key, const Transform& xf, Vec2 p1, Vec2 p2, float maxFraction, RayCastResult& result) const {
     b2RayCastInput input{toB2(p1), toB2(p2), maxFraction};
     b2RayCastOutput output;

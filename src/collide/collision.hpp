@@ -134,6 +134,13 @@ public:
 
     // b2Distance between two children's cores.
     CoreDistance coreDistance(ChildKey a, const Transform& xfA, ChildKey b, const Transform& xfB) const;
+    // The point of a child's true surface nearest to `point` (b2Distance to a one-vertex proxy, less
+    // the shape's rounding), and how far away it is; `point` itself at distance 0 when inside.
+    struct SurfacePoint {
+        Vec2 point;
+        float distance = 0.0f;
+    };
+    SurfacePoint closestSurfacePoint(ChildKey key, const Transform& xf, Vec2 point) const;
 
     // The ray p1 -> p2 against one child; a hit below maxFraction fills `result`.
     bool rayCast(ChildKey key, const Transform& xf, Vec2 p1, Vec2 p2, float maxFraction, RayCastResult& result) const;
