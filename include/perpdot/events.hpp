@@ -58,6 +58,20 @@ struct SensorEvents {
     std::span<const SensorEndTouchEvent> endEvents;      ///< shapes that left a sensor
 };
 
+/// A joint whose reaction passed its break limits (World::setJointBreakLimits) at the end of a step.
+struct JointBreakEvent {
+    JointId joint;          ///< the joint; stale if it was destroyed
+    Vec2 force;             ///< its reaction force on body B, N
+    float torque = 0.0f;    ///< its reaction torque on body B, N·m
+    bool destroyed = false; ///< whether the step destroyed it (its break limits said so)
+    void* userData = nullptr;  ///< the joint's userData
+};
+
+/// The joint events of the last step; the span stays valid until the next step().
+struct JointEvents {
+    std::span<const JointBreakEvent> breakEvents;  ///< joints that broke
+};
+
 /// Called during step()'s narrowphase for every touching contact where either shape has
 /// ShapeDef::enablePreSolveEvents; return false to disable the contact for this step. The world is
 /// locked: creating or destroying anything throws perpdot::Error.

@@ -185,6 +185,11 @@ public:
     BodyId jointBodyB(JointId joint) const;  ///< The definition's bodyB.
     Vec2 jointAnchorA(JointId joint) const;  ///< world
     Vec2 jointAnchorB(JointId joint) const;  ///< world
+    /// The joint breaks when, at the end of a step, its reaction force exceeds `maxForce` N or its
+    /// reaction torque exceeds `maxTorque` N·m (infinity: never): a JointBreakEvent is reported,
+    /// and the joint is destroyed then if `destroy`. Error for a negative or NaN limit.
+    void setJointBreakLimits(JointId joint, float maxForce, float maxTorque, bool destroy = true);
+    JointEvents jointEvents() const;  ///< Joint break events of the last step.
     Vec2 jointReactionForce(JointId joint) const;   ///< on B, N, from the last step
     float jointReactionTorque(JointId joint) const; ///< on B, N·m, from the last step
     void setMouseTarget(JointId joint, Vec2 target);  ///< Mouse joints: the world target.

@@ -24,6 +24,7 @@ ContactData World::Impl::contactData(const Contact& c) const {
 void World::Impl::beginEvents() {
     contactBeginEvents.clear();
     contactHitEvents.clear();
+    jointBreakEvents.clear();
     sensorBeginEvents.clear();
     contactEndEvents.erase(contactEndEvents.begin(), contactEndEvents.begin() + static_cast<std::ptrdiff_t>(contactEndReported));
     sensorEndEvents.erase(sensorEndEvents.begin(), sensorEndEvents.begin() + static_cast<std::ptrdiff_t>(sensorEndReported));
@@ -69,6 +70,8 @@ ContactEvents World::contactEvents() const {
 }
 
 SensorEvents World::sensorEvents() const { return {impl_->sensorBeginEvents, impl_->sensorEndEvents}; }
+
+JointEvents World::jointEvents() const { return {impl_->jointBreakEvents}; }
 
 void World::setPreSolve(PreSolveFn callback) {
     impl_->checkUnlocked("setPreSolve");

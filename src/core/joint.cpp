@@ -403,6 +403,33 @@ float World::jointReactionTorque(JointId id) const {
     return store(*impl_).invHs * reactionOf(checkedJoint(*impl_, id)).angular;
 }
 
+void World::setJointBreakLimits(JointId id, float maxForce, float maxTorque, bool destroy) {
+    impl_->checkUnlocked("setJointBreakLimits");
+    Joint& j = checkedJoint(*impl_, id);
+    if (!(maxForce >= 0.0f)) throw Error("setJointBreakLimits: maxForce must be >= 0 (infinity: never breaks)");
+    if (!(maxTorque >= 0.0f)) throw Error("setJointBreakLimits: maxTorque must be >= 0 (infinity: never breaks)");
+    j.breakForce = maxForce;
+    j.breakTorque = maxTorque;
+    j.destroyOnBreak = destroy;
+}
+
+// A joint breaks when |F| > breakForce or |τ| > breakTorque, F and τ its reaction on B over the
+// step's last substep (the accumulated impulses / hs, as jointReactionForce reports them).
+void breakJoints(World::Impl& w) {
+    JointStore& s = store(w);
+    for (int index = 0; index < static_cast<int>(s.joints.size()); ++index) {
+        const Joint& j = s.joints[index];
+        if (!j.alive || (std::isinf(j.breakForce) && std::isinf(j.breakTorque))) continue;
+        if (!w.bodies[j.bodyA].awake && !w.bodies[j.bodyB].awake) continue;  // asleep: nothing changed
+        const JointReaction r = reactionOf(j);
+        const Vec2 force = s.invHs * r.linear;
+        const float torque = s.invHs * r.angular;
+        if (!(length(force) > j.breakForce) && !(std::fabs(torque) > j.breakTorque)) continue;
+        w.jointBreakEvents.push_back({jointId(w, j), force, torque, j.destroyOnBreak, j.userData});
+        if (j.destroyOnBreak) removeJoint(w, index);
+    }
+}
+
 void World::setMouseTarget(JointId id, Vec2 target) {
     impl_->checkUnlocked("setMouseTarget");
     Joint& j = checkedJoint(*impl_, id);

@@ -21,6 +21,10 @@ void warmStartJoints(World::Impl& world, const StepContext& ctx);
 void solveJoints(World::Impl& world, const StepContext& ctx, bool useBias);
 void storeJointImpulses(World::Impl& world, const StepContext& ctx);
 
+// Reports (and destroys, where asked) the joints whose reaction passed their break limits this
+// step; run after storeJointImpulses.
+void breakJoints(World::Impl& world);
+
 // False when a joint between the two bodies has collideConnected == false.
 bool jointAllowsCollision(const World::Impl& world, int bodyA, int bodyB);
 // Destroys every joint attached to the body (called before the body goes).

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <limits>
 #include <memory>
 #include <type_traits>
 #include <vector>
@@ -153,6 +154,9 @@ struct Joint {
     JointEdge edges[2];        // in bodyA's list (side 0) and bodyB's (side 1)
     Vec2 localAnchorA, localAnchorB;  // in each body's origin frame
     float referenceAngle = 0;  // θB − θA at zero joint angle (motor joint: angularOffset)
+    // Break limits (World::setJointBreakLimits): reaction force N and torque N·m; infinity never breaks.
+    float breakForce = std::numeric_limits<float>::infinity(), breakTorque = std::numeric_limits<float>::infinity();
+    bool destroyOnBreak = false;
     void* userData = nullptr;
     JointData data;
 };

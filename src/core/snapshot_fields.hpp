@@ -16,7 +16,8 @@ namespace perpdot {
 
 // 1: joint type data as raw struct bytes. 2: every struct through its field list. 3: end events
 // raised between steps (a body or shape destroyed), which the next step reports. 4: kept
-// manifolds (manifold_reuse.hpp), WorldDef::contactReuseDistance and box2dSkin (older: true).
+// manifolds (manifold_reuse.hpp), WorldDef::contactReuseDistance and box2dSkin (older: true),
+// joints' break limits.
 constexpr uint32_t formatVersion = 4;
 
 // A struct whose layout changed must have its field list reviewed (then update the size here).
@@ -153,7 +154,7 @@ constexpr auto fields(const Contact*) {
 // --- joints: any float bits; each type's list in declaration order (format 1 was raw bytes) ---
 
 // Not listed: generation, alive, edges (written as body lists), userData; data (by type, below).
-static_assert(reviewedLayout<Joint, 136>);
+static_assert(reviewedLayout<Joint, 144>);
 constexpr auto fields(const Joint*) {
     return std::tuple{field("type", &Joint::type),
                       field("collideConnected", &Joint::collideConnected),
@@ -161,7 +162,10 @@ constexpr auto fields(const Joint*) {
                       field("bodyB", &Joint::bodyB),
                       field("localAnchorA", &Joint::localAnchorA).anyBits(),
                       field("localAnchorB", &Joint::localAnchorB).anyBits(),
-                      field("referenceAngle", &Joint::referenceAngle).anyBits()};
+                      field("referenceAngle", &Joint::referenceAngle).anyBits(),
+                      field("breakForce", &Joint::breakForce).anyBits().since(4),
+                      field("breakTorque", &Joint::breakTorque).anyBits().since(4),
+                      field("destroyOnBreak", &Joint::destroyOnBreak).since(4)};
 }
 
 static_assert(reviewedLayout<RevoluteJoint, 44>);

@@ -64,6 +64,7 @@ void World::step(float timeStep) {
     storeContactImpulses(w);
     reportHitEvents(w);
     finalizeBodies(w, timeStep);  // positions back into the bodies; continuous collision
+    breakJoints(w);               // joints whose reaction passed their break limits
 
     w.updateSleep(timeStep);  // sleep: islands at rest
     w.contactEndReported = w.contactEndEvents.size();

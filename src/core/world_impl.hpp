@@ -180,6 +180,7 @@ struct World::Impl {
     std::vector<ContactBeginTouchEvent> contactBeginEvents;
     std::vector<ContactEndTouchEvent> contactEndEvents;
     std::vector<ContactHitEvent> contactHitEvents;
+    std::vector<JointBreakEvent> jointBreakEvents;
     std::vector<SensorBeginTouchEvent> sensorBeginEvents;
     std::vector<SensorEndTouchEvent> sensorEndEvents;
     size_t contactEndReported = 0, sensorEndReported = 0;
