@@ -86,5 +86,15 @@ TEST(CrosscheckRefuses, APulleyWithRatioZero) {
     expectRefused(s, "joints[0]: PulleyJointDef.ratio must be > 0");
 }
 
+// Box2D 2.4 has no breakable joints: a scene with break limits cannot be compared.
+TEST(CrosscheckRefuses, BreakableJoints) {
+    try {
+        (void)crosscheck::run(findScene("breakable_bridge"));
+        ADD_FAILURE() << "cross-checked a scene with breakable joints";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("Box2D 2.4 has no breakable joints"), std::string::npos) << e.what();
+    }
+}
+
 }  // namespace
 }  // namespace perpdot

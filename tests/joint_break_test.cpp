@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "perpdot/error.hpp"
+#include "perpdot/scene.hpp"
 #include "perpdot/world.hpp"
 #include "physics_scenes.hpp"
 
@@ -132,6 +133,26 @@ TEST(JointBreak, RefusesBadLimitsAndSurvivesASnapshot) {
     h.world.step(dt);
     EXPECT_EQ(restored.jointEvents().breakEvents.size(), h.world.jointEvents().breakEvents.size());
     EXPECT_EQ(restored.jointEvents().breakEvents.size(), 1u);
+}
+
+// The built-in scene: hinges that break above 800 N; the settling deck alone pulls them up to about
+// 400 N, with the 80 kg anvil on it 1,560 N.
+TEST(JointBreak, TheBreakableBridgeSnapsUnderTheAnvil) {
+    SceneWorld built = buildWorld(findScene("breakable_bridge"));
+    int breaks = 0;
+    for (int i = 0; i < 240; ++i) {
+        built.step();
+        breaks += static_cast<int>(built.world.jointEvents().breakEvents.size());
+    }
+    EXPECT_GT(breaks, 0);
+    EXPECT_LT(built.world.position(built.bodies.back()).y, 2.0f) << "the anvil went through the deck";
+    Scene calm = findScene("breakable_bridge");
+    calm.bodies.pop_back();  // no anvil
+    SceneWorld quiet = buildWorld(calm);
+    for (int i = 0; i < 240; ++i) {
+        quiet.step();
+        ASSERT_TRUE(quiet.world.jointEvents().breakEvents.empty()) << "broke without the anvil at step " << i;
+    }
 }
 
 }  // namespace

@@ -97,6 +97,9 @@ struct SceneJoint {
     Vec2 groundAnchorB{};  ///< pulley: world point the rope to B hangs from
     std::optional<float> lengthA{};  ///< pulley; default: current rope length on A's side
     std::optional<float> lengthB{};  ///< pulley; default: current rope length on B's side
+    std::optional<float> breakForce{};   ///< N; World::setJointBreakLimits (none: never breaks on force)
+    std::optional<float> breakTorque{};  ///< N·m; none: never breaks on torque
+    bool destroyOnBreak = true;          ///< the joint goes when it breaks
     /// Equal in every field (a scene that round-trips through JSON compares equal).
     friend bool operator==(const SceneJoint&, const SceneJoint&) = default;
 };

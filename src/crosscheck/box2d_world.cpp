@@ -330,6 +330,8 @@ std::vector<b2Body*> Box2DScene::add(const Scene& fragment) {
     for (size_t i = 0; i < fragment.joints.size(); ++i) {
         const SceneJoint& j = fragment.joints[i];
         const std::string where = "joints[" + std::to_string(i) + "]";
+        if (j.breakForce || j.breakTorque)
+            throw Error(where + ": Box2D 2.4 has no breakable joints (break_force, break_torque): the cross-check cannot compare this scene");
         b2Body* a = bodies[index(j.bodyA, where + ".body_a")];
         b2Body* b = bodies[index(j.bodyB, where + ".body_b")];
         joints.push_back(createJoint(*world_, j, a, b, joints));

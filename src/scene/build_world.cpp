@@ -1,6 +1,7 @@
 // A Scene built into perpdot's World, and the scene's scripted actions applied step by step.
 #include "scene/build_world.hpp"
 
+#include <limits>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -156,6 +157,10 @@ SceneBodies addToWorld(World& world, const Scene& scene) {
         try {
             const SceneJoint& j = scene.joints[i];
             built.joints.push_back(createJoint(world, j, jointFrame(j, world, scene, built.bodies, index), built.joints));
+            if (j.breakForce || j.breakTorque) {
+                constexpr float never = std::numeric_limits<float>::infinity();
+                world.setJointBreakLimits(built.joints.back(), j.breakForce.value_or(never), j.breakTorque.value_or(never), j.destroyOnBreak);
+            }
         } catch (const Error& e) {
             throw Error(element("joints", i) + ": " + e.what());
         }

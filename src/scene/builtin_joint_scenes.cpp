@@ -82,6 +82,17 @@ Scene suspensionBridge() {
     return s;
 }
 
+// The bridge with breakable hinges (World::setJointBreakLimits), an anvil instead of the crates:
+// the settling deck pulls its hinges up to 400 N, the 80 kg anvil 1,560 N; they break at 800 N.
+Scene breakableBridge() {
+    Scene s = suspensionBridge();
+    while (s.bodies.back().name.starts_with("crate")) s.bodies.pop_back();
+    for (SceneJoint& j : s.joints) j.breakForce = 800.0f;
+    s.bodies.push_back({.name = "anvil", .position = {0.0f, 12.0f}, .shapes = {boxShape(1.0f, 1.0f)}});
+    s.bodies.back().shapes[0].density = 20.0f;  // 80 kg
+    return s;
+}
+
 // A limp human figure of boxes (ragdoll_figure.hpp), spinning as it falls to the ground.
 Scene ragdoll() {
     Scene s;
@@ -190,6 +201,7 @@ std::vector<BuiltinScene> jointScenes() {
         {"double_pendulum", "two hinged bars released horizontal", doublePendulum},
         {"chain", "40 hinged links and a heavy ball, released horizontal", chain},
         {"suspension_bridge", "30 hinged planks between two posts, crates dropped on the deck", suspensionBridge},
+        {"breakable_bridge", "the suspension bridge with hinges that break above 800 N; an 80 kg anvil snaps it", breakableBridge},
         {"ragdoll", "a figure of boxes with limited revolute joints falls to the ground", ragdoll},
         {"car", "a car on wheel joints (springs, rear motor) drives over bumps", car},
         {"joint_grid", "Box2D v3's benchmark: 100x100 circles linked by revolute joints, sleep off", jointGrid},

@@ -407,6 +407,9 @@ SceneJoint readJoint(const Object& o, const std::set<std::string>& bodyNames, co
     j.angularOffset = o.number("angular_offset", 0.0f);
     j.maxForce = o.nonNegative("max_force", j.maxForce);
     j.maxTorque = o.nonNegative("max_torque", j.maxTorque);
+    if (o.has("break_force")) j.breakForce = o.nonNegative("break_force", 0.0f);
+    if (o.has("break_torque")) j.breakTorque = o.nonNegative("break_torque", 0.0f);
+    j.destroyOnBreak = o.boolean("destroy_on_break", true);
     if (j.type == JointType::Gear) readGear(o, j, earlier);
     if (j.type == JointType::Pulley) readPulley(o, j);
     return j;

@@ -162,6 +162,9 @@ Json jointJson(const SceneJoint& j) {
     if (j.localAnchorA) o["local_anchor_a"] = vec(*j.localAnchorA);
     if (j.localAnchorB) o["local_anchor_b"] = vec(*j.localAnchorB);
     put(o, "collide_connected", j.collideConnected, d.collideConnected);
+    if (j.breakForce) o["break_force"] = shortest(*j.breakForce);
+    if (j.breakTorque) o["break_torque"] = shortest(*j.breakTorque);
+    put(o, "destroy_on_break", j.destroyOnBreak, d.destroyOnBreak);
     const bool hasLimit = j.type == JointType::Revolute || j.type == JointType::Prismatic;
     const bool hasMotor = hasLimit || j.type == JointType::Wheel;
     const bool hasSpring = j.type == JointType::Distance || j.type == JointType::Weld || j.type == JointType::Wheel;

@@ -27,7 +27,7 @@ inline constexpr std::string_view segment[] = {"v1", "v2"};
 inline constexpr std::string_view chain[] = {"vertices", "loop"};
 inline constexpr std::string_view capsule[] = {"center1", "center2", "radius"};
 
-inline constexpr std::string_view joint[] = {"type", "body_a", "body_b", "collide_connected"};
+inline constexpr std::string_view joint[] = {"type", "body_a", "body_b", "collide_connected", "break_force", "break_torque", "destroy_on_break"};
 inline constexpr std::string_view jointAnchors[] = {"anchor", "local_anchor_a", "local_anchor_b"};
 inline constexpr std::string_view revolute[] = {"enable_limit", "lower_angle", "upper_angle",
                                                 "enable_motor", "motor_speed", "max_motor_torque"};
