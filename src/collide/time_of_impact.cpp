@@ -54,22 +54,21 @@ float advanceToImpact(const b2DistanceProxy& a, const Sweep& sweepA, const b2Dis
     input.useRadii = false;
     b2SimplexCache cache;
     cache.count = 0;
-    float t = 0.0f;
-    for (int iteration = 0; iteration < maxIterations; ++iteration) {
-        input.transformA = poseAt(sweepA, t);
-        input.transformB = poseAt(sweepB, t);
-        b2DistanceOutput output;
-        b2Distance(&output, &cache, &input);
-        const float d = output.distance;
-        if (!std::isfinite(d)) return 1.0f;
-        if (d < target + tolerance) return t;
-        const Vec2 n = (1.0f / d) * Vec2{output.pointB.x - output.pointA.x, output.pointB.y - output.pointA.y};
-        const float closingSpeed = dot(n, velocityAB) + spinSpeed;
-        if (!(closingSpeed > 0.0f)) return 1.0f;  // the separation along n never shrinks
-        t += (d - target) / closingSpeed;
-        if (!(t < 1.0f)) return 1.0f;
-    }
-    return t;
+    const Advanced advanced = conservativeAdvance(
+        [&](float at, int) {
+            input.transformA = poseAt(sweepA, at);
+            input.transformB = poseAt(sweepB, at);
+            b2DistanceOutput output;
+            b2Distance(&output, &cache, &input);
+            const float d = output.distance;
+            if (!std::isfinite(d)) return Advance{.stop = true};
+            if (d < target + tolerance) return Advance{.gap = d - target};  // at the impact: no axis needed
+            const Vec2 n = (1.0f / d) * Vec2{output.pointB.x - output.pointA.x, output.pointB.y - output.pointA.y};
+            return Advance{.gap = d - target, .closingSpeed = dot(n, velocityAB) + spinSpeed};
+        },
+        tolerance, 1.0f, maxIterations);
+    // Out of iterations mid-way it stops short (safe); no impact is t = 1.
+    return advanced.outcome == Advanced::None ? 1.0f : advanced.t;
 }
 
 }  // namespace perpdot::collide

@@ -6,12 +6,14 @@
 // planes it meets (steep slopes are vertical walls to a walker), climbing steps, (4) it probes for
 // ground below, snapping down when it was grounded. Its body is then placed at the new position.
 //
-// Casts are conservative advancement on b2Distance (CollisionSystem::coreDistance): the surface
-// gap g(t) between a convex capsule translated by t·D and a convex shape is a convex function of
-// t, so it lies above its tangent, and stepping t by (g − skin)/(−g′) never passes the contact.
+// Casts are conservative advancement (collide::conservativeAdvance, shared with the time of impact)
+// on b2Distance (CollisionSystem::coreDistance): the surface gap g(t) between a convex capsule
+// translated by t·D and a convex shape is a convex function of t, so it lies above its tangent,
+// and stepping t by (g − skin)/(−g′) never passes the contact.
 #include <algorithm>
 #include <cmath>
 
+#include "collide/time_of_impact.hpp"
 #include "core/world_impl.hpp"
 
 namespace perpdot {
@@ -82,21 +84,22 @@ public:
         forEachNear(bounds(start, translation, 2.0f * def_.skin), [&](collide::ChildKey key) {
             const bool fromAboveOnly = oneWay(key.shape);
             if (fromAboveOnly && translation.y >= 0.0f) return;
-            float t = 0.0f;
-            for (int i = 0; i < maxCastIterations; ++i) {
-                const Gap g = gap(start + t * translation, key);
-                if (!g.valid) return;  // cores overlap: recovery's business, not the cast's
-                // A one-way shape counts only when met from above, the capsule not already in it.
-                if (fromAboveOnly && (!walkable(g.normal) || (i == 0 && g.gap < def_.skin - tolerance))) return;
-                const float approach = -dot(translation, g.normal);  // −g′(t)
-                if (approach <= parallel * length(translation)) return;  // g never falls again (convex)
-                if (g.gap <= def_.skin + tolerance) {
-                    if (t < best.fraction || !best.hit) best = {true, t, g.normal, g.point, key.shape};
-                    return;
-                }
-                t += (g.gap - def_.skin) / approach;
-                if (t >= best.fraction) return;
-            }
+            Gap last;
+            const collide::Advanced advanced = collide::conservativeAdvance(
+                [&](float t, int iteration) {
+                    last = gap(start + t * translation, key);
+                    if (!last.valid) return collide::Advance{.stop = true};  // cores overlap: recovery's business
+                    // A one-way shape counts only when met from above, the capsule not already in it.
+                    if (fromAboveOnly && (!walkable(last.normal) || (iteration == 0 && last.gap < def_.skin - tolerance)))
+                        return collide::Advance{.stop = true};
+                    const float approach = -dot(translation, last.normal);  // −g′(t)
+                    // Moving along the surface (or away), even within the skin: g never falls again (convex).
+                    if (approach <= parallel * length(translation)) return collide::Advance{.stop = true};
+                    return collide::Advance{.gap = last.gap - def_.skin, .closingSpeed = approach};
+                },
+                tolerance, best.fraction, maxCastIterations);
+            if (advanced.outcome == collide::Advanced::Contact && (!best.hit || advanced.t < best.fraction))
+                best = {true, advanced.t, last.normal, last.point, key.shape};
         });
         return best;
     }
