@@ -14,10 +14,21 @@ float invEffectiveMass(const ContactConstraint& c, Vec2 rA, Vec2 rB, Vec2 d) {
     return c.invMassA + c.invMassB + c.invIA * rnA * rnA + c.invIB * rnB * rnB;
 }
 
+// The velocity a body would end the step with if nothing touched it: its state plus the substeps'
+// forces still to come. Restitution reverses the approach speed at the end of the step, forces
+// included: in the discrete fall a ball hits the ground with that speed, and an e = 1 bounce then
+// climbs exactly as many steps as it fell (docs/stress.md).
+BodyState velocityWithoutContact(const World::Impl& w, const StepContext& ctx, int slot) {
+    BodyState s = w.states[slot];
+    const SubstepForces& f = w.substepForces[slot];
+    s.v += static_cast<float>(ctx.substeps) * f.dv;
+    s.w += static_cast<float>(ctx.substeps) * f.dw;
+    return s;
+}
+
 }  // namespace
 
 void prepareContacts(World::Impl& w, const StepContext& ctx) {
-    std::vector<BodyState>& states = *ctx.states;
     w.constraints.clear();
     for (int index = 0; index < static_cast<int>(w.contacts.size()); ++index) {
         const Contact& contact = w.contacts[index];
@@ -52,8 +63,7 @@ void prepareContacts(World::Impl& w, const StepContext& ctx) {
         c.turnsB = roundingRadius(w.shapes[contact.b.shape]) == 0.0f ? 1.0f : 0.0f;
 
         const Vec2 n = contact.normal, t = perp(n);
-        const BodyState& sa = states[c.indexA];
-        const BodyState& sb = states[c.indexB];
+        const BodyState sa = velocityWithoutContact(w, ctx, c.indexA), sb = velocityWithoutContact(w, ctx, c.indexB);
         for (int i = 0; i < contact.pointCount; ++i) {
             const ContactPointState& p = contact.points[i];
             ContactPointRows<float>& cp = c.points[i];
