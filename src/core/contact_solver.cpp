@@ -84,20 +84,39 @@ void prepareContacts(World::Impl& w, const StepContext& ctx) {
     prepareContactBlocks(w);
 }
 
-// Hecker's bounce: drive v_rel·n to -e·(v_rel·n before the step), for approaches faster than
-// the restitution threshold.
+namespace {
+
+// The rebound speed of an approach at speed V: Hecker's e V, corrected so that the climb it starts
+// reaches e² of the height the fall took in the discrete integrator. Under a steady deceleration a
+// along n (gravity: a = g), a symplectic-Euler climb from speed v rises v²/2a − h v/2 and the fall
+// that ended at V took V²/2a − h V/2; equal to e² times: v = (a h + √(a²h² + 4e²(V² − a h V)))/2,
+// which is V for e = 1 (docs/stress.md). Without such a deceleration (a h ≥ V or a ≤ 0): e V.
+float reboundSpeed(float e, float V, float a, float h) {
+    const float ah = a * h;
+    if (!(ah > 0.0f) || !(V > ah)) return e * V;
+    return 0.5f * (ah + std::sqrt(ah * ah + 4.0f * e * e * (V * V - ah * V)));
+}
+
+}  // namespace
+
+// Hecker's bounce: drive v_rel·n to the rebound speed of the approach (v_rel·n at the end of the
+// step without the contact), for approaches faster than the restitution threshold.
 void applyRestitution(World::Impl& w, const StepContext& ctx) {
     std::vector<BodyState>& states = *ctx.states;
     for (ContactConstraint& c : w.constraints) {
         if (c.restitution == 0.0f) continue;
         BodyState& a = states[c.indexA];
         BodyState& b = states[c.indexB];
+        // The pair's deceleration along n from this step's forces: −(ΔvB − ΔvA)·n / h.
+        const Vec2 dv = w.substepForces[c.indexB].dv - w.substepForces[c.indexA].dv;
+        const float deceleration = -static_cast<float>(ctx.substeps) * dot(dv, c.normal) * ctx.invH;
         for (int i = 0; i < c.pointCount; ++i) {
             ContactPointRows<float>& cp = c.points[i];
             if (cp.relativeVelocity > -ctx.restitutionThreshold || cp.maxNormalImpulse == 0.0f) continue;
             const Vec2 rA = cp.anchorA, rB = cp.anchorB;
             const float vn = dot(relativeVelocity(a, b, rA, rB), c.normal);
-            float impulse = -cp.normalMass * (vn + c.restitution * cp.relativeVelocity);
+            const float rebound = reboundSpeed(c.restitution, -cp.relativeVelocity, deceleration, ctx.h);
+            float impulse = -cp.normalMass * (vn - rebound);
             const float newImpulse = std::max(cp.normalImpulse + impulse, 0.0f);
             impulse = newImpulse - cp.normalImpulse;
             cp.normalImpulse = newImpulse;
