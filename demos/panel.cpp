@@ -21,6 +21,7 @@ constexpr Key helpKeys[] = {
     {"Shift+arrows, Left/Up/Down", "pan"},
     {"Wheel, +/-", "zoom at the cursor"},
     {"C", "fit the camera to the scene"},
+    {"X", "explosion at the mouse (World::explode, 20 N·s, 5 m)"},
     {"H or F1", "this help"},
     {"Esc or Q", "quit"},
 };

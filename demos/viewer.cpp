@@ -119,6 +119,13 @@ private:
 
     Vec2 mouseWorld(int x, int y) const { return camera_.toWorld({float(x), float(y)}); }
 
+    // World::explode at the mouse: 20 N·s falling off to nothing 5 m away, behind walls too.
+    void explodeAtCursor() {
+        int x = 0, y = 0;
+        SDL_GetMouseState(&x, &y);
+        state_.sim->world.explode({.position = mouseWorld(x, y), .radius = 5.0f, .impulse = 20.0f});
+    }
+
     void handleKey(const SDL_Keysym& key) {
         const bool shift = (key.mod & KMOD_SHIFT) != 0;
         switch (key.sym) {
@@ -134,6 +141,7 @@ private:
             case SDLK_r: state_.resetRequested = true; break;
             case SDLK_z: state_.timeScale = state_.timeScale < 1.0f ? 1.0f : slowMotion; break;
             case SDLK_c: fitView(); break;
+            case SDLK_x: explodeAtCursor(); break;
             case SDLK_h:
             case SDLK_F1: state_.showHelp = !state_.showHelp; break;
             case SDLK_PLUS:
