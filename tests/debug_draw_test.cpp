@@ -167,5 +167,23 @@ TEST_F(BoxOnGround, JointsAreLinesBetweenTheirAnchors) {
     EXPECT_TRUE(hidden.segments.empty());
 }
 
+// A pulley is drawn as Box2D draws it: each rope from its ground anchor down to its body's anchor,
+// and the ground anchors joined.
+TEST_F(BoxOnGround, APulleysRopesRunFromItsGroundAnchors) {
+    const BodyId other = world.createBody({.type = BodyType::Dynamic, .position = {4.0f, 3.0f}, .linearVelocity = {}});
+    world.createShape(other, {}, makeBox(0.5f, 0.5f));
+    const Vec2 groundA{1.0f, 6.0f}, groundB{4.0f, 6.0f};
+    const JointId pulley = world.createJoint(PulleyJointDef{.bodyA = box, .bodyB = other, .groundAnchorA = groundA,
+                                                            .groundAnchorB = groundB, .lengthA = 3.0f, .lengthB = 3.0f});
+    EXPECT_EQ(world.pulleyGroundAnchors(pulley), std::make_pair(groundA, groundB));
+    EXPECT_THROW((void)world.pulleyGroundAnchors(JointId{}), Error);
+    Recorder r;
+    debugDraw(world, r, {.shapes = false});
+    EXPECT_TRUE(hasSegment(r, groundA, world.jointAnchorA(pulley)));
+    EXPECT_TRUE(hasSegment(r, groundB, world.jointAnchorB(pulley)));
+    EXPECT_TRUE(hasSegment(r, groundA, groundB));
+    EXPECT_FALSE(hasSegment(r, world.jointAnchorA(pulley), world.jointAnchorB(pulley))) << "no straight line between the bodies";
+}
+
 }  // namespace
 }  // namespace perpdot

@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "perpdot/body.hpp"
@@ -185,6 +186,8 @@ public:
     BodyId jointBodyB(JointId joint) const;  ///< The definition's bodyB.
     Vec2 jointAnchorA(JointId joint) const;  ///< world
     Vec2 jointAnchorB(JointId joint) const;  ///< world
+    /// A pulley's two ground anchors, world (the points its ropes hang from); Error for other types.
+    std::pair<Vec2, Vec2> pulleyGroundAnchors(JointId joint) const;
     /// The joint breaks when, at the end of a step, its reaction force exceeds `maxForce` N or its
     /// reaction torque exceeds `maxTorque` N·m (infinity: never): a JointBreakEvent is reported,
     /// and the joint is destroyed then if `destroy`. Error for a negative or NaN limit.

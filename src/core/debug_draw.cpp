@@ -130,10 +130,20 @@ void drawContacts(const World& world, const DebugDrawOptions& options, DebugDraw
     }
 }
 
-// Box2D's joint picture: body origin -> anchor A -> anchor B <- body origin.
+// Box2D's joint picture: body origin -> anchor A -> anchor B <- body origin; a pulley's ropes run
+// from each anchor up to its ground anchor, and the ground anchors are joined.
 void drawJoint(const World& world, JointId joint, DebugDraw& draw) {
     const Vec2 pA = world.jointAnchorA(joint);
     const Vec2 pB = world.jointAnchorB(joint);
+    if (world.jointType(joint) == JointType::Pulley) {
+        const auto [groundA, groundB] = world.pulleyGroundAnchors(joint);
+        draw.drawSegment(groundA, pA, jointColor);
+        draw.drawSegment(groundB, pB, jointColor);
+        draw.drawSegment(groundA, groundB, jointColor);
+        draw.drawPoint(pA, 4.0f, jointColor);
+        draw.drawPoint(pB, 4.0f, jointColor);
+        return;
+    }
     const BodyId a = world.jointBodyA(joint);
     const BodyId b = world.jointBodyB(joint);
     if (world.jointType(joint) != JointType::Mouse) draw.drawSegment(world.position(a), pA, jointColor);

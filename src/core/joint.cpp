@@ -394,6 +394,12 @@ Vec2 World::jointAnchorB(JointId id) const {
     return transformPoint(impl_->bodies[j.bodyB].xf, j.localAnchorB);
 }
 
+std::pair<Vec2, Vec2> World::pulleyGroundAnchors(JointId id) const {
+    const Joint& j = checkedJoint(*impl_, id);
+    if (j.type != JointType::Pulley) throw Error("pulleyGroundAnchors: not a pulley joint");
+    return {j.data.pulley.groundA, j.data.pulley.groundB};
+}
+
 // The accumulated impulse is what every substep applies, so force = λ / hs (Box2D v3).
 Vec2 World::jointReactionForce(JointId id) const {
     return store(*impl_).invHs * reactionOf(checkedJoint(*impl_, id)).linear;
