@@ -22,9 +22,19 @@ constexpr Key helpKeys[] = {
     {"Wheel, +/-", "zoom at the cursor"},
     {"C", "fit the camera to the scene"},
     {"X", "explosion at the mouse (World::explode, 20 N·s, 5 m)"},
+    {"M", "character mover at the mouse (mover_course has one)"},
+    {"A / D, W", "mover: walk left / right, jump"},
     {"H or F1", "this help"},
     {"Esc or Q", "quit"},
 };
+
+// ImGui::Checkbox, remembering where it was drawn (ViewerState::checkboxes).
+bool checkbox(ViewerState& state, const char* label, bool* value) {
+    const bool changed = ImGui::Checkbox(label, value);
+    const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+    state.checkboxes[label] = {{min.x, min.y}, {max.x, max.y}};
+    return changed;
+}
 
 }  // namespace
 
@@ -76,7 +86,7 @@ void drawPanel(ViewerState& state) {
     Tweaks& t = state.tweaks;
     bool changed = ImGui::SliderFloat2("gravity", &t.gravity.x, -30.0f, 30.0f, "%.1f");
     changed |= ImGui::SliderInt("substeps", &t.substeps, 1, 16);
-    changed |= ImGui::Checkbox("override materials", &t.overrideMaterials);
+    changed |= checkbox(state, "override materials", &t.overrideMaterials);
     if (t.overrideMaterials) {
         changed |= ImGui::SliderFloat("friction", &t.friction, 0.0f, 1.5f, "%.2f");
         changed |= ImGui::SliderFloat("restitution", &t.restitution, 0.0f, 1.0f, "%.2f");
@@ -85,22 +95,22 @@ void drawPanel(ViewerState& state) {
 
     ImGui::Separator();
     DebugDrawOptions& d = state.draw;
-    ImGui::Checkbox("shapes", &d.shapes);
+    checkbox(state, "shapes", &d.shapes);
     ImGui::SameLine();
-    ImGui::Checkbox("joints", &d.joints);
+    checkbox(state, "joints", &d.joints);
     ImGui::SameLine();
-    ImGui::Checkbox("dim sleeping", &d.dimSleeping);
-    ImGui::Checkbox("centre of mass", &d.centerOfMass);
+    checkbox(state, "dim sleeping", &d.dimSleeping);
+    checkbox(state, "centre of mass", &d.centerOfMass);
     ImGui::SameLine();
-    ImGui::Checkbox("velocities", &d.velocities);
+    checkbox(state, "velocities", &d.velocities);
     ImGui::SameLine();
-    ImGui::Checkbox("AABBs", &d.aabbs);
-    ImGui::Checkbox("contacts", &d.contacts);
+    checkbox(state, "AABBs", &d.aabbs);
+    checkbox(state, "contacts", &d.contacts);
     ImGui::SameLine();
-    ImGui::Checkbox("impulses", &d.contactImpulses);
+    checkbox(state, "impulses", &d.contactImpulses);
 
     ImGui::Separator();
-    ImGui::Checkbox("Box2D overlay (scene as defined)", &state.showBox2D);
+    checkbox(state, "Box2D overlay (scene as defined)", &state.showBox2D);
     if (state.showBox2D) {
         ImGui::Text("largest position error %.4f m (%s)", state.box2d.maxPositionError(), state.box2d.worstBody().c_str());
     }

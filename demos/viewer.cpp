@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <utility>
@@ -42,218 +43,208 @@ std::vector<SceneEntry> sceneList(const std::string& requested, int& current) {
     return list;
 }
 
-class Viewer {
-public:
-    Viewer(const Options& options, SDL_Renderer* renderer) : options_(options), renderer_(renderer) {
-        state_.scenes = sceneList(options.scene, state_.current);
-        state_.draw = options.draw;
-        load(state_.current, true);
-    }
-
-    int run() {
-        Uint64 last = SDL_GetPerformanceCounter();
-        for (int frame = 0; !quit_; ++frame) {
-            if (options_.exitAfter > 0 && frame >= options_.exitAfter) break;
-            const Uint64 now = SDL_GetPerformanceCounter();
-            const double dt = std::min(0.1, double(now - last) / double(SDL_GetPerformanceFrequency()));
-            last = now;
-            handleEvents();
-            handleRequests();
-            simulate(dt);
-            render();
-        }
-        return 0;
-    }
-
-private:
-    void load(int index, bool newScene) {
-        state_.current = index;
-        state_.sim = std::make_unique<SceneWorld>(buildWorldWithBehaviour(state_.scenes[index].make()));
-        SceneWorld& sim = *state_.sim;
-        if (newScene) {
-            state_.tweaks = {.gravity = sim.scene.gravity, .substeps = sim.world.settings().substeps};
-            fitView();
-        } else {
-            applyTweaks(state_.tweaks, sim);
-        }
-        spring_.release();
-        state_.box2d.clear();
-        accumulator_ = 0.0;
-    }
-
-    void fitView() {
-        int w = defaultWidth, h = defaultHeight;
-        SDL_GetRendererOutputSize(renderer_, &w, &h);
-        camera_ = fitCamera(state_.sim->world, w, h);
-    }
-
-    void handleRequests() {
-        if (state_.sceneRequested >= 0) load(std::exchange(state_.sceneRequested, -1), true);
-        if (std::exchange(state_.resetRequested, false)) load(state_.current, false);
-    }
-
-    void step() {
-        SceneWorld& sim = *state_.sim;
-        spring_.applyForce(sim.world);
-        const auto start = std::chrono::steady_clock::now();
-        sim.step();
-        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-        state_.stepMilliseconds = state_.stepMilliseconds == 0.0 ? ms : 0.9 * state_.stepMilliseconds + 0.1 * ms;
-    }
-
-    void simulate(double dt) {
-        if (std::exchange(state_.stepRequested, false)) {
-            state_.paused = true;
-            step();
-        }
-        if (state_.paused) return;
-        const double h = state_.sim->scene.timestep;
-        accumulator_ += dt * state_.timeScale;
-        int steps = 0;
-        for (; accumulator_ >= h && steps < maxStepsPerFrame; ++steps) {
-            step();
-            accumulator_ -= h;
-        }
-        if (steps == maxStepsPerFrame) accumulator_ = 0.0;
-    }
-
-    Vec2 mouseWorld(int x, int y) const { return camera_.toWorld({float(x), float(y)}); }
-
-    // World::explode at the mouse: 20 N·s falling off to nothing 5 m away, behind walls too.
-    void explodeAtCursor() {
-        int x = 0, y = 0;
-        SDL_GetMouseState(&x, &y);
-        state_.sim->world.explode({.position = mouseWorld(x, y), .radius = 5.0f, .impulse = 20.0f});
-    }
-
-    void handleKey(const SDL_Keysym& key) {
-        const bool shift = (key.mod & KMOD_SHIFT) != 0;
-        switch (key.sym) {
-            case SDLK_SPACE: state_.paused = !state_.paused; break;
-            case SDLK_s: state_.stepRequested = true; break;
-            case SDLK_RIGHT:
-                if (shift) camera_.center.x += panPixelsPerKey / camera_.pixelsPerMetre;
-                else state_.stepRequested = true;
-                break;
-            case SDLK_LEFT: camera_.center.x -= panPixelsPerKey / camera_.pixelsPerMetre; break;
-            case SDLK_UP: camera_.center.y += panPixelsPerKey / camera_.pixelsPerMetre; break;
-            case SDLK_DOWN: camera_.center.y -= panPixelsPerKey / camera_.pixelsPerMetre; break;
-            case SDLK_r: state_.resetRequested = true; break;
-            case SDLK_z: state_.timeScale = state_.timeScale < 1.0f ? 1.0f : slowMotion; break;
-            case SDLK_c: fitView(); break;
-            case SDLK_x: explodeAtCursor(); break;
-            case SDLK_h:
-            case SDLK_F1: state_.showHelp = !state_.showHelp; break;
-            case SDLK_PLUS:
-            case SDLK_EQUALS:
-            case SDLK_KP_PLUS: camera_.zoomAt({0.5f * camera_.width, 0.5f * camera_.height}, 1.25f); break;
-            case SDLK_MINUS:
-            case SDLK_KP_MINUS: camera_.zoomAt({0.5f * camera_.width, 0.5f * camera_.height}, 0.8f); break;
-            case SDLK_ESCAPE:
-            case SDLK_q: quit_ = true; break;
-            default: break;
-        }
-    }
-
-    void handleEvents() {
-        const ImGuiIO& io = ImGui::GetIO();
-        SDL_Event e;
-        while (SDL_PollEvent(&e)) {
-            ImGui_ImplSDL2_ProcessEvent(&e);
-            World& world = state_.sim->world;
-            switch (e.type) {
-                case SDL_QUIT: quit_ = true; break;
-                case SDL_WINDOWEVENT:
-                    if (e.window.event == SDL_WINDOWEVENT_SIZE_CHANGED) {
-                        SDL_GetRendererOutputSize(renderer_, &camera_.width, &camera_.height);
-                    }
-                    break;
-                case SDL_KEYDOWN:
-                    if (!io.WantCaptureKeyboard) handleKey(e.key.keysym);
-                    break;
-                case SDL_MOUSEBUTTONDOWN:
-                    if (io.WantCaptureMouse) break;
-                    if (e.button.button == SDL_BUTTON_LEFT) {
-                        const Vec2 p = mouseWorld(e.button.x, e.button.y);
-                        if (const auto body = bodyAt(world, p)) spring_.grab(world, *body, p);
-                    } else {
-                        panning_ = true;
-                    }
-                    break;
-                case SDL_MOUSEBUTTONUP:
-                    if (e.button.button == SDL_BUTTON_LEFT) spring_.release();
-                    else panning_ = false;
-                    break;
-                case SDL_MOUSEMOTION:
-                    if (panning_) camera_.center += Vec2{-float(e.motion.xrel), float(e.motion.yrel)} * (1.0f / camera_.pixelsPerMetre);
-                    spring_.setTarget(mouseWorld(e.motion.x, e.motion.y));
-                    break;
-                case SDL_MOUSEWHEEL:
-                    if (!io.WantCaptureMouse) {
-                        int x = 0, y = 0;
-                        SDL_GetMouseState(&x, &y);
-                        camera_.zoomAt({float(x), float(y)}, std::pow(1.15f, e.wheel.preciseY));
-                    }
-                    break;
-                default: break;
-            }
-        }
-    }
-
-    void render() {
-        const World& world = state_.sim->world;
-        drawWorld(renderer_, world, camera_, state_.draw);
-        SdlDraw draw(renderer_, camera_);
-        if (const SceneBehaviour* behaviour = findSceneBehaviour(state_.sim->scene.name); behaviour && behaviour->draw)
-            behaviour->draw(*state_.sim, draw);
-        if (state_.showBox2D) {
-            state_.box2d.update(*state_.sim);
-            state_.box2d.draw(draw, *state_.sim);
-        }
-        if (spring_.active(world)) {
-            draw.drawSegment(spring_.anchor(world), spring_.target(), Color{255, 255, 255});
-            draw.drawPoint(spring_.anchor(world), 6.0f, Color{255, 255, 255});
-        }
-        ImGui_ImplSDLRenderer_NewFrame();
-        ImGui_ImplSDL2_NewFrame();
-        ImGui::NewFrame();
-        drawPanel(state_);
-        drawHelp(state_.showHelp);
-        ImGui::Render();
-        ImGui_ImplSDLRenderer_RenderDrawData(ImGui::GetDrawData());
-        SDL_RenderPresent(renderer_);
-    }
-
-    Options options_;
-    SDL_Renderer* renderer_;
-    ViewerState state_;
-    Camera camera_;
-    MouseSpring spring_;
-    double accumulator_ = 0.0;
-    bool panning_ = false;
-    bool quit_ = false;
-};
-
-// ImGui context and its two SDL backends, for the lifetime of the object.
-struct ImGuiSession {
-    ImGuiSession(SDL_Window* window, SDL_Renderer* renderer) {
-        IMGUI_CHECKVERSION();
-        ImGui::CreateContext();
-        ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini in the user's directory
-        ImGui::StyleColorsDark();
-        ImGui_ImplSDL2_InitForSDLRenderer(window);
-        ImGui_ImplSDLRenderer_Init(renderer);
-    }
-    ~ImGuiSession() {
-        ImGui_ImplSDLRenderer_Shutdown();
-        ImGui_ImplSDL2_Shutdown();
-        ImGui::DestroyContext();
-    }
-    ImGuiSession(const ImGuiSession&) = delete;
-    ImGuiSession& operator=(const ImGuiSession&) = delete;
-};
-
 }  // namespace
+
+Viewer::Viewer(const Options& options, SDL_Renderer* renderer) : options_(options), renderer_(renderer) {
+    state_.scenes = sceneList(options.scene, state_.current);
+    state_.draw = options.draw;
+    load(state_.current, true);
+}
+
+int Viewer::run() {
+    Uint64 last = SDL_GetPerformanceCounter();
+    for (int count = 0; !quit_; ++count) {
+        if (options_.exitAfter > 0 && count >= options_.exitAfter) break;
+        const Uint64 now = SDL_GetPerformanceCounter();
+        const double dt = std::min(0.1, double(now - last) / double(SDL_GetPerformanceFrequency()));
+        last = now;
+        frame(dt);
+    }
+    return 0;
+}
+
+void Viewer::frame(double dt) {
+    SDL_Event e;
+    while (SDL_PollEvent(&e)) handleEvent(e);
+    handleRequests();
+    simulate(dt);
+    render();
+}
+
+void Viewer::load(int index, bool newScene) {
+    state_.current = index;
+    state_.sim = std::make_unique<SceneWorld>(buildWorldWithBehaviour(state_.scenes[index].make()));
+    SceneWorld& sim = *state_.sim;
+    if (newScene) {
+        state_.tweaks = {.gravity = sim.scene.gravity, .substeps = sim.world.settings().substeps};
+        fitView();
+    } else {
+        applyTweaks(state_.tweaks, sim);
+    }
+    spring_.release();
+    mover_.forget();
+    if (const SceneBehaviour* behaviour = findSceneBehaviour(sim.scene.name); behaviour && behaviour->mover)
+        mover_.place(sim.world, behaviour->mover->def, behaviour->mover->start);
+    state_.box2d.clear();
+    accumulator_ = 0.0;
+}
+
+void Viewer::fitView() {
+    int w = defaultWidth, h = defaultHeight;
+    SDL_GetRendererOutputSize(renderer_, &w, &h);
+    camera_ = fitCamera(state_.sim->world, w, h);
+}
+
+void Viewer::handleRequests() {
+    if (state_.sceneRequested >= 0) load(std::exchange(state_.sceneRequested, -1), true);
+    if (std::exchange(state_.resetRequested, false)) load(state_.current, false);
+}
+
+void Viewer::step() {
+    SceneWorld& sim = *state_.sim;
+    spring_.applyForce(sim.world);
+    const auto start = std::chrono::steady_clock::now();
+    sim.step();
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    state_.stepMilliseconds = state_.stepMilliseconds == 0.0 ? ms : 0.9 * state_.stepMilliseconds + 0.1 * ms;
+    mover_.move(sim.world, sim.scene.timestep);
+}
+
+void Viewer::simulate(double dt) {
+    if (std::exchange(state_.stepRequested, false)) {
+        state_.paused = true;
+        step();
+    }
+    if (state_.paused) return;
+    const double h = state_.sim->scene.timestep;
+    accumulator_ += dt * state_.timeScale;
+    int steps = 0;
+    for (; accumulator_ >= h && steps < maxStepsPerFrame; ++steps) {
+        step();
+        accumulator_ -= h;
+    }
+    if (steps == maxStepsPerFrame) accumulator_ = 0.0;
+}
+
+// World::explode at the mouse: 20 N·s falling off to nothing 5 m away, behind walls too.
+void Viewer::explodeAtCursor() { state_.sim->world.explode({.position = mouseWorld(), .radius = 5.0f, .impulse = 20.0f}); }
+
+// The scene's mover definition if it has one (its one-way platforms), else the default.
+void Viewer::placeMoverAtCursor() {
+    const SceneBehaviour* behaviour = findSceneBehaviour(state_.sim->scene.name);
+    mover_.place(state_.sim->world, behaviour && behaviour->mover ? behaviour->mover->def : MoverDef{}, mouseWorld());
+}
+
+void Viewer::handleKey(const SDL_Keysym& key) {
+    const bool shift = (key.mod & KMOD_SHIFT) != 0;
+    switch (key.sym) {
+        case SDLK_SPACE: state_.paused = !state_.paused; break;
+        case SDLK_s: state_.stepRequested = true; break;
+        case SDLK_RIGHT:
+            if (shift) camera_.center.x += panPixelsPerKey / camera_.pixelsPerMetre;
+            else state_.stepRequested = true;
+            break;
+        case SDLK_LEFT: camera_.center.x -= panPixelsPerKey / camera_.pixelsPerMetre; break;
+        case SDLK_UP: camera_.center.y += panPixelsPerKey / camera_.pixelsPerMetre; break;
+        case SDLK_DOWN: camera_.center.y -= panPixelsPerKey / camera_.pixelsPerMetre; break;
+        case SDLK_r: state_.resetRequested = true; break;
+        case SDLK_z: state_.timeScale = state_.timeScale < 1.0f ? 1.0f : slowMotion; break;
+        case SDLK_c: fitView(); break;
+        case SDLK_x: explodeAtCursor(); break;
+        case SDLK_m: placeMoverAtCursor(); break;
+        case SDLK_h:
+        case SDLK_F1: state_.showHelp = !state_.showHelp; break;
+        case SDLK_PLUS:
+        case SDLK_EQUALS:
+        case SDLK_KP_PLUS: camera_.zoomAt({0.5f * camera_.width, 0.5f * camera_.height}, 1.25f); break;
+        case SDLK_MINUS:
+        case SDLK_KP_MINUS: camera_.zoomAt({0.5f * camera_.width, 0.5f * camera_.height}, 0.8f); break;
+        case SDLK_ESCAPE:
+        case SDLK_q: quit_ = true; break;
+        default: break;
+    }
+}
+
+void Viewer::handleEvent(const SDL_Event& e) {
+    ImGui_ImplSDL2_ProcessEvent(&e);
+    const ImGuiIO& io = ImGui::GetIO();
+    World& world = state_.sim->world;
+    switch (e.type) {
+        case SDL_QUIT: quit_ = true; break;
+        case SDL_WINDOWEVENT:
+            if (e.window.event == SDL_WINDOWEVENT_SIZE_CHANGED) SDL_GetRendererOutputSize(renderer_, &camera_.width, &camera_.height);
+            break;
+        case SDL_KEYDOWN:
+            if (!io.WantCaptureKeyboard && !mover_.handleKey(e.key.keysym.sym, true)) handleKey(e.key.keysym);
+            break;
+        case SDL_KEYUP: mover_.handleKey(e.key.keysym.sym, false); break;  // a released walk key stops even under the panel
+        case SDL_MOUSEBUTTONDOWN:
+            mouse_ = {float(e.button.x), float(e.button.y)};
+            if (io.WantCaptureMouse) break;
+            if (e.button.button == SDL_BUTTON_LEFT) {
+                if (const auto body = bodyAt(world, mouseWorld())) spring_.grab(world, *body, mouseWorld());
+            } else {
+                panning_ = true;
+            }
+            break;
+        case SDL_MOUSEBUTTONUP:
+            if (e.button.button == SDL_BUTTON_LEFT) spring_.release();
+            else panning_ = false;
+            break;
+        case SDL_MOUSEMOTION:
+            mouse_ = {float(e.motion.x), float(e.motion.y)};
+            if (panning_) camera_.center += Vec2{-float(e.motion.xrel), float(e.motion.yrel)} * (1.0f / camera_.pixelsPerMetre);
+            spring_.setTarget(mouseWorld());
+            break;
+        case SDL_MOUSEWHEEL:
+            if (!io.WantCaptureMouse) camera_.zoomAt(mouse_, std::pow(1.15f, e.wheel.preciseY));
+            break;
+        default: break;
+    }
+}
+
+void Viewer::render() {
+    const World& world = state_.sim->world;
+    drawWorld(renderer_, world, camera_, state_.draw);
+    SdlDraw draw(renderer_, camera_);
+    if (const SceneBehaviour* behaviour = findSceneBehaviour(state_.sim->scene.name); behaviour && behaviour->draw)
+        behaviour->draw(*state_.sim, draw);
+    mover_.draw(draw);
+    if (state_.showBox2D) {
+        state_.box2d.update(*state_.sim);
+        state_.box2d.draw(draw, *state_.sim);
+    }
+    if (spring_.active(world)) {
+        draw.drawSegment(spring_.anchor(world), spring_.target(), Color{255, 255, 255});
+        draw.drawPoint(spring_.anchor(world), 6.0f, Color{255, 255, 255});
+    }
+    ImGui_ImplSDLRenderer_NewFrame();
+    ImGui_ImplSDL2_NewFrame();
+    // ImGui 1.86's SDL backend reads the pointer only while SDL gives this window focus; without it
+    // (click-through, the dummy video driver) the pointer is where this window's events last saw it.
+    if (ImGuiIO& io = ImGui::GetIO(); io.MousePos.x == -FLT_MAX) io.MousePos = {mouse_.x, mouse_.y};
+    ImGui::NewFrame();
+    drawPanel(state_);
+    drawHelp(state_.showHelp);
+    ImGui::Render();
+    ImGui_ImplSDLRenderer_RenderDrawData(ImGui::GetDrawData());
+    SDL_RenderPresent(renderer_);
+}
+
+ImGuiSession::ImGuiSession(SDL_Window* window, SDL_Renderer* renderer) {
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini in the user's directory
+    ImGui::StyleColorsDark();
+    ImGui_ImplSDL2_InitForSDLRenderer(window);
+    ImGui_ImplSDLRenderer_Init(renderer);
+}
+
+ImGuiSession::~ImGuiSession() {
+    ImGui_ImplSDLRenderer_Shutdown();
+    ImGui_ImplSDL2_Shutdown();
+    ImGui::DestroyContext();
+}
 
 int runViewer(const Options& options) {
     SdlSession sdl(SDL_INIT_VIDEO | SDL_INIT_TIMER);

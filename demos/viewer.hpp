@@ -1,10 +1,15 @@
 // The interactive SDL2 window: scene picker, pause/step/reset, slow motion, camera, mouse spring,
-// and an ImGui panel (panel.cpp) with statistics, settings and the debug-draw toggles.
+// explosions, a character mover, and an ImGui panel (panel.cpp) with statistics, settings and the
+// debug-draw toggles. Viewer is one window's state and its frame; runViewer() opens the window.
 #pragma once
 
+#include <SDL.h>
+
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "box2d_overlay.hpp"
@@ -12,6 +17,7 @@
 #include "mouse_spring.hpp"
 #include "options.hpp"
 #include "perpdot/scene.hpp"
+#include "player_mover.hpp"
 
 namespace perpdot::demo {
 
@@ -47,9 +53,61 @@ struct ViewerState {
     bool resetRequested = false;
     bool stepRequested = false;
     int sceneRequested = -1;
+    // Where the panel drew each of its checkboxes last frame, by label: top-left and bottom-right
+    // in window pixels (what a click must hit; the interaction tests click them by name).
+    std::map<std::string, std::pair<Vec2, Vec2>> checkboxes;
 };
 
-// Runs until the window closes (or after options.exitAfter frames). Returns the exit status.
+// One viewer window: its scenes, camera, mouse spring and mover, fed SDL events frame by frame.
+class Viewer {
+public:
+    Viewer(const Options& options, SDL_Renderer* renderer);
+
+    // Until quit (Esc, Q, closing the window) or options.exitAfter frames. Returns the exit status.
+    int run();
+    // One frame: the queued SDL events, the panel's requests, `dt` seconds of simulation (fixed
+    // steps, scaled by the time scale), then drawing.
+    void frame(double dt);
+
+    bool quit() const { return quit_; }
+    const ViewerState& state() const { return state_; }
+    const Camera& camera() const { return camera_; }
+    const PlayerMover& mover() const { return mover_; }
+
+private:
+    void load(int index, bool newScene);
+    void fitView();
+    void handleRequests();
+    void step();
+    void simulate(double dt);
+    Vec2 mouseWorld() const { return camera_.toWorld(mouse_); }
+    void explodeAtCursor();
+    void placeMoverAtCursor();
+    void handleKey(const SDL_Keysym& key);
+    void handleEvent(const SDL_Event& e);
+    void render();
+
+    Options options_;
+    SDL_Renderer* renderer_;
+    ViewerState state_;
+    Camera camera_;
+    MouseSpring spring_;
+    PlayerMover mover_;
+    Vec2 mouse_{};  // last mouse position seen in an event, window pixels
+    double accumulator_ = 0.0;
+    bool panning_ = false;
+    bool quit_ = false;
+};
+
+// ImGui context and its two SDL backends, for the lifetime of the object.
+struct ImGuiSession {
+    ImGuiSession(SDL_Window* window, SDL_Renderer* renderer);
+    ~ImGuiSession();
+    ImGuiSession(const ImGuiSession&) = delete;
+    ImGuiSession& operator=(const ImGuiSession&) = delete;
+};
+
+// Opens the window and runs a Viewer in it. Returns the exit status.
 int runViewer(const Options& options);
 
 // panel.cpp

@@ -172,9 +172,11 @@ struct SceneWorld {
 
     /// Apply the scene's actions whose range contains `step` (before stepping it).
     void applyActions(int step);
-    /// applyActions(stepIndex) then world.step(scene.timestep); counts steps itself.
+    /// beforeStep(), applyActions(stepIndex), then world.step(scene.timestep); counts steps itself.
     void step();
     int stepIndex = 0;  ///< steps taken by step()
+    /// What a built-in scene does before each step (perpdot/feature_scenes.hpp); may be empty.
+    std::function<void(SceneWorld&)> beforeStep{};
 };
 /// A World with the scene's settings, bodies, shapes and joints (Error if a definition is invalid).
 SceneWorld buildWorld(const Scene& scene);

@@ -199,6 +199,7 @@ void SceneWorld::applyActions(int step) {
 }
 
 void SceneWorld::step() {
+    if (beforeStep) beforeStep(*this);
     applyActions(stepIndex);
     world.step(scene.timestep);
     ++stepIndex;

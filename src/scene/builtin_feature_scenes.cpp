@@ -8,6 +8,7 @@
 
 #include "perpdot/feature_scenes.hpp"
 #include "scene/builtin_registry.hpp"
+#include "scene/mover_course.hpp"
 #include "scene/scene_builders.hpp"
 
 namespace perpdot {
@@ -175,6 +176,7 @@ const std::map<std::string_view, SceneBehaviour>& behaviours() {
         {"sensor_zone", sensorZoneBehaviour()},
         {"conveyor", conveyorBehaviour()},
         {"laser", laserBehaviour()},
+        {"mover_course", moverCourseBehaviour()},
     };
     return table;
 }
@@ -191,6 +193,9 @@ std::vector<BuiltinScene> featureScenes() {
         {"laser", "a ray-cast laser reflects off boxes, balls and a turning mirror", laser},
         {"capsules", "capsules land flat on two points, tip over from an end cap, hold on a gentle ramp and slide down a steep one",
          capsules},
+        {"mover_course", "a character mover course (A/D walk, W jumps in the viewer): boxes to push, stairs, a walkable and a "
+                         "too-steep slope, a moving and a one-way platform, a low ceiling",
+         moverCourse},
     };
 }
 
@@ -201,7 +206,10 @@ const SceneBehaviour* findSceneBehaviour(std::string_view sceneName) {
 
 SceneWorld buildWorldWithBehaviour(const Scene& scene) {
     SceneWorld built = buildWorld(scene);
-    if (const SceneBehaviour* behaviour = findSceneBehaviour(scene.name); behaviour && behaviour->setup) behaviour->setup(built);
+    const SceneBehaviour* behaviour = findSceneBehaviour(scene.name);
+    if (!behaviour) return built;
+    if (behaviour->setup) behaviour->setup(built);
+    built.beforeStep = behaviour->beforeStep;
     return built;
 }
 

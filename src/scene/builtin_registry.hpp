@@ -13,10 +13,10 @@ namespace perpdot {
 std::vector<BuiltinScene> coreScenes();   // core_scenes.cpp: single bodies, stacks, friction, restitution
 std::vector<BuiltinScene> benchScenes();  // bench_scenes.cpp: the large scenes of the benchmarks
 BuiltinScene ragdollRainScene();          // ragdoll_rain.cpp: the benchmark whose script spawns ragdolls
-std::vector<BuiltinScene> demoScenes();
+std::vector<BuiltinScene> demoScenes();  // builtin_demo_scenes.cpp: showcases for the viewer (card house, dominoes, ...)
 std::vector<BuiltinScene> jointScenes();  // builtin_joint_scenes.cpp: pendulums, chain, bridge, ragdoll, car, joint grid, windmill, slider
 std::vector<BuiltinScene> coupledJointScenes();  // builtin_coupled_joint_scenes.cpp: gears, pulley
 std::vector<BuiltinScene> stressScenes();   // stress_scenes.cpp: the torture suite of `perpdot stress`
-std::vector<BuiltinScene> featureScenes();  // builtin_feature_scenes.cpp: one-way platforms, sensors, bullets, conveyors, laser   // builtin_demo_scenes.cpp: showcases for the viewer (card house, dominoes, ...)
+std::vector<BuiltinScene> featureScenes();  // builtin_feature_scenes.cpp: one-way platforms, sensors, bullets, conveyors, laser, capsules, mover course
 
 }  // namespace perpdot
