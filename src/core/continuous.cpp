@@ -113,8 +113,7 @@ void World::Impl::solveContinuous(int index, Vec2 c0, float a0) {
     // Back to the pose at the time of impact: c = c0 + t (c1 - c0), θ = θ0 + t (θ1 - θ0).
     b.center = c0 + t * (b.center - c0);
     b.angle = a0 + t * (b.angle - a0);
-    b.xf.q = Rot::fromAngle(b.angle);
-    b.xf.p = b.center - rotate(b.xf.q, b.localCenter);
+    b.xf = b.derivedTransform();
 }
 
 }  // namespace perpdot

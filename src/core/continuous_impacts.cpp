@@ -293,8 +293,7 @@ void World::Impl::solveMovingImpacts(float h) {
         if (m.moved && !b.awake) wake(m.body);
         b.center = m.c1;
         b.angle = m.a1;
-        b.xf.q = Rot::fromAngle(b.angle);
-        b.xf.p = b.center - rotate(b.xf.q, b.localCenter);
+        b.xf = b.derivedTransform();
         b.v = m.v;
         b.w = m.w;
         synchronizeProxies(m.body, b.center - m.stepStart);

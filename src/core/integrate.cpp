@@ -130,8 +130,7 @@ void finalizeBodies(World::Impl& w, float h) {
         b.w = s.w;
         b.center = b.center + s.dp;
         b.angle = b.angle + dAngle;
-        b.xf.q = Rot::fromAngle(b.angle);
-        b.xf.p = b.center - rotate(b.xf.q, b.localCenter);
+        b.xf = b.derivedTransform();
         anyBullet = anyBullet || b.bullet;
         if (w.def.enableContinuous && w.isFast(index, c0, a0)) {
             w.movers.push_back({.body = index, .c0 = c0, .a0 = a0, .v = b.v, .w = b.w, .stepStart = c0, .fast = true});

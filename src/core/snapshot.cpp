@@ -9,6 +9,7 @@
 // snapshot depend on the world's state alone. The reader checks every count, index and link before the world is
 // touched: corrupt bytes give perpdot::Error and leave the world as it was.
 #include <algorithm>
+#include <cstring>
 #include <unordered_set>
 
 #include "core/snapshot.hpp"
@@ -36,7 +37,15 @@ WorldDef readDef(ByteReader& in) {
 
 // --- bodies ---
 
-void writeBody(ByteWriter& out, const World::Impl& w, const Body& b) {
+// Bitwise equality of two transforms (a derived one must reproduce the stored one exactly).
+bool sameBits(const Transform& a, const Transform& b) { return std::memcmp(&a, &b, sizeof(Transform)) == 0; }
+
+// futureOnly: a transform that is exactly the one the pose derives (every body a step or a
+// continuous pass has moved) is written as zeros — a zero rotation is no transform — and derived
+// again on reading, so a compact snapshot does not pay for the pose twice.
+void writeBody(ByteWriter& out, const World::Impl& w, const Body& body, bool futureOnly) {
+    Body b = body;
+    if (futureOnly && sameBits(b.xf, b.derivedTransform())) b.xf = {{0.0f, 0.0f}, {0.0f, 0.0f}};
     writeFields(out, b);
     out.u32(static_cast<uint32_t>(b.shapes.size()));
     for (int s : b.shapes) out.i32(s);
@@ -50,6 +59,7 @@ void writeBody(ByteWriter& out, const World::Impl& w, const Body& b) {
 // Reads a live body; its shape list and contact edges are checked against the other pools later.
 void readBody(ByteReader& in, Body& b, std::vector<int>& edges, int bodyCount, int shapeLimit, int edgeLimit) {
     readFields(in, b);
+    if (b.xf.q.c == 0.0f && b.xf.q.s == 0.0f) b.xf = b.derivedTransform();
     if (b.type > BodyType::Dynamic) in.fail("body type " + std::to_string(static_cast<int>(b.type)) + " is unknown");
     if (b.mass < 0 || b.invMass < 0 || b.inertia < 0 || b.invInertia < 0) in.fail("negative mass or inertia");
     if (b.jointCount < 0 || b.jointCount > 0x3FFFFFFF) in.fail("joint count " + std::to_string(b.jointCount) + " is out of range");
@@ -282,7 +292,7 @@ std::vector<uint8_t> writeSnapshot(const World::Impl& w, bool futureOnly) {
     for (const Body& b : w.bodies) {
         out.u32(b.generation);
         out.boolean(b.alive);
-        if (b.alive) writeBody(out, w, b);
+        if (b.alive) writeBody(out, w, b, futureOnly);
     }
     writeFreeList(out, w.freeBodies);
 

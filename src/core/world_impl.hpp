@@ -42,6 +42,12 @@ struct Body {
     int solverIndex = 0;   // slot in StepContext::states during a step; 0 = static
     int jointCount = 0;    // joints attached (maintained by the joint store)
     int islandNext = -1;   // next body of the island it fell asleep with
+
+    // The origin frame of the pose (θ, c): q = Rot(θ), x = c − R(θ)·localCenter.
+    Transform derivedTransform() const {
+        const Rot q = Rot::fromAngle(angle);
+        return {center - rotate(q, localCenter), q};
+    }
 };
 
 struct ShapeData {
