@@ -257,6 +257,9 @@ void prepareJoints(World::Impl& w, const StepContext& ctx) {
         s.colors.push_back(color);
     }
     s.prepared.resize(s.awake.size());
+    // Joints of revolute trees leave the colours: they are solved directly (joint_tree.hpp).
+    findRevoluteTrees(s.trees, s.prepared, static_cast<int>(w.states.size()));
+    for (int k : s.trees.joints) --(inLanes(s.colors[k], s.prepared[k]) ? laneCount[s.colors[k]] : scalarCount[s.colors[k]]);
 
     for (int color = 0; color <= overflow; ++color) {
         s.blockStart[color + 1] = s.blockStart[color] + (laneCount[color] + 3) / 4;
@@ -268,6 +271,7 @@ void prepareJoints(World::Impl& w, const StepContext& ctx) {
     std::array<OpenBlock, overflow> open;
     for (int k = 0; k < static_cast<int>(s.prepared.size()); ++k) {
         const int color = s.colors[k];
+        if (s.trees.inTree[k]) continue;
         if (!inLanes(color, s.prepared[k])) {
             s.scalarOrder[nextScalar[color]++] = k;
             continue;
@@ -309,6 +313,7 @@ void warmStartJoints(World::Impl& w, const StepContext&) {
                 case JointType::Pulley: warmStartPulley(j, p); break;
             }
         });
+    warmStartRevoluteTrees(w, store(w).trees, store(w).prepared);
 }
 
 void solveJoints(World::Impl& w, const StepContext& ctx, bool useBias) {
@@ -328,13 +333,17 @@ void solveJoints(World::Impl& w, const StepContext& ctx, bool useBias) {
                 case JointType::Pulley: solvePulley(j, p, ctx, useBias); break;
             }
         });
+    solveRevoluteTrees(w, store(w).trees, store(w).prepared, ctx, useBias);
 }
+
+void projectJoints(World::Impl& w) { projectRevoluteTrees(w, store(w).trees, store(w).prepared); }
 
 // The accumulated impulses go back to the joints, ready for the next step's warm start.
 void storeJointImpulses(World::Impl& w, const StepContext&) {
     JointStore& s = store(w);
     for (const RevoluteBlock& block : s.revoluteBlocks) unpackRevoluteImpulses(block, s.joints);
     for (int position : s.scalarOrder) s.joints[s.awake[position]].data = s.prepared[position].data;
+    for (int position : s.trees.joints) s.joints[s.awake[position]].data = s.prepared[position].data;
 }
 
 bool jointAllowsCollision(const World::Impl& w, int bodyA, int bodyB) {

@@ -20,6 +20,8 @@ void prepareJoints(World::Impl& world, const StepContext& ctx);
 void warmStartJoints(World::Impl& world, const StepContext& ctx);
 void solveJoints(World::Impl& world, const StepContext& ctx, bool useBias);
 void storeJointImpulses(World::Impl& world, const StepContext& ctx);
+// After the substeps: a Newton step on the positions of each revolute tree (joint_tree.hpp).
+void projectJoints(World::Impl& world);
 
 // Reports (and destroys, where asked) the joints whose reaction passed their break limits this
 // step; run after storeJointImpulses.

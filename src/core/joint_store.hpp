@@ -13,6 +13,7 @@
 
 #include "core/graph_color.hpp"
 #include "core/joint.hpp"
+#include "core/joint_tree.hpp"
 #include "core/softness.hpp"
 #include "core/step_context.hpp"
 
@@ -190,6 +191,8 @@ struct JointStore {
     std::vector<RevoluteBlock> revoluteBlocks;
     std::vector<int> scalarOrder;
     ColorStarts blockStart{}, scalarStart{};
+    // Revolute trees (joint_tree.hpp): solved directly after the colours, outside them.
+    RevoluteTrees trees;
     // Scratch of prepareJoints, kept to reuse its memory.
     GraphColoring coloring;
     std::vector<int> colors;  // of prepared[k]

@@ -9,7 +9,8 @@
 // snapshot depend on the world's state alone. The reader checks every count, index and link before the world is
 // touched: corrupt bytes give perpdot::Error and leave the world as it was.
 #include <algorithm>
-#include <cstring>
+#include <bit>
+#include <cstdint>
 #include <unordered_set>
 
 #include "core/snapshot.hpp"
@@ -38,7 +39,10 @@ WorldDef readDef(ByteReader& in) {
 // --- bodies ---
 
 // Bitwise equality of two transforms (a derived one must reproduce the stored one exactly).
-bool sameBits(const Transform& a, const Transform& b) { return std::memcmp(&a, &b, sizeof(Transform)) == 0; }
+bool sameBits(float a, float b) { return std::bit_cast<uint32_t>(a) == std::bit_cast<uint32_t>(b); }
+bool sameBits(const Transform& a, const Transform& b) {
+    return sameBits(a.p.x, b.p.x) && sameBits(a.p.y, b.p.y) && sameBits(a.q.c, b.q.c) && sameBits(a.q.s, b.q.s);
+}
 
 // futureOnly: a transform that is exactly the one the pose derives (every body a step or a
 // continuous pass has moved) is written as zeros — a zero rotation is no transform — and derived

@@ -58,6 +58,7 @@ void World::step(float timeStep) {
         solveJoints(w, ctx, false);  // relax: the same rows without bias
         solveContacts(w, ctx, false);
     }
+    projectJoints(w);  // project: the anchors of revolute trees meet again
     unpackContactBlocks(w);
     applyRestitution(w, ctx);  // restitution: Hecker's bounce, once per step
     storeJointImpulses(w, ctx);  // store: impulses for the next step's warm start
