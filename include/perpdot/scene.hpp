@@ -107,12 +107,14 @@ struct SceneJoint {
 /// A force, impulse or torque the scene applies to a body over a range of steps.
 struct SceneAction {
     /// What is applied.
-    enum class Kind { Force, Impulse, Torque, AngularImpulse };
+    enum class Kind { Force, Impulse, Torque, AngularImpulse, Explosion };
     Kind kind = Kind::Force;  ///< what is applied
-    std::string body{};  ///< name of the body
+    std::string body{};  ///< name of the body (empty for an explosion, which acts on every shape in reach)
     Vec2 value{};               ///< force / impulse
-    float scalar = 0.0f;        ///< torque / angular impulse
-    std::optional<Vec2> point{};  ///< world; default: centre of mass
+    float scalar = 0.0f;        ///< torque / angular impulse / an explosion's impulse at its centre (N·s)
+    std::optional<Vec2> point{};  ///< world; default: centre of mass; an explosion's centre (required)
+    float radius = 0.0f;          ///< explosion: reach, m (World::explode)
+    bool blockedByStatic = false;  ///< explosion: ExplosionDef::blockedByStatic
     int firstStep = 0;  ///< first step index it applies to
     int lastStep = 0;  ///< last step index it applies to (inclusive)
     /// Equal in every field (a scene that round-trips through JSON compares equal).

@@ -1,6 +1,7 @@
 // A Scene built into perpdot's World, and the scene's scripted actions applied step by step.
 #include "scene/build_world.hpp"
 
+#include <cmath>
 #include <limits>
 #include <string>
 #include <unordered_map>
@@ -165,9 +166,17 @@ SceneBodies addToWorld(World& world, const Scene& scene) {
             throw Error(element("joints", i) + ": " + e.what());
         }
     }
-    for (size_t i = 0; i < scene.actions.size(); ++i)
-        if (!index.contains(scene.actions[i].body))
-            throw Error(element("actions", i) + ".body: no body named \"" + scene.actions[i].body + "\"");
+    for (size_t i = 0; i < scene.actions.size(); ++i) {
+        const SceneAction& a = scene.actions[i];
+        if (a.kind == SceneAction::Kind::Explosion) {
+            // World::explode checks radius and impulse when it runs; the centre is the scene's to give.
+            if (!a.point || !isFinite(*a.point)) throw Error(element("actions", i) + ".point: an explosion needs a finite centre");
+            if (!(a.radius > 0.0f) || !std::isfinite(a.radius)) throw Error(element("actions", i) + ".radius: must be > 0 and finite");
+            if (!(a.scalar >= 0.0f) || !std::isfinite(a.scalar)) throw Error(element("actions", i) + ".value: must be >= 0 and finite");
+        } else if (!index.contains(a.body)) {
+            throw Error(element("actions", i) + ".body: no body named \"" + a.body + "\"");
+        }
+    }
     return built;
 }
 
@@ -185,6 +194,10 @@ SceneWorld buildWorld(const Scene& scene) {
 void SceneWorld::applyActions(int step) {
     for (const SceneAction& a : scene.actions) {
         if (step < a.firstStep || step > a.lastStep) continue;
+        if (a.kind == SceneAction::Kind::Explosion) {
+            world.explode({.position = *a.point, .radius = a.radius, .impulse = a.scalar, .blockedByStatic = a.blockedByStatic});
+            continue;
+        }
         size_t i = 0;
         while (scene.bodies[i].name != a.body) ++i;  // buildWorld checked that the body exists
         const BodyId body = bodies[i];
@@ -194,6 +207,7 @@ void SceneWorld::applyActions(int step) {
             case SceneAction::Kind::Impulse: world.applyLinearImpulse(body, a.value, point); break;
             case SceneAction::Kind::Torque: world.applyTorque(body, a.scalar); break;
             case SceneAction::Kind::AngularImpulse: world.applyAngularImpulse(body, a.scalar); break;
+            case SceneAction::Kind::Explosion: break;  // above
         }
     }
 }

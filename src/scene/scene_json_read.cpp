@@ -187,7 +187,8 @@ constexpr std::pair<const char*, JointType> jointTypes[] = {
     {"gear", JointType::Gear}, {"pulley", JointType::Pulley}};
 constexpr std::pair<const char*, SceneAction::Kind> actionKinds[] = {
     {"force", SceneAction::Kind::Force}, {"impulse", SceneAction::Kind::Impulse},
-    {"torque", SceneAction::Kind::Torque}, {"angular_impulse", SceneAction::Kind::AngularImpulse}};
+    {"torque", SceneAction::Kind::Torque}, {"angular_impulse", SceneAction::Kind::AngularImpulse},
+    {"explosion", SceneAction::Kind::Explosion}};
 
 Filter readFilter(const Object& o) {
     o.allowOnly({scene_keys::filter});
@@ -415,9 +416,35 @@ SceneJoint readJoint(const Object& o, const std::set<std::string>& bodyNames, co
     return j;
 }
 
+// The steps an action applies to: first_step .. last_step, inclusive.
+void readStepRange(const Object& o, SceneAction& a) {
+    a.firstStep = static_cast<int>(o.integer("first_step", 0, 0, maxSceneSteps));
+    a.lastStep = static_cast<int>(o.integer("last_step", a.firstStep, 0, maxSceneSteps));
+    if (a.lastStep < a.firstStep) fail(member(o.path(), "last_step"), "must not be less than first_step");
+}
+
+// World::explode at `point`: `value` N·s at the centre falling off to nothing at `radius`.
+SceneAction readExplosion(const Object& o) {
+    o.allowOnly({scene_keys::explosion});
+    SceneAction a{.kind = SceneAction::Kind::Explosion};
+    a.point = o.boundedVec("point", {}, maxCoordinate);
+    if (!o.has("point")) fail(member(o.path(), "point"), "missing required key (the explosion's centre)");
+    a.radius = o.nonNegative("radius", 0.0f, maxCoordinate);
+    if (!(a.radius > 0.0f)) fail(member(o.path(), "radius"), "must be > 0");
+    a.scalar = o.nonNegative("value", 0.0f, maxCoordinate);
+    if (!o.has("value")) fail(member(o.path(), "value"), "missing required key (the impulse at the centre, N·s)");
+    a.blockedByStatic = o.boolean("blocked_by_static", false);
+    readStepRange(o, a);
+    return a;
+}
+
 SceneAction readAction(const Object& o, const std::set<std::string>& bodyNames) {
     SceneAction a;
     a.kind = enumValue(o.requiredString("type"), actionKinds, member(o.path(), "type"));
+    if (a.kind == SceneAction::Kind::Explosion) {
+        if (o.has("body")) fail(member(o.path(), "body"), "an explosion acts on every shape in its radius: it takes no body");
+        return readExplosion(o);
+    }
     const bool linear = a.kind == SceneAction::Kind::Force || a.kind == SceneAction::Kind::Impulse;
     if (linear)
         o.allowOnly({scene_keys::action, scene_keys::actionPoint});
@@ -431,9 +458,7 @@ SceneAction readAction(const Object& o, const std::set<std::string>& bodyNames) 
     } else {
         a.scalar = o.numberAt("value");
     }
-    a.firstStep = static_cast<int>(o.integer("first_step", 0, 0, maxSceneSteps));
-    a.lastStep = static_cast<int>(o.integer("last_step", a.firstStep, 0, maxSceneSteps));
-    if (a.lastStep < a.firstStep) fail(member(o.path(), "last_step"), "must not be less than first_step");
+    readStepRange(o, a);
     return a;
 }
 

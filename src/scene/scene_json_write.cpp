@@ -76,6 +76,7 @@ const char* name(SceneAction::Kind kind) {
         case SceneAction::Kind::Force: return "force";
         case SceneAction::Kind::Impulse: return "impulse";
         case SceneAction::Kind::Torque: return "torque";
+        case SceneAction::Kind::Explosion: return "explosion";
         case SceneAction::Kind::AngularImpulse: break;
     }
     return "angular_impulse";
@@ -217,12 +218,24 @@ Json jointJson(const SceneJoint& j) {
 Json actionJson(const SceneAction& a) {
     Json o;
     o["type"] = name(a.kind);
-    o["body"] = a.body;
-    if (a.kind == SceneAction::Kind::Force || a.kind == SceneAction::Kind::Impulse) {
-        o["value"] = vec(a.value);
-        if (a.point) o["point"] = vec(*a.point);
-    } else {
-        o["value"] = shortest(a.scalar);
+    switch (a.kind) {
+        case SceneAction::Kind::Explosion:
+            o["point"] = vec(a.point.value_or(Vec2{}));
+            o["radius"] = shortest(a.radius);
+            o["value"] = shortest(a.scalar);
+            if (a.blockedByStatic) o["blocked_by_static"] = true;
+            break;
+        case SceneAction::Kind::Force:
+        case SceneAction::Kind::Impulse:
+            o["body"] = a.body;
+            o["value"] = vec(a.value);
+            if (a.point) o["point"] = vec(*a.point);
+            break;
+        case SceneAction::Kind::Torque:
+        case SceneAction::Kind::AngularImpulse:
+            o["body"] = a.body;
+            o["value"] = shortest(a.scalar);
+            break;
     }
     o["first_step"] = a.firstStep;
     put(o, "last_step", a.lastStep, a.firstStep);

@@ -42,11 +42,12 @@ inline constexpr std::string_view pulley[] = {"anchor_b", "ground_anchor_a", "gr
 
 inline constexpr std::string_view action[] = {"type", "body", "value", "first_step", "last_step"};
 inline constexpr std::string_view actionPoint[] = {"point"};  // force and impulse only
+inline constexpr std::string_view explosion[] = {"type", "point", "value", "radius", "blocked_by_static", "first_step", "last_step"};
 
 // Every list above, for the documentation test.
 inline std::vector<KeyList> all() {
     return {root,     solver, body,     filter,    shape, circle, box,   polygon, segment, chain, capsule,
-            joint,    jointAnchors, revolute, distance, prismatic, weld, wheel, motor, gear, pulley, action, actionPoint};
+            joint,    jointAnchors, revolute, distance, prismatic, weld, wheel, motor, gear, pulley, action, actionPoint, explosion};
 }
 
 }  // namespace perpdot::scene_keys
