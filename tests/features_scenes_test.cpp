@@ -1,6 +1,8 @@
 // The feature demo scenes do what their descriptions say once their SceneBehaviour is applied.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <vector>
 
 #include "perpdot/feature_scenes.hpp"
@@ -59,12 +61,13 @@ TEST(FeaturesScenes, SensorZoneReportsVisitors) {
 
 struct RecordingDraw : DebugDraw {
     std::vector<std::pair<Vec2, Vec2>> segments;
+    std::vector<std::pair<Vec2, float>> points;  // position, size in pixels
     void drawPolygon(std::span<const Vec2>, Color) override {}
     void drawSolidPolygon(std::span<const Vec2>, float, Color) override {}
     void drawCircle(Vec2, float, Color) override {}
     void drawSolidCircle(Vec2, float, Rot, Color) override {}
     void drawSegment(Vec2 a, Vec2 b, Color) override { segments.push_back({a, b}); }
-    void drawPoint(Vec2, float, Color) override {}
+    void drawPoint(Vec2 p, float size, Color) override { points.push_back({p, size}); }
 };
 
 TEST(FeaturesScenes, LaserBeamEndsOnSurfaces) {
@@ -78,6 +81,27 @@ TEST(FeaturesScenes, LaserBeamEndsOnSurfaces) {
     // The first piece ends on a shape: a tiny query box there finds one.
     const Vec2 end = draw.segments[0].second;
     EXPECT_FALSE(sw.world.overlapAABB({end - Vec2{0.02f, 0.02f}, end + Vec2{0.02f, 0.02f}}).empty());
+}
+
+// Each swept shape's first touch (the 7-pixel points) lies on a shape of the world, and a sweep
+// that touches anything reports that touch among all its hits (the 4-pixel points).
+TEST(FeaturesScenes, ShapeCastsMarkTheFirstShapeOnTheirPath) {
+    SceneWorld sw = buildFeatureScene("shape_casts");
+    int firstTouches = 0;
+    for (int frame = 0; frame < 8; ++frame) {
+        runScene(sw, 40);
+        RecordingDraw draw;
+        findSceneBehaviour("shape_casts")->draw(sw, draw);
+        for (const auto& [p, size] : draw.points) {
+            if (size != 7.0f) continue;
+            ++firstTouches;
+            EXPECT_FALSE(sw.world.overlapAABB({p - Vec2{0.02f, 0.02f}, p + Vec2{0.02f, 0.02f}}).empty()) << p.x << ", " << p.y;
+            const bool listed = std::any_of(draw.points.begin(), draw.points.end(),
+                                            [&](const auto& q) { return q.second == 4.0f && distance(q.first, p) < 1e-6f; });
+            EXPECT_TRUE(listed) << "the closest hit is one of all the hits";
+        }
+    }
+    EXPECT_GE(firstTouches, 8) << "at least one of the two sweeps touches something in every frame";
 }
 
 }  // namespace

@@ -2,9 +2,12 @@
 // (continuous collision), conveyor belts (tangent speed) and a ray-cast laser. The geometry is a
 // Scene like any other; what a scene file cannot express lives in each scene's SceneBehaviour.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
+#include <span>
 #include <string>
+#include <variant>
 
 #include "perpdot/feature_scenes.hpp"
 #include "scene/builtin_registry.hpp"
@@ -170,6 +173,54 @@ SceneBehaviour laserBehaviour() {
             }};
 }
 
+// Boxes and balls to sweep shapes through: a ball falls on a ledge, the rest lie still.
+Scene shapeCasts() {
+    Scene s;
+    s.steps = 1200;
+    addGround(s, 10.0f);
+    addBody(s, {.type = BodyType::Static, .position = {-2.0f, 3.0f}, .angle = 0.3f, .shapes = {boxShape(1.5f, 0.15f)}});
+    for (int i = 0; i < 5; ++i)
+        addBody(s, {.position = {-6.0f + 3.0f * static_cast<float>(i), 0.5f + 0.5f * static_cast<float>(i % 2)},
+                    .shapes = {i % 2 ? circleShape(0.5f) : boxShape(0.5f, 0.5f)}});
+    addBody(s, {.position = {-2.0f, 6.0f}, .shapes = {circleShape(0.4f)}});
+    return s;
+}
+
+// The swept shape at transform xf: a box's outline or a circle.
+void drawCastShape(DebugDraw& draw, const CastShape& shape, const Transform& xf, Color color) {
+    if (const auto* c = std::get_if<Circle>(&shape)) {
+        draw.drawCircle(transformPoint(xf, c->center), c->radius, color);
+    } else if (const auto* p = std::get_if<Polygon>(&shape)) {
+        std::array<Vec2, maxPolygonVertices> v;
+        for (int i = 0; i < p->count; ++i) v[i] = transformPoint(xf, p->vertices[i]);
+        draw.drawPolygon(std::span<const Vec2>(v.data(), static_cast<size_t>(p->count)), color);
+    }
+}
+
+// A turning box and a circle swept left to right at heights that rise and fall: the path, the
+// shape where it starts, where it first touches (castShapeClosest) with the hit's normal, and a
+// dot at every shape the whole sweep touches (castShape).
+SceneBehaviour shapeCastsBehaviour() {
+    return {.setup = {}, .draw = [](const SceneWorld& sw, DebugDraw& draw) {
+                const float t = 0.01f * static_cast<float>(sw.stepIndex);
+                const CastShape shapes[] = {makeBox(0.4f, 0.25f), Circle{{}, 0.3f}};
+                for (int k = 0; k < 2; ++k) {
+                    const Transform xf{{-9.0f, 3.0f + 2.5f * std::sin(t + 1.5f * static_cast<float>(k))}, Rot::fromAngle(k == 0 ? t : 0.0f)};
+                    const Vec2 translation{18.0f, -1.0f};
+                    const Color path{120, 120, 255, 255}, hitColor{255, 200, 0, 255};
+                    draw.drawSegment(xf.p, xf.p + translation, path);
+                    drawCastShape(draw, shapes[k], xf, path);
+                    for (const ShapeCastHit& hit : sw.world.castShape(shapes[k], xf, translation))
+                        draw.drawPoint(hit.point, 4.0f, path);
+                    if (const std::optional<ShapeCastHit> hit = sw.world.castShapeClosest(shapes[k], xf, translation)) {
+                        drawCastShape(draw, shapes[k], {xf.p + hit->fraction * translation, xf.q}, hitColor);
+                        draw.drawPoint(hit->point, 7.0f, hitColor);
+                        draw.drawSegment(hit->point, hit->point + 0.5f * hit->normal, hitColor);
+                    }
+                }
+            }};
+}
+
 const std::map<std::string_view, SceneBehaviour>& behaviours() {
     static const std::map<std::string_view, SceneBehaviour> table = {
         {"one_way_platform", oneWayBehaviour()},
@@ -177,6 +228,7 @@ const std::map<std::string_view, SceneBehaviour>& behaviours() {
         {"conveyor", conveyorBehaviour()},
         {"laser", laserBehaviour()},
         {"mover_course", moverCourseBehaviour()},
+        {"shape_casts", shapeCastsBehaviour()},
     };
     return table;
 }
@@ -193,6 +245,8 @@ std::vector<BuiltinScene> featureScenes() {
         {"laser", "a ray-cast laser reflects off boxes, balls and a turning mirror", laser},
         {"capsules", "capsules land flat on two points, tip over from an end cap, hold on a gentle ramp and slide down a steep one",
          capsules},
+        {"shape_casts", "a turning box and a circle swept through the scene: first touch, its normal, and every shape hit (World::castShape)",
+         shapeCasts},
         {"mover_course", "a character mover course (A/D walk, W jumps in the viewer): boxes to push, stairs, a walkable and a "
                          "too-steep slope, a moving and a one-way platform, a low ceiling",
          moverCourse},
