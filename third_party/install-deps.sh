@@ -6,6 +6,7 @@ packages=(
   build-essential cmake git pkg-config
   clang clang-tidy libclang-rt-14-dev   # gcc-vs-clang determinism, clang-tidy, libFuzzer
   libbox2d-dev            # collision: b2DynamicTree, b2Collide*, and b2World for cross-checks
+  libtbb-dev              # the default workers of a threaded step (WorldDef::workerCount)
   nlohmann-json3-dev      # scene files
   libgtest-dev libgmock-dev libbenchmark-dev
   libsdl2-dev libsdl2-image-dev libimgui-dev   # demo viewer and headless PNG frames

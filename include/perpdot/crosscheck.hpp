@@ -143,6 +143,7 @@ struct TimingOptions {
     int repeats = 3;  ///< the median is reported
     bool perpdot = true;  ///< time perpdot (false: its EngineTiming stays zero)
     bool box2d = true;    ///< time Box2D (false: its EngineTiming stays zero)
+    int workers = 1;      ///< perpdot's WorldDef::workerCount (Box2D 2.4 has one thread)
 };
 /// One engine's timing of one scene.
 struct EngineTiming {

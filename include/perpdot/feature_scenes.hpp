@@ -34,7 +34,7 @@ struct SceneBehaviour {
 /// The behaviour of a built-in scene, or nullptr when the scene needs none.
 const SceneBehaviour* findSceneBehaviour(std::string_view sceneName);
 
-/// buildWorld(scene), then the setup() of the behaviour named like the scene, if it has one.
-SceneWorld buildWorldWithBehaviour(const Scene& scene);
+/// buildWorld(scene, workerCount), then the setup() of the behaviour named like the scene, if it has one.
+SceneWorld buildWorldWithBehaviour(const Scene& scene, int workerCount = 1);
 
 }  // namespace perpdot

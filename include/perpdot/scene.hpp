@@ -180,7 +180,9 @@ struct SceneWorld {
     /// What a built-in scene does before each step (perpdot/feature_scenes.hpp); may be empty.
     std::function<void(SceneWorld&)> beforeStep{};
 };
-/// A World with the scene's settings, bodies, shapes and joints (Error if a definition is invalid).
-SceneWorld buildWorld(const Scene& scene);
+/// A World with the scene's settings, bodies, shapes and joints (Error if a definition is invalid),
+/// stepped by `workerCount` threads (WorldDef::workerCount; not part of the scene: the results
+/// are the same for any count).
+SceneWorld buildWorld(const Scene& scene, int workerCount = 1);
 
 }  // namespace perpdot

@@ -17,6 +17,7 @@
 #include "perpdot/mover.hpp"
 #include "perpdot/queries.hpp"
 #include "perpdot/shapes.hpp"
+#include "perpdot/tasks.hpp"
 
 namespace perpdot {
 
@@ -43,6 +44,14 @@ struct WorldDef {
     /// each, so a 1 m box rests at 0.515 m (like-for-like cross-checks). Off (the default): contacts
     /// are measured between the true surfaces and the skin is only a speculative margin.
     bool box2dSkin = false;
+    /// Threads that run the step: 1 runs it on the caller's thread alone; N > 1 runs its parallel
+    /// stages on N workers (oneTBB, or enqueueTask/finishTask when both are given). The results
+    /// are bit-identical for every worker count.
+    int workerCount = 1;
+    /// A game's job system (both or neither): perpdot hands it its parallel loops (tasks.hpp).
+    EnqueueTaskFn* enqueueTask = nullptr;
+    FinishTaskFn* finishTask = nullptr;  ///< waits for a task of enqueueTask
+    void* userTaskContext = nullptr;     ///< passed to enqueueTask and finishTask
 };
 
 /// One point of a contact manifold.

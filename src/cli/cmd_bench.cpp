@@ -1,10 +1,11 @@
-// perpdot bench [SCENE…] [--steps N] [--repeat R] [--engine perpdot|box2d]
+// perpdot bench [SCENE…] [--steps N] [--repeat R] [--engine perpdot|box2d] [--workers N]
 // The same scenes timed in perpdot and in Box2D 2.4 (the scene's iterations, 8/3 by default;
 // sleeping as the scene says), median of R repeats, with each engine's end state beside it:
 // touching contacts and the scene's stability figure (crosscheck/stability.hpp).
 // Without SCENE: pyramid and large_pyramid, a run of seconds; the seven benchmark scenes take
 // minutes and are named explicitly (docs/crosscheck.md). --engine times one engine alone (its
 // stability over a whole scene where the other is too slow); the other's columns show "-".
+// --workers N steps perpdot on N threads (WorldDef::workerCount); Box2D 2.4 has one.
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -17,12 +18,13 @@
 namespace perpdot::cli {
 
 int benchCommand(Args args) {
-    const Flags flags(args, {"--steps", "--repeat", "--engine"});
+    const Flags flags(args, {"--steps", "--repeat", "--engine", "--workers"});
     std::vector<std::string> names = flags.positional();
     if (names.empty()) names = {"pyramid", "large_pyramid"};
     crosscheck::TimingOptions options;
     options.steps = flags.integer("--steps", -1, 1);
     options.repeats = flags.integer("--repeat", 3, 1);
+    options.workers = flags.integer("--workers", 1, 1);
     if (const auto only = flags.text("--engine")) {
         const crosscheck::Engine engine = parseEngine(*only);
         options.perpdot = engine == crosscheck::Engine::Perpdot;
@@ -54,8 +56,9 @@ int benchCommand(Args args) {
                     t.stabilityLabel.c_str(), stability.c_str(), t.stabilityUnit.c_str());
         std::fflush(stdout);
     }
-    std::printf("ms = milliseconds per step, median of %d repeat(s); ratio = perpdot / box2d (below 1x: perpdot faster)\n",
-                options.repeats);
+    std::printf("ms = milliseconds per step, median of %d repeat(s), perpdot on %d worker(s); ratio = perpdot / box2d "
+                "(below 1x: perpdot faster)\n",
+                options.repeats, options.workers);
     return 0;
 }
 

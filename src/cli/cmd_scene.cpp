@@ -27,12 +27,13 @@ struct RunOptions {
     int every = 1;
     std::optional<SaveAt> saveAt{};
     std::string loadPath{};
+    int workers = 1;
 };
 
 RunOptions parseRunOptions(Args args) {
     std::optional<SaveAt> saveAt;
     const std::vector<std::string> rest = takeSaveAt(args, saveAt);
-    const Flags flags(rest, {"--steps", "--csv", "--every", "--load"});
+    const Flags flags(rest, {"--steps", "--csv", "--every", "--load", "--workers"});
     if (flags.positional().empty()) throw UsageError{"no scene given"};
     if (flags.positional().size() > 1) throw UsageError{"more than one scene given"};
     RunOptions options{.scene = flags.positional()[0], .csvPath = flags.text("--csv").value_or("")};
@@ -43,6 +44,7 @@ RunOptions parseRunOptions(Args args) {
     options.every = flags.integer("--every", 1, 1);
     options.saveAt = saveAt;
     options.loadPath = flags.text("--load").value_or("");
+    options.workers = flags.integer("--workers", 1, 1);
     return options;
 }
 
@@ -90,7 +92,7 @@ int runCommand(Args args) {
     const RunOptions options = parseRunOptions(args);
     Scene scene = findScene(options.scene);
     if (options.steps) scene.steps = *options.steps;
-    SceneWorld built = buildWorldWithBehaviour(scene);
+    SceneWorld built = buildWorldWithBehaviour(scene, options.workers);
     if (!options.loadPath.empty()) loadRun(options.loadPath, built);  // continue from its step
     const int first = built.stepIndex + 1;
     if (options.saveAt && (options.saveAt->step < built.stepIndex || options.saveAt->step > scene.steps))

@@ -12,12 +12,12 @@ namespace {
 
 const Command commands[] = {
     {"list", "perpdot list", listCommand},
-    {"run", "perpdot run SCENE|FILE [--steps N] [--csv FILE] [--every K] [--save-at K FILE] [--load FILE]", runCommand},
+    {"run", "perpdot run SCENE|FILE [--steps N] [--csv FILE] [--every K] [--save-at K FILE] [--load FILE] [--workers N]", runCommand},
     {"export", "perpdot export SCENE FILE", exportCommand},
     {"crosscheck", "perpdot crosscheck SCENE|FILE [--steps N] [--tolerance METRES] [--angle-tolerance RAD] [--report DIR]", crosscheckCommand},
     {"record", "perpdot record SCENE|FILE --out FILE.csv [--engine perpdot|box2d] [--steps N]", recordCommand},
     {"compare", "perpdot compare SCENE|FILE --against FILE.csv [--tolerance METRES] [--angle-tolerance RAD]", compareCommand},
-    {"bench", "perpdot bench [SCENE...] [--steps N] [--repeat R] [--engine perpdot|box2d]", benchCommand},
+    {"bench", "perpdot bench [SCENE...] [--steps N] [--repeat R] [--engine perpdot|box2d] [--workers N]", benchCommand},
     {"stress", "perpdot stress [CASE...] [--short]", stressCommand},
 };
 

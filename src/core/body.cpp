@@ -14,7 +14,7 @@ void requireFinite(bool ok, const char* what) {
 
 }  // namespace
 
-World::Impl::Impl(const WorldDef& d) : def(d), joints(makeJointStore()) {
+World::Impl::Impl(const WorldDef& d) : def(d), joints(makeJointStore()), workers(d) {
     if (!isFinite(def.gravity)) throw Error("WorldDef.gravity must be finite");
     if (def.substeps < 1 || def.substeps > 64) throw Error("WorldDef.substeps must be 1..64");
 }

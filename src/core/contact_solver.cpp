@@ -28,17 +28,13 @@ BodyState velocityWithoutContact(const World::Impl& w, const StepContext& ctx, i
 
 }  // namespace
 
-void prepareContacts(World::Impl& w, const StepContext& ctx) {
-    w.constraints.clear();
-    for (int index = 0; index < static_cast<int>(w.contacts.size()); ++index) {
-        const Contact& contact = w.contacts[index];
-        if (!contact.alive || !contact.touching) continue;
+namespace {
+
+// The constraint of a touching contact: masses, softness, anchors and effective masses.
+void prepareContact(const World::Impl& w, const StepContext& ctx, ContactConstraint& c) {
+        const Contact& contact = w.contacts[c.contact];
         const Body& ba = w.bodies[contact.bodyA];
         const Body& bb = w.bodies[contact.bodyB];
-        if (!ba.awake && !bb.awake) continue;
-
-        ContactConstraint& c = w.constraints.emplace_back();
-        c.contact = index;
         c.indexA = ba.solverIndex;
         c.indexB = bb.solverIndex;
         c.invMassA = ba.invMass;
@@ -80,7 +76,22 @@ void prepareContacts(World::Impl& w, const StepContext& ctx) {
             cp.tangentMass = kt > 0.0f ? 1.0f / kt : 0.0f;
             cp.relativeVelocity = dot(relativeVelocity(sa, sb, p.anchorA, p.anchorB), n);
         }
+}
+
+}  // namespace
+
+// The touching contacts with an awake body, in pool order, each prepared by the workers.
+void prepareContacts(World::Impl& w, const StepContext& ctx) {
+    w.constraints.clear();
+    for (int index = 0; index < static_cast<int>(w.contacts.size()); ++index) {
+        const Contact& contact = w.contacts[index];
+        if (!contact.alive || !contact.touching) continue;
+        if (!w.bodies[contact.bodyA].awake && !w.bodies[contact.bodyB].awake) continue;
+        w.constraints.emplace_back().contact = index;
     }
+    w.workers.parallelFor(static_cast<int>(w.constraints.size()), 64, [&](int begin, int end, int) {
+        for (int k = begin; k < end; ++k) prepareContact(w, ctx, w.constraints[k]);
+    });
     prepareContactBlocks(w);
 }
 
@@ -126,16 +137,21 @@ void applyRestitution(World::Impl& w, const StepContext& ctx) {
     }
 }
 
+// Each constraint's impulses back into its contact (a contact has one constraint: the workers
+// write apart).
 void storeContactImpulses(World::Impl& w) {
-    for (const ContactConstraint& c : w.constraints) {
-        Contact& contact = w.contacts[c.contact];
-        contact.rollingImpulse = c.rollingImpulse;
-        for (int i = 0; i < c.pointCount; ++i) {
-            contact.points[i].normalImpulse = c.points[i].normalImpulse;
-            contact.points[i].tangentImpulse = c.points[i].tangentImpulse;
-            contact.points[i].maxNormalImpulse = c.points[i].maxNormalImpulse;
+    w.workers.parallelFor(static_cast<int>(w.constraints.size()), 256, [&](int begin, int end, int) {
+        for (int k = begin; k < end; ++k) {
+            const ContactConstraint& c = w.constraints[k];
+            Contact& contact = w.contacts[c.contact];
+            contact.rollingImpulse = c.rollingImpulse;
+            for (int i = 0; i < c.pointCount; ++i) {
+                contact.points[i].normalImpulse = c.points[i].normalImpulse;
+                contact.points[i].tangentImpulse = c.points[i].tangentImpulse;
+                contact.points[i].maxNormalImpulse = c.points[i].maxNormalImpulse;
+            }
         }
-    }
+    });
 }
 
 }  // namespace perpdot

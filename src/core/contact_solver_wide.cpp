@@ -34,20 +34,32 @@ void packContactRows(const std::array<const ContactRows<float>*, 4>& lanes, Cont
 
 namespace {
 
-// Run `rows(blockRows, a, b)` on every block, then `rows(constraint, a, b)` on every overflow constraint.
+// `rows(blockRows, a, b)` on blocks [begin, end), or `rows(constraint, a, b)` on every overflow
+// constraint when overflow is set.
 template <class Rows>
-void forEachContact(World::Impl& w, std::vector<BodyState>& states, Rows rows) {
-    for (ContactBlock& block : w.contactBlocks) {
+void forContacts(World::Impl& w, int begin, int end, bool overflow, Rows rows) {
+    std::vector<BodyState>& states = w.states;
+    for (int k = begin; k < end; ++k) {
+        ContactBlock& block = w.contactBlocks[k];
         BodyLanes<Float4> a = gatherBodies(states, block.bodyA);
         BodyLanes<Float4> b = gatherBodies(states, block.bodyB);
         rows(block.rows, a, b);
         scatterVelocities(states, block.bodyA, a);
         scatterVelocities(states, block.bodyB, b);
     }
+    if (!overflow) return;
     for (int index : w.overflowConstraints) {
         ContactConstraint& c = w.constraints[index];
         rows(c, states[c.indexA], states[c.indexB]);
     }
+}
+
+void passContacts(World::Impl& w, const StepContext& ctx, RowPass pass, int begin, int end, bool overflow) {
+    if (pass == RowPass::WarmStart)
+        forContacts(w, begin, end, overflow, [](auto& c, auto& a, auto& b) { warmStartContact(c, a, b); });
+    else
+        forContacts(w, begin, end, overflow,
+                    [&, useBias = pass == RowPass::Solve](auto& c, auto& a, auto& b) { solveContact(c, a, b, ctx, useBias); });
 }
 
 }  // namespace
@@ -67,56 +79,75 @@ void prepareContactBlocks(World::Impl& w) {
 
     w.contactBlocks.clear();
     // Blocks of four constraints of one colour; the last block of a colour may have empty lanes.
-    int blockCount = 0;
-    for (int color = 0; color < overflow; ++color) blockCount += (start[color + 1] - start[color] + 3) / 4;
-    w.contactBlocks.resize(static_cast<size_t>(blockCount));  // reused memory: every field is rewritten
+    w.contactBlockStart[0] = 0;
+    for (int color = 0; color <= overflow; ++color)
+        w.contactBlockStart[color + 1] =
+            w.contactBlockStart[color] + (color < overflow ? (start[color + 1] - start[color] + 3) / 4 : 0);
+    w.contactBlocks.resize(static_cast<size_t>(w.contactBlockStart[overflow]));  // reused memory: every field is rewritten
     static const ContactRows<float> emptyLane;  // no mass, no impulse: leaves the bodies alone
-    ContactBlock* block = w.contactBlocks.data();
+    // Block k of colour c holds the constraints contactOrder[start[c] + 4 (k − blockStart[c]) ...].
     for (int color = 0; color < overflow; ++color) {
-        for (int k = start[color]; k < start[color + 1]; k += 4, ++block) {
-            std::array<const ContactRows<float>*, 4> lanes;
-            for (int lane = 0; lane < 4; ++lane) {
-                const int index = k + lane < start[color + 1] ? w.contactOrder[k + lane] : -1;
-                const ContactConstraint* c = index < 0 ? nullptr : &w.constraints[index];
-                block->constraint[lane] = index;
-                block->bodyA[lane] = c ? c->indexA : 0;
-                block->bodyB[lane] = c ? c->indexB : 0;
-                lanes[lane] = c ? c : &emptyLane;
+        const int first = w.contactBlockStart[color], end = start[color + 1];
+        w.workers.parallelFor(contactBlockCount(w, color), 32, [&, color](int begin, int stop, int) {
+            for (int k = begin; k < stop; ++k) {
+                ContactBlock& block = w.contactBlocks[first + k];
+                std::array<const ContactRows<float>*, 4> lanes;
+                for (int lane = 0; lane < 4; ++lane) {
+                    const int position = start[color] + 4 * k + lane;
+                    const int index = position < end ? w.contactOrder[position] : -1;
+                    const ContactConstraint* c = index < 0 ? nullptr : &w.constraints[index];
+                    block.constraint[lane] = index;
+                    block.bodyA[lane] = c ? c->indexA : 0;
+                    block.bodyB[lane] = c ? c->indexB : 0;
+                    lanes[lane] = c ? c : &emptyLane;
+                }
+                packContactRows(lanes, block.rows);
             }
-            packContactRows(lanes, block->rows);
-        }
+        });
     }
     w.overflowConstraints.assign(w.contactOrder.begin() + start[overflow], w.contactOrder.end());
 }
 
-void warmStartContacts(World::Impl& w, const StepContext& ctx) {
-    forEachContact(w, *ctx.states, [](auto& c, auto& a, auto& b) { warmStartContact(c, a, b); });
+int contactBlockCount(const World::Impl& w, int color) {
+    return w.contactBlockStart[color + 1] - w.contactBlockStart[color];
 }
 
-void solveContacts(World::Impl& w, const StepContext& ctx, bool useBias) {
-    forEachContact(w, *ctx.states, [&](auto& c, auto& a, auto& b) { solveContact(c, a, b, ctx, useBias); });
+void contactRows(World::Impl& w, const StepContext& ctx, RowPass pass, int color, int begin, int end) {
+    const int first = w.contactBlockStart[color];
+    passContacts(w, ctx, pass, first + begin, first + end, false);
 }
 
-void unpackContactBlocks(World::Impl& w) {
-    for (const ContactBlock& block : w.contactBlocks) {
-        float rolling[4], normal[2][4], tangent[2][4], maxNormal[2][4];
-        block.rows.rollingImpulse.store(rolling);
-        for (int i = 0; i < 2; ++i) {
-            block.rows.points[i].normalImpulse.store(normal[i]);
-            block.rows.points[i].tangentImpulse.store(tangent[i]);
-            block.rows.points[i].maxNormalImpulse.store(maxNormal[i]);
-        }
-        for (int lane = 0; lane < 4; ++lane) {
-            if (block.constraint[lane] < 0) continue;
-            ContactConstraint& c = w.constraints[block.constraint[lane]];
-            c.rollingImpulse = rolling[lane];
-            for (int i = 0; i < c.pointCount; ++i) {
-                c.points[i].normalImpulse = normal[i][lane];
-                c.points[i].tangentImpulse = tangent[i][lane];
-                c.points[i].maxNormalImpulse = maxNormal[i][lane];
-            }
+void serialContactRows(World::Impl& w, const StepContext& ctx, RowPass pass) { passContacts(w, ctx, pass, 0, 0, true); }
+
+namespace {
+
+// A block's accumulated impulses back into its four constraints.
+void unpackContactBlock(World::Impl& w, const ContactBlock& block) {
+    float rolling[4], normal[2][4], tangent[2][4], maxNormal[2][4];
+    block.rows.rollingImpulse.store(rolling);
+    for (int i = 0; i < 2; ++i) {
+        block.rows.points[i].normalImpulse.store(normal[i]);
+        block.rows.points[i].tangentImpulse.store(tangent[i]);
+        block.rows.points[i].maxNormalImpulse.store(maxNormal[i]);
+    }
+    for (int lane = 0; lane < 4; ++lane) {
+        if (block.constraint[lane] < 0) continue;
+        ContactConstraint& c = w.constraints[block.constraint[lane]];
+        c.rollingImpulse = rolling[lane];
+        for (int i = 0; i < c.pointCount; ++i) {
+            c.points[i].normalImpulse = normal[i][lane];
+            c.points[i].tangentImpulse = tangent[i][lane];
+            c.points[i].maxNormalImpulse = maxNormal[i][lane];
         }
     }
+}
+
+}  // namespace
+
+void unpackContactBlocks(World::Impl& w) {
+    w.workers.parallelFor(static_cast<int>(w.contactBlocks.size()), 64, [&](int begin, int end, int) {
+        for (int k = begin; k < end; ++k) unpackContactBlock(w, w.contactBlocks[k]);
+    });
 }
 
 }  // namespace perpdot

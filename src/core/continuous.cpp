@@ -54,7 +54,7 @@ SegmentPass passOfCentre(Vec2 p1, Vec2 p2, bool oneSided, Vec2 start, Vec2 end, 
 
 }  // namespace
 
-bool World::Impl::isFast(int index, Vec2 c0, float a0) const {
+bool World::Impl::isFast(int index, Vec2 c0, float a0, Vec2 c1, float a1) const {
     const Body& b = bodies[index];
     if (b.type != BodyType::Dynamic) return false;
     float minExtent = std::numeric_limits<float>::max(), maxExtent = 0.0f;
@@ -65,7 +65,7 @@ bool World::Impl::isFast(int index, Vec2 c0, float a0) const {
     }
     if (maxExtent == 0.0f) return false;
     // Largest distance any point travelled: |Δc| + |Δθ|·(radius about the centre of mass).
-    const float travel = distance(c0, b.center) + std::fabs(b.angle - a0) * (maxExtent + length(b.localCenter));
+    const float travel = distance(c0, c1) + std::fabs(a1 - a0) * (maxExtent + length(b.localCenter));
     return travel > safetyFactor * minExtent;
 }
 

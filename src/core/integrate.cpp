@@ -28,44 +28,51 @@ void markTouching(World::Impl& w) {
 // Gather awake bodies into the solver arrays and integrate forces: whole step for free bodies,
 // substep pieces (SubstepForces) for constrained ones.
 void integrateVelocities(World::Impl& w, const StepContext& ctx) {
-    w.states.resize(1);
-    w.states[0] = BodyState{};
-    w.substepForces.resize(1);
-    w.substepForces[0] = SubstepForces{};
     w.awakeBodies.clear();
     markTouching(w);
     for (int i = 0; i < static_cast<int>(w.bodies.size()); ++i) {
         Body& b = w.bodies[i];
         b.solverIndex = 0;
         if (!b.alive || b.type == BodyType::Static || !b.awake) continue;
-        b.solverIndex = static_cast<int>(w.states.size());
         w.awakeBodies.push_back(i);
-        Vec2 v = b.v;
-        float omega = b.w;
-        SubstepForces f;
-        if (b.type == BodyType::Dynamic) {
-            const Vec2 force = (b.gravityScale * b.mass) * w.def.gravity + b.force;
-            if (b.jointCount > 0 || w.touchingBodies[i]) {
-                f.dv = (ctx.hs * b.invMass) * force;
-                f.dw = ctx.hs * b.invInertia * b.torque;
-                f.linearDamping = 1.0f / (1.0f + ctx.hs * b.linearDamping);
-                f.angularDamping = 1.0f / (1.0f + ctx.hs * b.angularDamping);
-            } else {
-                v += (ctx.h * b.invMass) * force;
-                omega += ctx.h * b.invInertia * b.torque;
-                // dv/dt = -c v, integrated implicitly: v /= (1 + h c).
-                v *= 1.0f / (1.0f + ctx.h * b.linearDamping);
-                omega *= 1.0f / (1.0f + ctx.h * b.angularDamping);
-            }
-        }
-        w.states.push_back({v, omega, {}, {}});
-        w.substepForces.push_back(f);
+        b.solverIndex = static_cast<int>(w.awakeBodies.size());
     }
+    const int count = static_cast<int>(w.awakeBodies.size());
+    w.states.resize(static_cast<size_t>(count) + 1);
+    w.states[0] = BodyState{};
+    w.substepForces.resize(static_cast<size_t>(count) + 1);
+    w.substepForces[0] = SubstepForces{};
+    w.workers.parallelFor(count, 256, [&](int begin, int end, int) {
+        for (int k = begin; k < end; ++k) {
+            const int i = w.awakeBodies[k];
+            const Body& b = w.bodies[i];
+            Vec2 v = b.v;
+            float omega = b.w;
+            SubstepForces f;
+            if (b.type == BodyType::Dynamic) {
+                const Vec2 force = (b.gravityScale * b.mass) * w.def.gravity + b.force;
+                if (b.jointCount > 0 || w.touchingBodies[i]) {
+                    f.dv = (ctx.hs * b.invMass) * force;
+                    f.dw = ctx.hs * b.invInertia * b.torque;
+                    f.linearDamping = 1.0f / (1.0f + ctx.hs * b.linearDamping);
+                    f.angularDamping = 1.0f / (1.0f + ctx.hs * b.angularDamping);
+                } else {
+                    v += (ctx.h * b.invMass) * force;
+                    omega += ctx.h * b.invInertia * b.torque;
+                    // dv/dt = -c v, integrated implicitly: v /= (1 + h c).
+                    v *= 1.0f / (1.0f + ctx.h * b.linearDamping);
+                    omega *= 1.0f / (1.0f + ctx.h * b.angularDamping);
+                }
+            }
+            w.states[k + 1] = {v, omega, {}, {}};
+            w.substepForces[k + 1] = f;
+        }
+    });
     w.stepRotation.assign(w.states.size(), 0.0f);
 }
 
-void applySubstepForces(World::Impl& w) {
-    for (size_t i = 1; i < w.states.size(); ++i) {
+void applySubstepForces(World::Impl& w, int begin, int end) {
+    for (int i = begin; i < end; ++i) {
         BodyState& s = w.states[i];
         const SubstepForces& f = w.substepForces[i];
         s.v = f.dv + f.linearDamping * s.v;
@@ -90,10 +97,10 @@ Vec2 clampSpeed(Vec2 v, float maxSpeed) {
 }  // namespace
 
 // x += hs v, θ += hs ω for one substep, with speeds clamped against blow-ups.
-void integratePositions(World::Impl& w, const StepContext& ctx) {
+void integratePositions(World::Impl& w, const StepContext& ctx, int begin, int end) {
     const float maxLinearSpeed = w.def.maxLinearSpeed;
     const float maxAngularSpeed = 0.25f * pi * ctx.invHs;
-    for (size_t i = 1; i < w.states.size(); ++i) {
+    for (int i = begin; i < end; ++i) {
         BodyState& s = w.states[i];
         s.v = clampSpeed(s.v, maxLinearSpeed);
         if (s.w * s.w > maxAngularSpeed * maxAngularSpeed) s.w *= maxAngularSpeed / std::fabs(s.w);
@@ -104,17 +111,41 @@ void integratePositions(World::Impl& w, const StepContext& ctx) {
 }
 
 // Write the solver state back: c = c0 + Δp, θ = θ0 + Δθ, origin = c - R(θ) localCenter.
-// Fast bodies are then swept from their step-start pose against static shapes; bullets wait
-// until every other body is final, then meet moving bodies too (continuous_impacts.cpp).
+// The workers write the bodies that are neither fast nor non-finite; then, one by one, the
+// non-finite ones are frozen, the broadphase follows the bodies, and fast bodies are swept from
+// their step-start pose against static shapes; bullets wait until every other body is final,
+// then meet moving bodies too (continuous_impacts.cpp).
 void finalizeBodies(World::Impl& w, float h) {
+    enum Motion : uint8_t { Moved, Fast, NonFinite };
+    const int count = static_cast<int>(w.awakeBodies.size());
+    w.bodyMotion.resize(static_cast<size_t>(count));
+    w.workers.parallelFor(count, 256, [&](int begin, int end, int) {
+        for (int k = begin; k < end; ++k) {
+            Body& b = w.bodies[w.awakeBodies[k]];
+            const BodyState& s = w.states[k + 1];
+            const float dAngle = w.stepRotation[k + 1];
+            if (!isFinite(s.v) || !std::isfinite(s.w) || !isFinite(s.dp) || !std::isfinite(dAngle)) {
+                w.bodyMotion[k] = NonFinite;
+                continue;
+            }
+            const Vec2 c1 = b.center + s.dp;
+            const float a1 = b.angle + dAngle;
+            w.bodyMotion[k] = w.def.enableContinuous && w.isFast(w.awakeBodies[k], b.center, b.angle, c1, a1) ? Fast : Moved;
+            if (w.bodyMotion[k] == Fast) continue;
+            b.v = s.v;
+            b.w = s.w;
+            b.center = c1;
+            b.angle = a1;
+            b.xf = b.derivedTransform();
+        }
+    });
     w.movers.clear();
     bool anyBullet = false;
-    for (size_t k = 0; k < w.awakeBodies.size(); ++k) {
+    for (int k = 0; k < count; ++k) {
         const int index = w.awakeBodies[k];
         Body& b = w.bodies[index];
         const BodyState& s = w.states[k + 1];
-        const float dAngle = w.stepRotation[k + 1];
-        if (!isFinite(s.v) || !std::isfinite(s.w) || !isFinite(s.dp) || !std::isfinite(dAngle)) {
+        if (w.bodyMotion[k] == NonFinite) {
             // A body that went non-finite is frozen where it was instead of spreading NaN: stopped,
             // put to sleep until something wakes it, and counted in stats().frozenBodies.
             b.v = {};
@@ -124,25 +155,25 @@ void finalizeBodies(World::Impl& w, float h) {
             ++w.frozenBodies;
             continue;
         }
+        anyBullet = anyBullet || b.bullet;
+        if (w.bodyMotion[k] == Moved) {
+            w.synchronizeProxies(index, s.dp);
+            continue;
+        }
         const Vec2 c0 = b.center;
         const float a0 = b.angle;
         b.v = s.v;
         b.w = s.w;
         b.center = b.center + s.dp;
-        b.angle = b.angle + dAngle;
+        b.angle = b.angle + w.stepRotation[k + 1];
         b.xf = b.derivedTransform();
-        anyBullet = anyBullet || b.bullet;
-        if (w.def.enableContinuous && w.isFast(index, c0, a0)) {
-            w.movers.push_back({.body = index, .c0 = c0, .a0 = a0, .v = b.v, .w = b.w, .stepStart = c0, .fast = true});
-            if (!b.bullet) {
-                w.solveContinuous(index, c0, a0);
-                w.synchronizeProxies(index, b.center - c0);
-            }
-            w.movers.back().c1 = b.center;
-            w.movers.back().a1 = b.angle;
-            continue;
+        w.movers.push_back({.body = index, .c0 = c0, .a0 = a0, .v = b.v, .w = b.w, .stepStart = c0, .fast = true});
+        if (!b.bullet) {
+            w.solveContinuous(index, c0, a0);
+            w.synchronizeProxies(index, b.center - c0);
         }
-        w.synchronizeProxies(index, s.dp);
+        w.movers.back().c1 = b.center;
+        w.movers.back().a1 = b.angle;
     }
     if (anyBullet && !w.movers.empty()) w.solveMovingImpacts(h);
     for (Body& b : w.bodies) {

@@ -188,34 +188,73 @@ void prepareJoint(PreparedJoint& j, const World::Impl& w, const Joint& joint, co
     }
 }
 
-JointPair pairOf(World::Impl& w, const PreparedJoint& j) {
-    std::vector<BodyState>& states = w.states;
-    return {states[j.indexA], states[j.indexB], j.mass, w.stepRotation[j.indexB] - w.stepRotation[j.indexA],
-            w.stepRotation[j.indexA]};
-}
-
-// Colour by colour: `wide(rows, pair)` on the colour's blocks, then `scalar(joint, pair)` on its
-// other joints. Joints of one colour share no moving body, so their order within it is free.
+// Units [begin, end) of colour `color`: its revolute blocks, then its other joints, `wide(rows,
+// pair)` on a block and `scalar(joint, pair)` on a joint. Joints of one colour share no moving
+// body, so their order within it is free and workers may run its units side by side.
 template <class Wide, class Scalar>
-void forEachJoint(World::Impl& w, Wide wide, Scalar scalar) {
+void forJointUnits(World::Impl& w, int color, int begin, int end, Wide wide, Scalar scalar) {
     JointStore& s = store(w);
     std::vector<BodyState>& states = w.states;
-    for (int color = 0; color <= GraphColoring::overflow; ++color) {
-        for (int k = s.blockStart[color]; k < s.blockStart[color + 1]; ++k) {
-            RevoluteBlock& block = s.revoluteBlocks[k];
-            BodyLanes<Float4> a = gatherBodies(states, block.bodyA), b = gatherBodies(states, block.bodyB);
-            JointPairT<Float4> p{a, b, block.mass};
-            wide(block.rows, p);
-            scatterVelocities(states, block.bodyA, a);
-            scatterVelocities(states, block.bodyB, b);
-        }
-        for (int k = s.scalarStart[color]; k < s.scalarStart[color + 1]; ++k) {
-            PreparedJoint& j = s.prepared[s.scalarOrder[k]];
-            JointPair p = pairOf(w, j);
-            scalar(j, p);
-        }
+    const int blocks = s.blockStart[color + 1] - s.blockStart[color];
+    for (int unit = begin; unit < std::min(end, blocks); ++unit) {
+        RevoluteBlock& block = s.revoluteBlocks[s.blockStart[color] + unit];
+        BodyLanes<Float4> a = gatherBodies(states, block.bodyA), b = gatherBodies(states, block.bodyB);
+        JointPairT<Float4> p{a, b, block.mass};
+        wide(block.rows, p);
+        scatterVelocities(states, block.bodyA, a);
+        scatterVelocities(states, block.bodyB, b);
+    }
+    // The static slot 0 is shared by the colour's joints: each run writes (nothing) to its own copy.
+    BodyState fixed = states[0];
+    for (int unit = std::max(begin, blocks); unit < end; ++unit) {
+        PreparedJoint& j = s.prepared[s.scalarOrder[s.scalarStart[color] + unit - blocks]];
+        JointPair p = pairOf(j.indexA == 0 ? fixed : states[j.indexA], j.indexB == 0 ? fixed : states[j.indexB],
+                             w.stepRotation, j);
+        scalar(j, p);
     }
 }
+
+}  // namespace
+
+void jointRows(World::Impl& w, const StepContext& ctx, RowPass pass, int color, int begin, int end) {
+    if (pass == RowPass::WarmStart) {
+        forJointUnits(
+            w, color, begin, end, [](RevoluteRows<Float4>& rows, JointPairT<Float4>& p) { warmStartRevoluteRows(rows, p); },
+            [](PreparedJoint& j, JointPair& p) {
+                switch (j.type) {
+                    case JointType::Revolute: warmStartRevolute(j, p); break;
+                    case JointType::Prismatic: warmStartPrismatic(j, p); break;
+                    case JointType::Distance: warmStartDistance(j, p); break;
+                    case JointType::Weld: warmStartWeld(j, p); break;
+                    case JointType::Wheel: warmStartWheel(j, p); break;
+                    case JointType::Motor: warmStartMotor(j, p); break;
+                    case JointType::Mouse: warmStartMouse(j, p); break;
+                    case JointType::Gear: warmStartGear(j, p); break;
+                    case JointType::Pulley: warmStartPulley(j, p); break;
+                }
+            });
+        return;
+    }
+    const bool useBias = pass == RowPass::Solve;
+    const Softness soft = rigidSoftness(ctx, useBias);
+    forJointUnits(
+        w, color, begin, end, [&](RevoluteRows<Float4>& rows, JointPairT<Float4>& p) { solveRevolutePoint(rows, p, soft); },
+        [&](PreparedJoint& j, JointPair& p) {
+            switch (j.type) {
+                case JointType::Revolute: solveRevolute(j, p, ctx, useBias); break;
+                case JointType::Prismatic: solvePrismatic(j, p, ctx, useBias); break;
+                case JointType::Distance: solveDistance(j, p, ctx, useBias); break;
+                case JointType::Weld: solveWeld(j, p, ctx, useBias); break;
+                case JointType::Wheel: solveWheel(j, p, ctx, useBias); break;
+                case JointType::Motor: solveMotor(j, p, ctx, useBias); break;
+                case JointType::Mouse: solveMouse(j, p, ctx, useBias); break;
+                case JointType::Gear: solveGear(j, p, ctx, useBias); break;
+                case JointType::Pulley: solvePulley(j, p, ctx, useBias); break;
+            }
+        });
+}
+
+namespace {
 
 // Revolute joints without motor or limit go to the blocks, unless no colour could take them.
 bool inLanes(int color, const PreparedJoint& j) { return color != GraphColoring::overflow && solvesInLanes(j); }
@@ -297,43 +336,23 @@ void prepareJoints(World::Impl& w, const StepContext& ctx) {
 }
 
 // Every substep begins by re-applying the accumulated impulses (Box2D v3's soft step).
-void warmStartJoints(World::Impl& w, const StepContext&) {
-    forEachJoint(
-        w, [](RevoluteRows<Float4>& rows, JointPairT<Float4>& p) { warmStartRevoluteRows(rows, p); },
-        [](PreparedJoint& j, JointPair& p) {
-            switch (j.type) {
-                case JointType::Revolute: warmStartRevolute(j, p); break;
-                case JointType::Prismatic: warmStartPrismatic(j, p); break;
-                case JointType::Distance: warmStartDistance(j, p); break;
-                case JointType::Weld: warmStartWeld(j, p); break;
-                case JointType::Wheel: warmStartWheel(j, p); break;
-                case JointType::Motor: warmStartMotor(j, p); break;
-                case JointType::Mouse: warmStartMouse(j, p); break;
-                case JointType::Gear: warmStartGear(j, p); break;
-                case JointType::Pulley: warmStartPulley(j, p); break;
-            }
-        });
-    warmStartRevoluteTrees(w, store(w).trees, store(w).prepared);
+int jointUnitCount(const World::Impl& w, int color) {
+    const JointStore& s = store(w);
+    return s.blockStart[color + 1] - s.blockStart[color] + s.scalarStart[color + 1] - s.scalarStart[color];
 }
 
-void solveJoints(World::Impl& w, const StepContext& ctx, bool useBias) {
-    const Softness soft = rigidSoftness(ctx, useBias);
-    forEachJoint(
-        w, [&](RevoluteRows<Float4>& rows, JointPairT<Float4>& p) { solveRevolutePoint(rows, p, soft); },
-        [&](PreparedJoint& j, JointPair& p) {
-            switch (j.type) {
-                case JointType::Revolute: solveRevolute(j, p, ctx, useBias); break;
-                case JointType::Prismatic: solvePrismatic(j, p, ctx, useBias); break;
-                case JointType::Distance: solveDistance(j, p, ctx, useBias); break;
-                case JointType::Weld: solveWeld(j, p, ctx, useBias); break;
-                case JointType::Wheel: solveWheel(j, p, ctx, useBias); break;
-                case JointType::Motor: solveMotor(j, p, ctx, useBias); break;
-                case JointType::Mouse: solveMouse(j, p, ctx, useBias); break;
-                case JointType::Gear: solveGear(j, p, ctx, useBias); break;
-                case JointType::Pulley: solvePulley(j, p, ctx, useBias); break;
-            }
-        });
-    solveRevoluteTrees(w, store(w).trees, store(w).prepared, ctx, useBias);
+int serialJointCount(const World::Impl& w) {
+    return jointUnitCount(w, GraphColoring::overflow) + static_cast<int>(store(w).trees.joints.size());
+}
+
+void serialJointRows(World::Impl& w, const StepContext& ctx, RowPass pass) {
+    constexpr int overflow = GraphColoring::overflow;
+    jointRows(w, ctx, pass, overflow, 0, jointUnitCount(w, overflow));
+    JointStore& s = store(w);
+    if (pass == RowPass::WarmStart)
+        warmStartRevoluteTrees(w, s.trees, s.prepared);
+    else
+        solveRevoluteTrees(w, s.trees, s.prepared, ctx, pass == RowPass::Solve);
 }
 
 void projectJoints(World::Impl& w) { projectRevoluteTrees(w, store(w).trees, store(w).prepared); }

@@ -15,10 +15,15 @@ struct JointStoreDeleter {
 using JointStorePtr = std::unique_ptr<JointStore, JointStoreDeleter>;
 JointStorePtr makeJointStore();
 
-// Solver stages, called by World::Impl::solve like the contact stages.
+// Solver stages, run by World::step (step.cpp, solver_stages.cpp) like the contact stages.
 void prepareJoints(World::Impl& world, const StepContext& ctx);
-void warmStartJoints(World::Impl& world, const StepContext& ctx);
-void solveJoints(World::Impl& world, const StepContext& ctx, bool useBias);
+// The work of colour `color` (below GraphColoring::overflow) in a pass: units that share no
+// moving body, to be run in any order or side by side.
+int jointUnitCount(const World::Impl& world, int color);
+void jointRows(World::Impl& world, const StepContext& ctx, RowPass pass, int color, int begin, int end);
+// The joints no colour could take, then the revolute trees: one after another.
+int serialJointCount(const World::Impl& world);
+void serialJointRows(World::Impl& world, const StepContext& ctx, RowPass pass);
 void storeJointImpulses(World::Impl& world, const StepContext& ctx);
 // After the substeps: a Newton step on the positions of each revolute tree (joint_tree.hpp).
 void projectJoints(World::Impl& world);

@@ -176,6 +176,15 @@ struct PreparedJoint {
     JointData data;
 };
 
+// The rows' view of a prepared joint: its bodies' solver states a and b, and their turn this step.
+inline JointPair pairOf(BodyState& a, BodyState& b, const std::vector<float>& stepRotation, const PreparedJoint& j) {
+    return {a, b, j.mass, stepRotation[j.indexB] - stepRotation[j.indexA], stepRotation[j.indexA]};
+}
+inline JointPair pairOf(std::vector<BodyState>& states, const std::vector<float>& stepRotation, const PreparedJoint& j) {
+    return pairOf(states[j.indexA], states[j.indexB], stepRotation, j);
+}
+
+
 struct RevoluteBlock;  // four revolute joints in SIMD lanes (joint_solver_wide.hpp)
 
 struct JointStore {

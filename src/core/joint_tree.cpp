@@ -21,11 +21,6 @@ int findRoot(std::vector<int>& root, int i) {
 bool movesA(const PreparedJoint& j) { return j.mass.mA != 0.0f || j.mass.iA != 0.0f; }
 bool movesB(const PreparedJoint& j) { return j.mass.mB != 0.0f || j.mass.iB != 0.0f; }
 
-JointPair pairOf(World::Impl& w, const PreparedJoint& j) {
-    return {w.states[j.indexA], w.states[j.indexB], j.mass, w.stepRotation[j.indexB] - w.stepRotation[j.indexA],
-            w.stepRotation[j.indexA]};
-}
-
 // In-place Cholesky K = L Lᵀ of the n x n row-major K (lower triangle written); false if K is not
 // positive definite.
 bool choleskyFactor(std::vector<double>& K, int n) {
@@ -157,7 +152,7 @@ void findRevoluteTrees(RevoluteTrees& t, const std::vector<PreparedJoint>& prepa
 
 void warmStartRevoluteTrees(World::Impl& w, RevoluteTrees& t, std::vector<PreparedJoint>& prepared) {
     for (int k : t.joints) {
-        JointPair p = pairOf(w, prepared[k]);
+        JointPair p = pairOf(w.states, w.stepRotation, prepared[k]);
         warmStartRevolute(prepared[k], p);
     }
 }
@@ -175,7 +170,7 @@ int assemble(World::Impl& w, RevoluteTrees& t, const std::vector<PreparedJoint>&
     t.rB.resize(joints);
     for (int i = 0; i < joints; ++i) {
         const PreparedJoint& j = prepared[t.joints[first + i]];
-        const JointPair p = pairOf(w, j);
+        const JointPair p = pairOf(w.states, w.stepRotation, j);
         const JointFrame f = currentFrame(j, p);
         t.rA[i] = f.rA;
         t.rB[i] = f.rB;
@@ -227,7 +222,7 @@ void solveRevoluteTrees(World::Impl& w, RevoluteTrees& t, std::vector<PreparedJo
         if (!choleskyFactor(t.K, n)) {
             for (int i = 0; i < joints; ++i) {
                 PreparedJoint& j = prepared[t.joints[first + i]];
-                JointPair p = pairOf(w, j);
+                JointPair p = pairOf(w.states, w.stepRotation, j);
                 solveRevolute(j, p, ctx, useBias);
             }
             continue;
@@ -245,7 +240,7 @@ void solveRevoluteTrees(World::Impl& w, RevoluteTrees& t, std::vector<PreparedJo
         }
         for (int i = 0; i < joints; ++i) {
             const PreparedJoint& j = prepared[t.joints[first + i]];
-            JointPair p = pairOf(w, j);
+            JointPair p = pairOf(w.states, w.stepRotation, j);
             applyPoint(p, t.rA[i], t.rB[i], lambdaOf(t.x, i));
         }
     }

@@ -336,7 +336,7 @@ void World::restore(std::span<const uint8_t> bytes) {
     if (in.version < 1 || in.version > formatVersion)
         in.fail("format version " + std::to_string(in.version) + " is not supported (this build reads versions 1 to " +
                 std::to_string(formatVersion) + ")");
-    auto fresh = std::make_unique<Impl>(readDef(in));
+    auto fresh = std::make_unique<Impl>(readDef(in));  // one worker: the snapshot holds no threads
     Impl& w = *fresh;
     w.frozenBodies = in.integer(0, 0x7FFFFFFF, "frozen body count");
     w.anyHitEvents = in.boolean();
@@ -449,6 +449,12 @@ void World::restore(std::span<const uint8_t> bytes) {
     }
 
     fresh->preSolve = std::move(impl_->preSolve);  // a setting of this World, not of the state
+    // The threads are the restoring machine's, not the snapshot's: the world keeps its own workers.
+    fresh->def.workerCount = impl_->def.workerCount;
+    fresh->def.enqueueTask = impl_->def.enqueueTask;
+    fresh->def.finishTask = impl_->def.finishTask;
+    fresh->def.userTaskContext = impl_->def.userTaskContext;
+    fresh->workers = std::move(impl_->workers);
     impl_ = std::move(fresh);
 }
 

@@ -15,10 +15,10 @@ StepContext makeStepContext(const World::Impl& w, float h);
 // Integrate velocities: gather the awake bodies into the solver arrays; free bodies take the
 // whole step's forces now, constrained ones per substep.
 void integrateVelocities(World::Impl& w, const StepContext& ctx);
-// A substep's share of the forces on the constrained bodies.
-void applySubstepForces(World::Impl& w);
-// Integrate positions: x += hs v, θ += hs ω.
-void integratePositions(World::Impl& w, const StepContext& ctx);
+// A substep's share of the forces on the constrained bodies, solver slots [begin, end).
+void applySubstepForces(World::Impl& w, int begin, int end);
+// Integrate positions: x += hs v, θ += hs ω, solver slots [begin, end).
+void integratePositions(World::Impl& w, const StepContext& ctx, int begin, int end);
 // Store the solver state in the bodies and sweep the fast ones (continuous collision).
 void finalizeBodies(World::Impl& w, float h);
 

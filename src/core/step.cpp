@@ -48,16 +48,10 @@ void World::step(float timeStep) {
     integrateVelocities(w, ctx);
     prepareJoints(w, ctx);  // prepare: effective masses, anchors, warm-start impulses
     prepareContacts(w, ctx);
-    for (int i = 0; i < ctx.substeps; ++i) {
-        applySubstepForces(w);
-        warmStartJoints(w, ctx);
-        warmStartContacts(w, ctx);
-        solveJoints(w, ctx, true);  // solve, with soft bias
-        solveContacts(w, ctx, true);
-        integratePositions(w, ctx);
-        solveJoints(w, ctx, false);  // relax: the same rows without bias
-        solveContacts(w, ctx, false);
-    }
+    // Per substep: its forces, warm start, solve with soft bias, x += hs v, relax without bias
+    // (solver_stages.hpp: the rows colour by colour, on the workers).
+    w.solverStages.build(w);
+    w.solverStages.run(w, ctx);
     projectJoints(w);  // project: the anchors of revolute trees meet again
     unpackContactBlocks(w);
     applyRestitution(w, ctx);  // restitution: Hecker's bounce, once per step

@@ -2,6 +2,7 @@
 // and the velocity/position-delta state of every awake body in one contiguous array.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "core/lanes.hpp"
@@ -29,6 +30,9 @@ inline Rot integrateRotation(Rot q, float angle) {
     const float invLength = 1.0f / std::sqrt(r.c * r.c + r.s * r.s);
     return {invLength * r.c, invLength * r.s};
 }
+
+// The three passes of the rows in a substep: warm start, solve with soft bias, relax without it.
+enum class RowPass : uint8_t { WarmStart, Solve, Relax };
 
 struct StepContext {
     float h = 0;       // the whole step

@@ -13,7 +13,9 @@
 #include "core/contact_solver_wide.hpp"
 #include "core/graph_color.hpp"
 #include "core/joint.hpp"
+#include "core/solver_stages.hpp"
 #include "core/step_context.hpp"
+#include "core/workers.hpp"
 #include "perpdot/error.hpp"
 #include "perpdot/world.hpp"
 
@@ -177,6 +179,7 @@ struct World::Impl {
     std::vector<int> movedProxies;
     collide::CollisionSystem collision;
     JointStorePtr joints;
+    Workers workers;  // the threads of the step's parallel stages
     bool locked = false;  // inside step()
     int frozenBodies = 0;  // bodies frozen because their state went non-finite (stats())
     std::vector<NewPair> newPairs;  // updatePairs scratch
@@ -203,13 +206,16 @@ struct World::Impl {
     std::vector<int> awakeBodies;       // body index of states[i + 1]
     std::vector<uint8_t> touchingBodies;  // by body index: has a touching contact (integrateVelocities)
     std::vector<float> stepRotation;    // Δθ of states[i], summed over substeps
+    std::vector<uint8_t> bodyMotion;    // finalizeBodies scratch, by awake body: moved, fast or non-finite
     std::vector<SubstepForces> substepForces;  // of states[i]
     std::vector<ContactConstraint> constraints;
     GraphColoring contactColoring;               // colours of `constraints` (graph_color.hpp)
     std::vector<ContactBlock> contactBlocks;     // four constraints of one colour each, in colour order
+    ColorStarts contactBlockStart{};             // colour c is contactBlocks[start[c] .. start[c + 1])
     std::vector<int> contactColors;              // prepareContactBlocks scratch: colour of each constraint,
     std::vector<int> contactOrder;               // and the constraints sorted by colour
     std::vector<int> overflowConstraints;        // constraints no colour could take: solved one by one
+    SolverStages solverStages;                   // the substeps' stages for the workers
     std::vector<int> islandParent;      // union-find scratch for sleeping, by body index
     std::vector<float> islandMinSleep;
     std::vector<int> islandHead;
@@ -255,9 +261,10 @@ struct World::Impl {
 
     // Stages of the step run by step.cpp (stages.hpp; contact_cache.cpp, sleep.cpp, continuous*.cpp)
     void updateSleep(float h);
-    // Continuous collision (continuous.cpp): sweep a fast body from its step-start pose
-    // (centre c0, angle a0) to its current one; moves it back to the earliest time of impact.
-    bool isFast(int body, Vec2 c0, float a0) const;
+    // Continuous collision (continuous.cpp): a body is fast when its move from (centre c0, angle
+    // a0) to (c1, a1) may tunnel; solveContinuous sweeps it from its step-start pose (c0, a0) to
+    // its current one and moves it back to the earliest time of impact.
+    bool isFast(int body, Vec2 c0, float a0, Vec2 c1, float a1) const;
     void solveContinuous(int body, Vec2 c0, float a0);
     // The earliest time of impact in [0, 1] of the body's shapes along `sweep` with static shapes.
     float staticImpact(int body, const collide::Sweep& sweep) const;
@@ -274,8 +281,11 @@ struct World::Impl {
 // graph-coloured blocks of four).
 void prepareContacts(World::Impl& world, const StepContext& ctx);
 void prepareContactBlocks(World::Impl& world);
-void warmStartContacts(World::Impl& world, const StepContext& ctx);
-void solveContacts(World::Impl& world, const StepContext& ctx, bool useBias);
+// The blocks of colour `color` (below GraphColoring::overflow) in a pass: they share no moving
+// body, so they run in any order or side by side; then the overflow constraints, one by one.
+int contactBlockCount(const World::Impl& world, int color);
+void contactRows(World::Impl& world, const StepContext& ctx, RowPass pass, int color, int begin, int end);
+void serialContactRows(World::Impl& world, const StepContext& ctx, RowPass pass);
 void unpackContactBlocks(World::Impl& world);  // the blocks' accumulated impulses back into `constraints`
 void applyRestitution(World::Impl& world, const StepContext& ctx);
 void storeContactImpulses(World::Impl& world);

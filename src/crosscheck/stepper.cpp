@@ -57,8 +57,8 @@ BodySample sampleBox2D(const b2Body* b) {
 
 class PerpdotStepper final : public Stepper, private SceneEditor {
 public:
-    PerpdotStepper(const Scene& scene, std::unique_ptr<SceneScript> script)
-        : scene_(buildWorld(scene)), script_(std::move(script)) {}
+    PerpdotStepper(const Scene& scene, std::unique_ptr<SceneScript> script, int workerCount)
+        : scene_(buildWorld(scene, workerCount)), script_(std::move(script)) {}
 
     void step() override {
         if (script_) script_->beforeStep(scene_.stepIndex, *this);
@@ -136,8 +136,9 @@ std::unique_ptr<Stepper> makeStepper(Engine engine, const Scene& scene) {
     return makeStepper(engine, scene, makeSceneScript(scene.name));
 }
 
-std::unique_ptr<Stepper> makeStepper(Engine engine, const Scene& scene, std::unique_ptr<SceneScript> script) {
-    if (engine == Engine::Perpdot) return std::make_unique<PerpdotStepper>(scene, std::move(script));
+std::unique_ptr<Stepper> makeStepper(Engine engine, const Scene& scene, std::unique_ptr<SceneScript> script,
+                                     int workerCount) {
+    if (engine == Engine::Perpdot) return std::make_unique<PerpdotStepper>(scene, std::move(script), workerCount);
     return std::make_unique<Box2DStepper>(scene, std::move(script));
 }
 

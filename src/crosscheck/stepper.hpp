@@ -37,8 +37,9 @@ public:
 
 // The scene in `engine`, with the script of the built-in scene of its name (makeSceneScript), if any.
 std::unique_ptr<Stepper> makeStepper(Engine engine, const Scene& scene);
-// The scene in `engine`, run by `script` (may be nullptr: none).
-std::unique_ptr<Stepper> makeStepper(Engine engine, const Scene& scene, std::unique_ptr<SceneScript> script);
+// The scene in `engine`, run by `script` (may be nullptr: none); perpdot on `workerCount` threads.
+std::unique_ptr<Stepper> makeStepper(Engine engine, const Scene& scene, std::unique_ptr<SceneScript> script,
+                                     int workerCount = 1);
 
 // The scene body's name, or its default `body<index>` when unnamed.
 std::string bodyName(const Scene& scene, size_t index);

@@ -19,8 +19,8 @@ struct Run {
     float stability;
 };
 
-Run timeOnce(Engine engine, const Scene& scene, int steps, const StabilityProbe& probe) {
-    const auto stepper = makeStepper(engine, scene);
+Run timeOnce(Engine engine, const Scene& scene, int steps, int workerCount, const StabilityProbe& probe) {
+    const auto stepper = makeStepper(engine, scene, makeSceneScript(scene.name), workerCount);
     std::vector<BodySample> first, last;
     stepper->sampleAll(first);
 
@@ -53,7 +53,7 @@ Timing time(const Scene& scene, const TimingOptions& options) {
         const bool perpdotFirst = r % 2 == 0;
         for (const Engine engine : {perpdotFirst ? Engine::Perpdot : Engine::Box2D, perpdotFirst ? Engine::Box2D : Engine::Perpdot}) {
             if (!(engine == Engine::Perpdot ? options.perpdot : options.box2d)) continue;
-            const Run run = timeOnce(engine, scene, steps, probe);
+            const Run run = timeOnce(engine, scene, steps, options.workers, probe);
             EngineTiming& out = engine == Engine::Perpdot ? timing.perpdot : timing.box2d;
             (engine == Engine::Perpdot ? perpdotMs : box2dMs).push_back(run.msPerStep);
             out.contacts = run.contacts;

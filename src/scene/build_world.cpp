@@ -180,8 +180,8 @@ SceneBodies addToWorld(World& world, const Scene& scene) {
     return built;
 }
 
-SceneWorld buildWorld(const Scene& scene) {
-    WorldDef def{.gravity = scene.gravity, .enableSleep = scene.enableSleep};
+SceneWorld buildWorld(const Scene& scene, int workerCount) {
+    WorldDef def{.gravity = scene.gravity, .enableSleep = scene.enableSleep, .workerCount = workerCount};
     if (scene.solver.substeps) def.substeps = *scene.solver.substeps;
     def.box2dSkin = scene.solver.box2dSkin;
     SceneWorld built{.world = World(def), .scene = scene};

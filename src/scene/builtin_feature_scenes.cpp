@@ -258,8 +258,8 @@ const SceneBehaviour* findSceneBehaviour(std::string_view sceneName) {
     return found == behaviours().end() ? nullptr : &found->second;
 }
 
-SceneWorld buildWorldWithBehaviour(const Scene& scene) {
-    SceneWorld built = buildWorld(scene);
+SceneWorld buildWorldWithBehaviour(const Scene& scene, int workerCount) {
+    SceneWorld built = buildWorld(scene, workerCount);
     const SceneBehaviour* behaviour = findSceneBehaviour(scene.name);
     if (!behaviour) return built;
     if (behaviour->setup) behaviour->setup(built);

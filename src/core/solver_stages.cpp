@@ -1,0 +1,93 @@
+#include "core/solver_stages.hpp"
+
+#include <algorithm>
+#include <thread>
+
+#include "core/stages.hpp"
+
+namespace perpdot {
+
+namespace {
+
+// Units per claim: enough work to outweigh the atomic claim, few enough to share a colour.
+constexpr int bodiesPerItem = 64;
+constexpr int jointUnitsPerItem = 4;
+constexpr int contactBlocksPerItem = 8;
+
+}  // namespace
+
+void SolverStages::build(const World::Impl& w) {
+    using Work = SolverStage::Work;
+    stages_.clear();
+    const int bodies = static_cast<int>(w.states.size()) - 1;
+    auto add = [&](Work work, RowPass pass, int color, int units, int unitsPerItem) {
+        if (units > 0) stages_.push_back({work, pass, color, units, unitsPerItem});
+    };
+    auto rows = [&](RowPass pass) {
+        for (int color = 0; color < GraphColoring::overflow; ++color)
+            add(Work::Joints, pass, color, jointUnitCount(w, color), jointUnitsPerItem);
+        add(Work::SerialJoints, pass, 0, serialJointCount(w) > 0 ? 1 : 0, 1);
+        for (int color = 0; color < GraphColoring::overflow; ++color)
+            add(Work::Contacts, pass, color, contactBlockCount(w, color), contactBlocksPerItem);
+        add(Work::SerialContacts, pass, 0, w.overflowConstraints.empty() ? 0 : 1, 1);
+    };
+    add(Work::SubstepForces, RowPass::WarmStart, 0, bodies, bodiesPerItem);
+    rows(RowPass::WarmStart);
+    rows(RowPass::Solve);
+    add(Work::IntegratePositions, RowPass::WarmStart, 0, bodies, bodiesPerItem);
+    rows(RowPass::Relax);
+}
+
+void SolverStages::execute(World::Impl& w, const StepContext& ctx, const SolverStage& stage, int begin, int end) const {
+    using Work = SolverStage::Work;
+    switch (stage.work) {
+        case Work::SubstepForces: applySubstepForces(w, begin + 1, end + 1); break;
+        case Work::Joints: jointRows(w, ctx, stage.pass, stage.color, begin, end); break;
+        case Work::SerialJoints: serialJointRows(w, ctx, stage.pass); break;
+        case Work::Contacts: contactRows(w, ctx, stage.pass, stage.color, begin, end); break;
+        case Work::SerialContacts: serialContactRows(w, ctx, stage.pass); break;
+        case Work::IntegratePositions: integratePositions(w, ctx, begin + 1, end + 1); break;
+    }
+}
+
+// One worker's walk through every stage of every substep: claim items until none is left, then
+// wait for the items other workers claimed.
+void SolverStages::participate(World::Impl& w, const StepContext& ctx) {
+    const size_t count = stages_.size();
+    for (int substep = 0; substep < ctx.substeps; ++substep) {
+        for (size_t s = 0; s < count; ++s) {
+            const SolverStage& stage = stages_[s];
+            Sync& sync = sync_[static_cast<size_t>(substep) * count + s];
+            const int items = stage.items();
+            for (int item; (item = sync.claimed.fetch_add(1, std::memory_order_relaxed)) < items;) {
+                const int begin = item * stage.unitsPerItem;
+                execute(w, ctx, stage, begin, std::min(begin + stage.unitsPerItem, stage.units));
+                sync.done.fetch_add(1, std::memory_order_release);
+            }
+            for (int spins = 0; sync.done.load(std::memory_order_acquire) < items; ++spins)
+                if (spins > 100) std::this_thread::yield();
+        }
+    }
+}
+
+void SolverStages::run(World::Impl& w, const StepContext& ctx) {
+    if (w.workers.count() == 1) {
+        for (int substep = 0; substep < ctx.substeps; ++substep)
+            for (const SolverStage& stage : stages_) execute(w, ctx, stage, 0, stage.units);
+        return;
+    }
+    const size_t syncCount = stages_.size() * static_cast<size_t>(ctx.substeps);
+    if (syncCount > syncCapacity_) {  // grows with the colours in use, then stays
+        syncCapacity_ = std::max(syncCount, 2 * syncCapacity_);
+        sync_ = std::make_unique<Sync[]>(syncCapacity_);
+    }
+    for (size_t i = 0; i < syncCount; ++i) {
+        sync_[i].claimed.store(0, std::memory_order_relaxed);
+        sync_[i].done.store(0, std::memory_order_relaxed);
+    }
+    w.workers.parallelFor(w.workers.count(), 1, [&](int begin, int end, int) {
+        for (int k = begin; k < end; ++k) participate(w, ctx);
+    });
+}
+
+}  // namespace perpdot

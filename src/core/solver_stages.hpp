@@ -1,0 +1,48 @@
+// The substeps of World::step as a list of stages — a substep's forces, then per pass the joint
+// and contact rows colour by colour, and x += hs v between the solve and the relax — run in order
+// by every worker at once. The items of a stage share no moving body (graph colouring), so
+// workers claim them in any order; a worker leaves a stage when all its items are done. Nobody
+// waits for a worker that has not started, so any worker count, and any task system that runs
+// the workers late or one after another, gives the same result.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "core/step_context.hpp"
+#include "perpdot/world.hpp"
+
+namespace perpdot {
+
+struct SolverStage {
+    enum class Work : uint8_t { SubstepForces, Joints, SerialJoints, Contacts, SerialContacts, IntegratePositions };
+    Work work = Work::SubstepForces;
+    RowPass pass = RowPass::WarmStart;
+    int color = 0;
+    int units = 0;          // bodies, joint units or contact blocks
+    int unitsPerItem = 1;   // a worker claims this many at a time
+    int items() const { return (units + unitsPerItem - 1) / unitsPerItem; }
+};
+
+class SolverStages {
+public:
+    // The stages of one substep for this step's colours (after prepareJoints and prepareContacts).
+    void build(const World::Impl& w);
+    // Every substep's stages, on the world's workers.
+    void run(World::Impl& w, const StepContext& ctx);
+
+private:
+    struct alignas(64) Sync {  // a stage of a substep: items claimed and items done
+        std::atomic<int> claimed{0}, done{0};
+    };
+    void execute(World::Impl& w, const StepContext& ctx, const SolverStage& stage, int begin, int end) const;
+    void participate(World::Impl& w, const StepContext& ctx);
+
+    std::vector<SolverStage> stages_;
+    std::unique_ptr<Sync[]> sync_;
+    size_t syncCapacity_ = 0;
+};
+
+}  // namespace perpdot
