@@ -75,26 +75,34 @@ void unlinkEdge(World::Impl& w, int contact, int side, int bodyIndex) {
 void World::Impl::updatePairs() {
     // Every proxy that moved out of its fat AABB (or is new) looks for overlapping proxies, unless
     // its filter rejects every shape (addPair would drop all it finds).
+    // The workers query the tree side by side, each into its own list.
+    newPairsOf.resize(static_cast<size_t>(workers.count()));
+    for (std::vector<NewPair>& found : newPairsOf) found.clear();
+    workers.parallelFor(static_cast<int>(movedProxies.size()), 16, [&](int begin, int end, int worker) {
+        std::vector<NewPair>& found = newPairsOf[static_cast<size_t>(worker)];
+        for (int k = begin; k < end; ++k) {
+            const int proxy = movedProxies[k];
+            if (pairsWithNothing(shapes[collision.proxyKey(proxy).shape].filter)) continue;
+            collision.query(collision.fatAABB(proxy), [&](int other) {
+                // When both moved, only the pair's lower proxy reports it. Pairs that have a contact
+                // are most of what a large moving proxy finds: they are dropped here, before the sort.
+                if (other == proxy || (other < proxy && collision.wasMoved(other))) return true;
+                if (pairs.contains(proxyPairKey(proxy, other))) return true;
+                NewPair p{collision.proxyKey(proxy), collision.proxyKey(other), proxy, other};
+                if (std::tie(p.b.shape, p.b.child) < std::tie(p.a.shape, p.a.child)) {
+                    std::swap(p.a, p.b);
+                    std::swap(p.proxyA, p.proxyB);
+                }
+                found.push_back(p);
+                return true;
+            });
+        }
+    });
     newPairs.clear();
-    for (int proxy : movedProxies) {
-        if (pairsWithNothing(shapes[collision.proxyKey(proxy).shape].filter)) continue;
-        collision.query(collision.fatAABB(proxy), [&](int other) {
-            // When both moved, only the pair's lower proxy reports it. Pairs that have a contact
-            // are most of what a large moving proxy finds: they are dropped here, before the sort.
-            if (other == proxy || (other < proxy && collision.wasMoved(other))) return true;
-            if (pairs.contains(proxyPairKey(proxy, other))) return true;
-            NewPair p{collision.proxyKey(proxy), collision.proxyKey(other), proxy, other};
-            if (std::tie(p.b.shape, p.b.child) < std::tie(p.a.shape, p.a.child)) {
-                std::swap(p.a, p.b);
-                std::swap(p.proxyA, p.proxyB);
-            }
-            newPairs.push_back(p);
-            return true;
-        });
-    }
+    for (const std::vector<NewPair>& found : newPairsOf) newPairs.insert(newPairs.end(), found.begin(), found.end());
     for (int proxy : movedProxies) collision.clearMoved(proxy);
     movedProxies.clear();
-    // The tree's internal shape decides the order pairs are found in. Contacts are created in the
+    // The tree's internal shape (and the workers) decide the order pairs are found in. Contacts are created in the
     // order of their child keys instead, so that contact order (and the solver's) depends on the
     // world's state alone: a world restored from a snapshot, with a rebuilt tree, steps bit for bit alike.
     std::sort(newPairs.begin(), newPairs.end(), [](const NewPair& x, const NewPair& y) {
@@ -174,20 +182,63 @@ void World::Impl::destroyContactsOf(int bodyIndex, int shapeIndex) {
     }
 }
 
-// Narrowphase for every contact with an awake body: its kept manifold, or a new one.
+// The narrowphase of one contact, with the bodies' poses alone: whether its fat AABBs still
+// overlap (else it is to be destroyed), a sensor's overlap, or its kept manifold or a new one.
+// Events, the pre-solve callback and waking are left to updateContacts.
+World::Impl::Narrowphase World::Impl::collideContact(int index) {
+    Contact& c = contacts[index];
+    const Body& ba = bodies[c.bodyA];
+    const Body& bb = bodies[c.bodyB];
+    if (!overlaps(collision.fatAABB(c.proxyA), collision.fatAABB(c.proxyB))) return Narrowphase::Apart;
+    if (c.sensor) return collision.testOverlap(c.a, ba.xf, c.b, bb.xf) ? Narrowphase::Overlapping : Narrowphase::Separate;
+    const ShapeData& sa = shapes[c.a.shape];
+    const ShapeData& sb = shapes[c.b.shape];
+    c.friction = mixFriction(sa.friction, sb.friction);
+    c.restitution = mixRestitution(sa.restitution, sb.restitution);
+    c.rollingResistance = mixRollingResistance(sa, sb);
+    c.tangentSpeed = sa.tangentSpeed + sb.tangentSpeed;
+    const bool wasTouching = c.touching;
+    const ReuseLimits limits{.distance = def.contactReuseDistance,
+                             .reach = c.pointCount > 0 ? 0.0f  // only used without points
+                                                       : std::max(sa.maxExtent + length(ba.localCenter), sb.maxExtent + length(bb.localCenter)),
+                             .box2dMargin = collide::box2dSkin(sa.type) + collide::box2dSkin(sb.type),
+                             .skinOffset = def.box2dSkin ? 0.0f : collide::skinOffset(sa.type) + collide::skinOffset(sb.type)};
+    if (!reuseManifold(c, ba, bb, limits))
+        takeManifold(c, collision.collide(c.a, ba.xf, c.b, bb.xf, def.box2dSkin), ba, bb, isFlat(sa) && isFlat(sb));
+    c.touching = c.pointCount > 0;
+    return wasTouching ? Narrowphase::WasTouching : Narrowphase::WasNotTouching;
+}
+
+// Narrowphase for every contact with an awake body: the workers run collideContact on those
+// whose bodies were awake as the step began; then, in pool order, contacts are destroyed, events
+// raised and sleepers woken — and a contact whose body was woken by an earlier one in that order
+// takes its narrowphase there, as a one-by-one pass would.
 void World::Impl::updateContacts() {
-    for (int index = 0; index < static_cast<int>(contacts.size()); ++index) {
+    const int count = static_cast<int>(contacts.size());
+    narrowphase.resize(static_cast<size_t>(count));
+    workers.parallelFor(count, 64, [&](int begin, int end, int) {
+        for (int index = begin; index < end; ++index) {
+            const Contact& c = contacts[index];
+            const bool due = c.alive && (bodies[c.bodyA].awake || bodies[c.bodyB].awake);
+            narrowphase[index] = due ? collideContact(index) : Narrowphase::Skipped;
+        }
+    });
+    for (int index = 0; index < count; ++index) {
         Contact& c = contacts[index];
         if (!c.alive) continue;
         Body& ba = bodies[c.bodyA];
         Body& bb = bodies[c.bodyB];
-        if (!ba.awake && !bb.awake) continue;
-        if (!overlaps(collision.fatAABB(c.proxyA), collision.fatAABB(c.proxyB))) {
+        Narrowphase result = narrowphase[index];
+        if (result == Narrowphase::Skipped) {
+            if (!ba.awake && !bb.awake) continue;
+            result = collideContact(index);
+        }
+        if (result == Narrowphase::Apart) {
             destroyContact(index);
             continue;
         }
         if (c.sensor) {
-            const bool overlapping = collision.testOverlap(c.a, ba.xf, c.b, bb.xf);
+            const bool overlapping = result == Narrowphase::Overlapping;
             if (overlapping != c.overlapping) {
                 c.overlapping = overlapping;
                 reportTouch(c, overlapping);
@@ -196,26 +247,13 @@ void World::Impl::updateContacts() {
         }
         const ShapeData& sa = shapes[c.a.shape];
         const ShapeData& sb = shapes[c.b.shape];
-        c.friction = mixFriction(sa.friction, sb.friction);
-        c.restitution = mixRestitution(sa.restitution, sb.restitution);
-        c.rollingResistance = mixRollingResistance(sa, sb);
-        c.tangentSpeed = sa.tangentSpeed + sb.tangentSpeed;
-        const bool wasTouching = c.touching;
-        const ReuseLimits limits{.distance = def.contactReuseDistance,
-                                 .reach = c.pointCount > 0 ? 0.0f  // only used without points
-                                                           : std::max(sa.maxExtent + length(ba.localCenter), sb.maxExtent + length(bb.localCenter)),
-                                 .box2dMargin = collide::box2dSkin(sa.type) + collide::box2dSkin(sb.type),
-                                 .skinOffset = def.box2dSkin ? 0.0f : collide::skinOffset(sa.type) + collide::skinOffset(sb.type)};
-        if (!reuseManifold(c, ba, bb, limits))
-            takeManifold(c, collision.collide(c.a, ba.xf, c.b, bb.xf, def.box2dSkin), ba, bb, isFlat(sa) && isFlat(sb));
-        c.touching = c.pointCount > 0;
         if (c.touching && preSolve && (sa.enablePreSolveEvents || sb.enablePreSolveEvents) && !preSolve(shapeId(c.a.shape), shapeId(c.b.shape), contactData(c))) {
             c.pointCount = 0;  // disabled for this step, and its manifold is not kept
             c.touching = false;
             c.reuseValid = false;
         }
         if (!c.touching) c.rollingImpulse = 0.0f;
-        if (c.touching != wasTouching) reportTouch(c, c.touching);
+        if (c.touching != (result == Narrowphase::WasTouching)) reportTouch(c, c.touching);
         // An awake body touching a sleeping one wakes the sleeper's island.
         if (c.touching) {
             if (!ba.awake && ba.type != BodyType::Static && bb.awake) wake(c.bodyA);

@@ -182,7 +182,8 @@ struct World::Impl {
     Workers workers;  // the threads of the step's parallel stages
     bool locked = false;  // inside step()
     int frozenBodies = 0;  // bodies frozen because their state went non-finite (stats())
-    std::vector<NewPair> newPairs;  // updatePairs scratch
+    std::vector<NewPair> newPairs;  // updatePairs scratch: the pairs found,
+    std::vector<std::vector<NewPair>> newPairsOf;  // by each worker
 
     // Events of the last step (events.cpp). End events raised between steps (a destroyed shape)
     // are kept for the next step: the first `endEventsReported` entries are the stale ones.
@@ -253,6 +254,11 @@ struct World::Impl {
     }
     void addPair(int proxyA, int proxyB);
     void updateContacts();
+    // What collideContact found: not run (both bodies asleep), the fat AABBs apart, a sensor's
+    // overlap, or a contact's manifold updated and whether it touched before.
+    enum class Narrowphase : uint8_t { Skipped, Apart, Overlapping, Separate, WasTouching, WasNotTouching };
+    Narrowphase collideContact(int contact);
+    std::vector<Narrowphase> narrowphase;  // updateContacts scratch, by contact
     void destroyContact(int contact);
     void beginEvents();                        // forget the events reported after the last step
     void reportTouch(const Contact& c, bool begin);  // begin/end event for a contact or sensor
