@@ -4,10 +4,12 @@
 #   1. release build with -Werror, the whole ctest suite (it replays every checked-in fuzz seed and
 #      finding, tests/fuzz/CMakeLists.txt), the API reference (Doxygen, no warnings)
 #   2. AddressSanitizer + UndefinedBehaviorSanitizer build, the whole ctest suite again
-#   3. determinism across compilers: gcc and clang builds print the same state_hash
-#   4. a fixed libFuzzer smoke of the scene, snapshot and API harnesses (seed 1, 20000 inputs each;
+#   3. ThreadSanitizer: the threaded stages on a game's task system (clang, -fsanitize=thread)
+#   4. determinism across compilers and threads: gcc and clang builds print the same state_hash,
+#      and so does the gcc build on 2, 3, 4 and 8 workers
+#   5. a fixed libFuzzer smoke of the scene, snapshot and API harnesses (seed 1, 20000 inputs each;
 #      open-ended exploration is tests/fuzz/explore.sh, never CI)
-#   5. clang-tidy with the checked-in .clang-tidy
+#   6. clang-tidy with the checked-in .clang-tidy
 # Exits non-zero on the first failure; ends with both ctest summaries.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -29,7 +31,13 @@ cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPERPDOT_SANITIZE=ON
 cmake --build build-asan -j"$jobs"
 ctest --test-dir build-asan --output-on-failure -j"$jobs" | tee "$log/asan"
 
-echo "== gcc vs clang state_hash"
+echo "== ThreadSanitizer (clang): every threaded stage on a game's std::threads (tests/workers_test.cpp)"
+cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ -DPERPDOT_TSAN=ON \
+  -DPERPDOT_BUILD_DEMOS=OFF -DPERPDOT_BUILD_BENCH=OFF
+cmake --build build-tsan -j"$jobs" --target perpdot-tests
+TSAN_OPTIONS=halt_on_error=1 build-tsan/tests/perpdot-tests --gtest_filter='Workers.AGames*:Workers.ATask*'
+
+echo "== gcc vs clang state_hash, and 1 vs 2, 3, 4, 8 workers"
 bash tests/cross_compiler_hash.sh
 
 echo "== fuzz smoke (fixed seed and input count)"

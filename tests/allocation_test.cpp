@@ -4,8 +4,8 @@
 // is counted with operator new (libstdc++'s calls malloc):
 // - release builds interpose malloc, calloc and realloc in this executable (they count, then call
 //   glibc's __libc_* versions); the dynamic linker binds libbox2d's and libstdc++'s calls to them;
-// - AddressSanitizer builds cannot interpose (ASan's own malloc must serve every block it later
-//   checks and frees), so they count through ASan's allocation hook,
+// - AddressSanitizer (and ThreadSanitizer) builds cannot interpose (the sanitizer's own malloc must
+//   serve every block it later checks and frees), so they count through its allocation hook,
 //   __sanitizer_install_malloc_and_free_hooks, which sees malloc, calloc, realloc and new alike.
 #include <gtest/gtest.h>
 
@@ -17,10 +17,10 @@
 #include "perpdot/perpdot.hpp"
 #include "perpdot/scene.hpp"
 
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
 #define PERPDOT_ASAN 1
 #elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
 #define PERPDOT_ASAN 1
 #endif
 #endif
@@ -135,6 +135,15 @@ TEST(Allocation, JointGridAllocatesNothing) {
     ASSERT_GE(grid.world.joints().size(), 9000u);
     for (int i = 0; i < 10; ++i) grid.step();
     EXPECT_EQ(allocationsOf(20, [&] { grid.step(); }), 0);
+}
+
+// With workers (oneTBB): the threads' task storage is reused too.
+TEST(Allocation, ThreadedStepsAllocateNothing) {
+    for (const char* name : {"pyramid", "joint_grid", "ragdoll_rain"}) {
+        SceneWorld scene = buildWorld(findScene(name), 2);
+        for (int i = 0; i < 300; ++i) scene.step();
+        EXPECT_EQ(allocationsOf(100, [&] { scene.step(); }), 0) << name;
+    }
 }
 
 // Bullets ricocheting (e = 1, no gravity) at 300 m/s in a closed 4 m box hit the walls and each

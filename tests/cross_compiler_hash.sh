@@ -5,7 +5,8 @@
 # `perpdot run <scene>` prints the same state_hash with all three, for scenes that exercise
 # stacking, friction, restitution, rotation, many contacts and joints (scalar and 4-wide). A
 # difference names the scene and the three hashes. SCENE:N runs N steps (perpdot run --steps N,
-# the scene's step count) instead of the scene's own, to keep the benchmark scenes short.
+# the scene's step count) instead of the scene's own, to keep the benchmark scenes short. The gcc
+# build must also print the same hash on 2, 3, 4 and 8 workers (perpdot run --workers N).
 #
 # Snapshots too: for each scene of `snapshotScenes` (SCENE:N:K), every build saves the run at step
 # K (`perpdot run --save-at`), the three files must be the same bytes, and every build loads every
@@ -36,10 +37,10 @@ build "$gccDir" g++ ON
 build "$clangDir" clang++ ON
 build "$noSimdDir" g++ OFF
 
-hashOf() {  # dir scene[:steps]
+hashOf() {  # dir scene[:steps] [perpdot run flags...]
     local steps=()
     [[ "$2" == *:* ]] && steps=(--steps "${2#*:}")
-    "$1/perpdot" run "${2%%:*}" "${steps[@]}" | sed -n 's/.*state_hash=\([0-9a-f]*\).*/\1/p'
+    "$1/perpdot" run "${2%%:*}" "${steps[@]}" "${@:3}" | sed -n 's/.*state_hash=\([0-9a-f]*\).*/\1/p'
 }
 failed=0
 for scene in "${scenes[@]}"; do
@@ -52,6 +53,14 @@ for scene in "${scenes[@]}"; do
     else
         echo "same      $scene $g"
     fi
+    # Threads: the gcc build on 2, 3, 4 and 8 workers (WorldDef::workerCount) gives the same world.
+    for workers in 2 3 4 8; do
+        t="$(hashOf "$gccDir" "$scene" --workers "$workers")"
+        if [[ "$t" != "$g" ]]; then
+            echo "DIFFERENT $scene with $workers workers: $t (1 worker: $g)"
+            failed=1
+        fi
+    done
 done
 snapDir="$(mktemp -d)"
 trap 'rm -rf "$snapDir"' EXIT

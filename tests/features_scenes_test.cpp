@@ -92,8 +92,9 @@ TEST(FeaturesScenes, ShapeCastsMarkTheFirstShapeOnTheirPath) {
         runScene(sw, 40);
         RecordingDraw draw;
         findSceneBehaviour("shape_casts")->draw(sw, draw);
-        for (const auto& [p, size] : draw.points) {
-            if (size != 7.0f) continue;
+        for (const auto& point : draw.points) {
+            const Vec2 p = point.first;  // a plain variable: clang 14 lambdas cannot capture bindings
+            if (point.second != 7.0f) continue;
             ++firstTouches;
             EXPECT_FALSE(sw.world.overlapAABB({p - Vec2{0.02f, 0.02f}, p + Vec2{0.02f, 0.02f}}).empty()) << p.x << ", " << p.y;
             const bool listed = std::any_of(draw.points.begin(), draw.points.end(),

@@ -29,7 +29,7 @@ TEST(SceneExplosion, ReadsAndWritesBack) {
     const SceneAction& a = s.actions[0];
     EXPECT_EQ(a.kind, SceneAction::Kind::Explosion);
     EXPECT_TRUE(a.body.empty());
-    EXPECT_EQ(a.point, Vec2(0.0f, 0.0f));
+    EXPECT_EQ(a.point, (Vec2{0.0f, 0.0f}));
     EXPECT_EQ(a.radius, 3.0f);
     EXPECT_EQ(a.scalar, 6.0f);
     EXPECT_FALSE(a.blockedByStatic);
@@ -73,14 +73,14 @@ TEST(SceneExplosion, PushesWhatIsInReachAsWorldExplodeDoes) {
     SceneWorld direct = buildWorld(parseScene(ballsAndBlast("")));
     scripted.step();
     direct.step();
-    EXPECT_EQ(scripted.world.linearVelocity(scripted.bodies[0]), Vec2(0.0f, 0.0f)) << "step 0: not yet";
+    EXPECT_EQ(scripted.world.linearVelocity(scripted.bodies[0]), (Vec2{0.0f, 0.0f})) << "step 0: not yet";
     scripted.step();
     direct.world.explode({.position = {0.0f, 0.0f}, .radius = 3.0f, .impulse = 6.0f});
     direct.step();
     const Vec2 v = scripted.world.linearVelocity(scripted.bodies[0]);
     EXPECT_GT(v.x, 0.0f);
     EXPECT_EQ(v, direct.world.linearVelocity(direct.bodies[0])) << "bit for bit what World::explode does";
-    EXPECT_EQ(scripted.world.linearVelocity(scripted.bodies[1]), Vec2(0.0f, 0.0f)) << "5 m away, outside 3 m";
+    EXPECT_EQ(scripted.world.linearVelocity(scripted.bodies[1]), (Vec2{0.0f, 0.0f})) << "5 m away, outside 3 m";
 }
 
 TEST(SceneExplosion, TheCrossCheckRefusesItBox2DHasNone) {

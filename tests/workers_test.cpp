@@ -1,0 +1,143 @@
+// Threads (WorldDef::workerCount, the task interface): the world after N steps is bit-identical
+// for every worker count and for a game's own task system, whichever way it splits the work; a
+// restored world keeps its threads; bad settings are refused.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "perpdot/feature_scenes.hpp"
+#include "perpdot/perpdot.hpp"
+#include "perpdot/scene.hpp"
+#include "perpdot/state_hash.hpp"
+#include "scene/build_world.hpp"
+
+namespace perpdot {
+namespace {
+
+uint64_t hashAfter(const std::string& sceneName, int steps, int workers) {
+    Scene scene = findScene(sceneName);
+    scene.steps = steps;
+    SceneWorld built = buildWorldWithBehaviour(scene, workers);
+    for (int i = 0; i < steps; ++i) built.step();
+    return stateHash(built.world);
+}
+
+// The scene's world settings (as buildWorld makes them) with the given threads.
+WorldDef defOf(const Scene& scene, WorldDef threads) {
+    threads.gravity = scene.gravity;
+    threads.enableSleep = scene.enableSleep;
+    if (scene.solver.substeps) threads.substeps = *scene.solver.substeps;
+    threads.box2dSkin = scene.solver.box2dSkin;
+    return threads;
+}
+
+// Stacks and sleep, joints of every colour and trees, sensors and events, bullets and continuous
+// collision, a churning broadphase.
+struct HashCase {
+    const char* scene;
+    int steps;
+};
+const HashCase hashCases[] = {{"pyramid", 200}, {"ragdoll", 120}, {"car", 150},       {"sensor_zone", 160},
+                              {"bullet_wall", 40}, {"tumbler", 150}, {"rain", 200}, {"joint_grid", 30},
+                              {"suspension_bridge", 120}, {"dominoes", 200}};
+
+TEST(Workers, EveryWorkerCountGivesTheSameWorld) {
+    for (const HashCase& c : hashCases) {
+        const uint64_t one = hashAfter(c.scene, c.steps, 1);
+        for (int workers : {2, 3, 4, 8}) EXPECT_EQ(hashAfter(c.scene, c.steps, workers), one) << c.scene << " with " << workers << " workers";
+    }
+}
+
+// A game's job system: each task is cut into ranges of exactly minRange items, run by `threads`
+// std::threads, the ranges dealt out round-robin in reverse order.
+struct GameJobs {
+    int threads = 3;
+    int tasks = 0;
+    struct Task {
+        TaskFn* fn;
+        int count, minRange;
+        void* context;
+    } pending{};
+
+    static void* enqueue(TaskFn* fn, int count, int minRange, void* context, void* user) {
+        auto* jobs = static_cast<GameJobs*>(user);
+        ++jobs->tasks;
+        jobs->pending = {fn, count, minRange, context};
+        return &jobs->pending;
+    }
+    static void finish(void* handle, void* user) {
+        auto* jobs = static_cast<GameJobs*>(user);
+        const Task task = *static_cast<Task*>(handle);
+        const int ranges = (task.count + task.minRange - 1) / task.minRange;
+        std::vector<std::thread> pool;
+        for (int worker = 0; worker < jobs->threads; ++worker) {
+            pool.emplace_back([=] {
+                for (int r = ranges - 1 - worker; r >= 0; r -= jobs->threads) {
+                    const int begin = r * task.minRange;
+                    task.fn(begin, std::min(begin + task.minRange, task.count), worker, task.context);
+                }
+            });
+        }
+        for (std::thread& t : pool) t.join();
+    }
+};
+
+// The scene's bodies and joints (no scripted actions) stepped in a world with these threads.
+uint64_t plainHash(const HashCase& c, const WorldDef& threads) {
+    const Scene scene = findScene(c.scene);
+    World world(defOf(scene, threads));
+    addToWorld(world, scene);
+    for (int i = 0; i < c.steps; ++i) world.step(scene.timestep);
+    return stateHash(world);
+}
+
+// Every scene on the game's own threads gives the world of one worker. (The CI's ThreadSanitizer
+// run is this test: its threads are std::threads, which the sanitizer sees whole, where oneTBB's
+// uninstrumented internals would raise false reports.)
+TEST(Workers, AGamesTaskSystemGivesTheSameWorld) {
+    for (const HashCase& c : hashCases) {
+        GameJobs jobs;
+        const uint64_t hash = plainHash(c, {.workerCount = jobs.threads, .enqueueTask = &GameJobs::enqueue,
+                                            .finishTask = &GameJobs::finish, .userTaskContext = &jobs});
+        EXPECT_GE(jobs.tasks, c.steps) << c.scene << ": every step hands it work";
+        EXPECT_EQ(hash, plainHash(c, {})) << c.scene;
+    }
+}
+
+// A task system may run a task at once and return no handle.
+TEST(Workers, ATaskRunInsideEnqueueIsFinished) {
+    auto inline_ = [](TaskFn* fn, int count, int, void* context, void*) -> void* {
+        fn(0, count, 0, context);
+        return nullptr;
+    };
+    auto never = [](void*, void*) { FAIL() << "finishTask called without a handle"; };
+    Scene scene = findScene("ragdoll");
+    World world(defOf(scene, {.workerCount = 4, .enqueueTask = +inline_, .finishTask = +never}));
+    addToWorld(world, scene);
+    for (int i = 0; i < 120; ++i) world.step(scene.timestep);
+    EXPECT_EQ(stateHash(world), hashAfter("ragdoll", 120, 1));
+}
+
+TEST(Workers, BadSettingsAreRefused) {
+    EXPECT_THROW(World(WorldDef{.workerCount = 0}), Error);
+    EXPECT_THROW(World(WorldDef{.workerCount = 257}), Error);
+    auto enqueue = [](TaskFn*, int, int, void*, void*) -> void* { return nullptr; };
+    EXPECT_THROW(World(WorldDef{.workerCount = 2, .enqueueTask = +enqueue}), Error);
+}
+
+// A snapshot holds no threads: the restoring world keeps its own, and its future is the same.
+TEST(Workers, ARestoredWorldKeepsItsWorkers) {
+    Scene scene = findScene("pyramid");
+    SceneWorld threaded = buildWorld(scene, 2);
+    for (int i = 0; i < 100; ++i) threaded.step();
+    const std::vector<uint8_t> saved = threaded.world.snapshot();
+    threaded.world.restore(saved);
+    EXPECT_EQ(threaded.world.settings().workerCount, 2);
+    for (int i = 0; i < 100; ++i) threaded.step();
+    EXPECT_EQ(stateHash(threaded.world), hashAfter("pyramid", 200, 1));
+}
+
+}  // namespace
+}  // namespace perpdot
