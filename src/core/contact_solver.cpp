@@ -32,50 +32,50 @@ namespace {
 
 // The constraint of a touching contact: masses, softness, anchors and effective masses.
 void prepareContact(const World::Impl& w, const StepContext& ctx, ContactConstraint& c) {
-        const Contact& contact = w.contacts[c.contact];
-        const Body& ba = w.bodies[contact.bodyA];
-        const Body& bb = w.bodies[contact.bodyB];
-        c.indexA = ba.solverIndex;
-        c.indexB = bb.solverIndex;
-        c.invMassA = ba.invMass;
-        c.invIA = ba.invInertia;
-        c.invMassB = bb.invMass;
-        c.invIB = bb.invInertia;
-        c.normal = contact.normal;
-        c.friction = contact.friction;
-        c.restitution = contact.restitution;
-        c.rollingResistance = contact.rollingResistance;
-        c.tangentSpeed = contact.tangentSpeed;
-        c.rollingImpulse = ctx.enableWarmStarting ? contact.rollingImpulse : 0.0f;
-        const float kRolling = c.invIA + c.invIB;
-        c.rollingMass = c.rollingResistance > 0.0f && kRolling > 0.0f ? 1.0f / kRolling : 0.0f;
-        const bool againstStatic = ba.invMass == 0.0f || bb.invMass == 0.0f;
-        const Softness& softness = againstStatic ? ctx.staticSoftness : ctx.contactSoftness;
-        c.biasRate = softness.biasRate;
-        c.massScale = softness.massScale;
-        c.impulseScale = softness.impulseScale;
-        c.pointCount = contact.pointCount;
-        c.turnsA = roundingRadius(w.shapes[contact.a.shape]) == 0.0f ? 1.0f : 0.0f;
-        c.turnsB = roundingRadius(w.shapes[contact.b.shape]) == 0.0f ? 1.0f : 0.0f;
+    const Contact& contact = w.contacts[c.contact];
+    const Body& ba = w.bodies[contact.bodyA];
+    const Body& bb = w.bodies[contact.bodyB];
+    c.indexA = ba.solverIndex;
+    c.indexB = bb.solverIndex;
+    c.invMassA = ba.invMass;
+    c.invIA = ba.invInertia;
+    c.invMassB = bb.invMass;
+    c.invIB = bb.invInertia;
+    c.normal = contact.normal;
+    c.friction = contact.friction;
+    c.restitution = contact.restitution;
+    c.rollingResistance = contact.rollingResistance;
+    c.tangentSpeed = contact.tangentSpeed;
+    c.rollingImpulse = ctx.enableWarmStarting ? contact.rollingImpulse : 0.0f;
+    const float kRolling = c.invIA + c.invIB;
+    c.rollingMass = c.rollingResistance > 0.0f && kRolling > 0.0f ? 1.0f / kRolling : 0.0f;
+    const bool againstStatic = ba.invMass == 0.0f || bb.invMass == 0.0f;
+    const Softness& softness = againstStatic ? ctx.staticSoftness : ctx.contactSoftness;
+    c.biasRate = softness.biasRate;
+    c.massScale = softness.massScale;
+    c.impulseScale = softness.impulseScale;
+    c.pointCount = contact.pointCount;
+    c.turnsA = roundingRadius(w.shapes[contact.a.shape]) == 0.0f ? 1.0f : 0.0f;
+    c.turnsB = roundingRadius(w.shapes[contact.b.shape]) == 0.0f ? 1.0f : 0.0f;
 
-        const Vec2 n = contact.normal, t = perp(n);
-        const BodyState sa = velocityWithoutContact(w, ctx, c.indexA), sb = velocityWithoutContact(w, ctx, c.indexB);
-        for (int i = 0; i < contact.pointCount; ++i) {
-            const ContactPointState& p = contact.points[i];
-            ContactPointRows<float>& cp = c.points[i];
-            cp.anchorA = p.anchorA;
-            cp.anchorB = p.anchorB;
-            cp.baseSeparation = p.separation - dot(p.anchorB - p.anchorA, n);
-            const float scale = ctx.enableWarmStarting ? 1.0f : 0.0f;
-            cp.normalImpulse = scale * p.normalImpulse;
-            cp.tangentImpulse = scale * p.tangentImpulse;
-            cp.maxNormalImpulse = 0.0f;
-            const float kn = invEffectiveMass(c, p.anchorA, p.anchorB, n);
-            const float kt = invEffectiveMass(c, p.anchorA, p.anchorB, t);
-            cp.normalMass = kn > 0.0f ? 1.0f / kn : 0.0f;
-            cp.tangentMass = kt > 0.0f ? 1.0f / kt : 0.0f;
-            cp.relativeVelocity = dot(relativeVelocity(sa, sb, p.anchorA, p.anchorB), n);
-        }
+    const Vec2 n = contact.normal, t = perp(n);
+    const BodyState sa = velocityWithoutContact(w, ctx, c.indexA), sb = velocityWithoutContact(w, ctx, c.indexB);
+    for (int i = 0; i < contact.pointCount; ++i) {
+        const ContactPointState& p = contact.points[i];
+        ContactPointRows<float>& cp = c.points[i];
+        cp.anchorA = p.anchorA;
+        cp.anchorB = p.anchorB;
+        cp.baseSeparation = p.separation - dot(p.anchorB - p.anchorA, n);
+        const float scale = ctx.enableWarmStarting ? 1.0f : 0.0f;
+        cp.normalImpulse = scale * p.normalImpulse;
+        cp.tangentImpulse = scale * p.tangentImpulse;
+        cp.maxNormalImpulse = 0.0f;
+        const float kn = invEffectiveMass(c, p.anchorA, p.anchorB, n);
+        const float kt = invEffectiveMass(c, p.anchorA, p.anchorB, t);
+        cp.normalMass = kn > 0.0f ? 1.0f / kn : 0.0f;
+        cp.tangentMass = kt > 0.0f ? 1.0f / kt : 0.0f;
+        cp.relativeVelocity = dot(relativeVelocity(sa, sb, p.anchorA, p.anchorB), n);
+    }
 }
 
 }  // namespace
