@@ -102,9 +102,10 @@ void World::Impl::updatePairs() {
     for (const std::vector<NewPair>& found : newPairsOf) newPairs.insert(newPairs.end(), found.begin(), found.end());
     for (int proxy : movedProxies) collision.clearMoved(proxy);
     movedProxies.clear();
-    // The tree's internal shape (and the workers) decide the order pairs are found in. Contacts are created in the
-    // order of their child keys instead, so that contact order (and the solver's) depends on the
-    // world's state alone: a world restored from a snapshot, with a rebuilt tree, steps bit for bit alike.
+    // The tree's internal shape and the workers' split decide the order pairs are found in.
+    // Contacts are created in the order of their child keys instead, so that contact order (and
+    // the solver's) depends on the world's state alone: a world restored from a snapshot, with a
+    // rebuilt tree, or stepped by any number of workers, steps bit for bit alike.
     std::sort(newPairs.begin(), newPairs.end(), [](const NewPair& x, const NewPair& y) {
         return std::tie(x.a.shape, x.a.child, x.b.shape, x.b.child) < std::tie(y.a.shape, y.a.child, y.b.shape, y.b.child);
     });

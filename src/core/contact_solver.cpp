@@ -113,7 +113,7 @@ float reboundSpeed(float e, float V, float a, float h) {
 // Hecker's bounce: drive v_rel·n to the rebound speed of the approach (v_rel·n at the end of the
 // step without the contact), for approaches faster than the restitution threshold.
 void applyRestitution(World::Impl& w, const StepContext& ctx) {
-    std::vector<BodyState>& states = *ctx.states;
+    std::vector<BodyState>& states = w.states;
     for (ContactConstraint& c : w.constraints) {
         if (c.restitution == 0.0f) continue;
         BodyState& a = states[c.indexA];

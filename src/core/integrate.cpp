@@ -117,6 +117,14 @@ void integratePositions(World::Impl& w, const StepContext& ctx, int begin, int e
 // then meet moving bodies too (continuous_impacts.cpp).
 void finalizeBodies(World::Impl& w, float h) {
     enum Motion : uint8_t { Moved, Fast, NonFinite };
+    // The solver's velocities and the pose (c1, a1) into the body.
+    const auto moveTo = [](Body& b, const BodyState& s, Vec2 c1, float a1) {
+        b.v = s.v;
+        b.w = s.w;
+        b.center = c1;
+        b.angle = a1;
+        b.xf = b.derivedTransform();
+    };
     const int count = static_cast<int>(w.awakeBodies.size());
     w.bodyMotion.resize(static_cast<size_t>(count));
     w.workers.parallelFor(count, 256, [&](int begin, int end, int) {
@@ -131,12 +139,7 @@ void finalizeBodies(World::Impl& w, float h) {
             const Vec2 c1 = b.center + s.dp;
             const float a1 = b.angle + dAngle;
             w.bodyMotion[k] = w.def.enableContinuous && w.isFast(w.awakeBodies[k], b.center, b.angle, c1, a1) ? Fast : Moved;
-            if (w.bodyMotion[k] == Fast) continue;
-            b.v = s.v;
-            b.w = s.w;
-            b.center = c1;
-            b.angle = a1;
-            b.xf = b.derivedTransform();
+            if (w.bodyMotion[k] != Fast) moveTo(b, s, c1, a1);
         }
     });
     w.movers.clear();
@@ -162,11 +165,7 @@ void finalizeBodies(World::Impl& w, float h) {
         }
         const Vec2 c0 = b.center;
         const float a0 = b.angle;
-        b.v = s.v;
-        b.w = s.w;
-        b.center = b.center + s.dp;
-        b.angle = b.angle + w.stepRotation[k + 1];
-        b.xf = b.derivedTransform();
+        moveTo(b, s, c0 + s.dp, a0 + w.stepRotation[k + 1]);
         w.movers.push_back({.body = index, .c0 = c0, .a0 = a0, .v = b.v, .w = b.w, .stepStart = c0, .fast = true});
         if (!b.bullet) {
             w.solveContinuous(index, c0, a0);

@@ -184,7 +184,6 @@ inline JointPair pairOf(std::vector<BodyState>& states, const std::vector<float>
     return pairOf(states[j.indexA], states[j.indexB], stepRotation, j);
 }
 
-
 struct RevoluteBlock;  // four revolute joints in SIMD lanes (joint_solver_wide.hpp)
 
 struct JointStore {

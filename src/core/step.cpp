@@ -44,7 +44,6 @@ void World::step(float timeStep) {
     w.updateContacts();  // narrowphase: each contact keeps its manifold or takes a new one
 
     StepContext ctx = makeStepContext(w, timeStep);
-    ctx.states = &w.states;
     integrateVelocities(w, ctx);
     prepareJoints(w, ctx);  // prepare: effective masses, anchors, warm-start impulses
     prepareContacts(w, ctx);

@@ -40,7 +40,6 @@ struct StepContext {
     float hs = 0;      // one substep
     float invHs = 0;
     int substeps = 1;
-    std::vector<BodyState>* states = nullptr;
     Softness contactSoftness;  // dynamic against dynamic
     Softness staticSoftness;   // dynamic against static or kinematic: twice as stiff
     Softness jointSoftness;
