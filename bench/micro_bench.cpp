@@ -26,8 +26,8 @@ void BM_NarrowphaseBoxBox(benchmark::State& state) {
 BENCHMARK(BM_NarrowphaseBoxBox);
 
 // A pyramid of 1 m boxes on a static ground, sleep off, settled for 120 steps.
-World settledPyramid(int rows, int substeps) {
-    World world(WorldDef{.substeps = substeps, .enableSleep = false});
+World settledPyramid(int rows, int substeps, int workerCount = 1) {
+    World world(WorldDef{.substeps = substeps, .enableSleep = false, .workerCount = workerCount});
     const BodyId ground = world.createBody({.position = {0.0f, -0.5f}});
     world.createShape(ground, {}, makeBox(30.0f, 0.5f));
     for (int row = 0; row < rows; ++row)
@@ -81,14 +81,16 @@ void BM_BroadphaseUpdate(benchmark::State& state) {
 BENCHMARK(BM_BroadphaseUpdate)->Unit(benchmark::kMicrosecond);
 
 // Rollback on an 820-box pyramid (40 rows, every body awake, about 1,600 touching contacts).
-// Arg 0: full snapshots; arg 1: compact ones against a baseline taken 8 steps before.
+// Args {compact, workers}: full snapshots (0) or compact ones against a baseline taken 8 steps
+// before (1), on 1 or 2 workers (the re-simulated frames use them).
 // Capture: the snapshot of the current state. Restore: restore it. Rollback: restore, then
 // re-simulate 8 frames (the netcode case). bytes_per_body = snapshot bytes / awake bodies.
 struct RollbackFixture {
-    World world = settledPyramid(40, 4);
+    World world;
     std::vector<uint8_t> baseline, saved;
     bool compact;
-    explicit RollbackFixture(bool compactMode) : compact(compactMode) {
+    explicit RollbackFixture(const benchmark::State& state)
+        : world(settledPyramid(40, 4, static_cast<int>(state.range(1)))), compact(state.range(0) == 1) {
         baseline = world.baselineSnapshot();
         for (int i = 0; i < 8; ++i) world.step(1.0f / 60.0f);
         saved = capture();
@@ -105,28 +107,28 @@ struct RollbackFixture {
 };
 
 void BM_SnapshotCapture(benchmark::State& state) {
-    RollbackFixture f(state.range(0) == 1);
+    RollbackFixture f(state);
     for (auto _ : state) benchmark::DoNotOptimize(f.capture());
     f.count(state);
 }
-BENCHMARK(BM_SnapshotCapture)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SnapshotCapture)->Args({0, 1})->Args({1, 1})->Unit(benchmark::kMicrosecond);
 
 void BM_SnapshotRestore(benchmark::State& state) {
-    RollbackFixture f(state.range(0) == 1);
+    RollbackFixture f(state);
     for (auto _ : state) f.restore();
     f.count(state);
 }
-BENCHMARK(BM_SnapshotRestore)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SnapshotRestore)->Args({0, 1})->Args({1, 1})->Unit(benchmark::kMicrosecond);
 
 void BM_RollbackRestoreAnd8Frames(benchmark::State& state) {
-    RollbackFixture f(state.range(0) == 1);
+    RollbackFixture f(state);
     for (auto _ : state) {
         f.restore();
         for (int i = 0; i < 8; ++i) f.world.step(1.0f / 60.0f);
     }
     f.count(state);
 }
-BENCHMARK(BM_RollbackRestoreAnd8Frames)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RollbackRestoreAnd8Frames)->ArgsProduct({{0, 1}, {1, 2}})->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace perpdot
