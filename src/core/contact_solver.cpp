@@ -76,22 +76,27 @@ void prepareContact(const World::Impl& w, const StepContext& ctx, ContactConstra
         cp.tangentMass = kt > 0.0f ? 1.0f / kt : 0.0f;
         cp.relativeVelocity = dot(relativeVelocity(sa, sb, p.anchorA, p.anchorB), n);
     }
+    for (int i = contact.pointCount; i < 2; ++i) c.points[i] = {};  // a reused slot keeps no old point
 }
 
 }  // namespace
 
-// The touching contacts with an awake body, in pool order, each prepared by the workers.
+// The touching contacts with an awake body, in pool order, selected and prepared by the workers.
 void prepareContacts(World::Impl& w, const StepContext& ctx) {
-    w.constraints.clear();
-    for (int index = 0; index < static_cast<int>(w.contacts.size()); ++index) {
+    auto constrains = [&](int index) {
         const Contact& contact = w.contacts[index];
-        if (!contact.alive || !contact.touching) continue;
-        if (!w.bodies[contact.bodyA].awake && !w.bodies[contact.bodyB].awake) continue;
-        w.constraints.emplace_back().contact = index;
-    }
-    w.workers.parallelFor(static_cast<int>(w.constraints.size()), 64, [&](int begin, int end, int) {
-        for (int k = begin; k < end; ++k) prepareContact(w, ctx, w.constraints[k]);
-    });
+        return contact.alive && contact.touching && (w.bodies[contact.bodyA].awake || w.bodies[contact.bodyB].awake);
+    };
+    w.workers.parallelSelect(
+        static_cast<int>(w.contacts.size()), constrains, [&](int total) { w.constraints.resize(total); },
+        [&](int k, int index) {
+            ContactConstraint& c = w.constraints[k];
+            c.contact = index;
+            prepareContact(w, ctx, c);
+        });
+    w.workers.parallelSelect(
+        static_cast<int>(w.constraints.size()), [&](int k) { return w.constraints[k].restitution != 0.0f; },
+        [&](int total) { w.bouncingConstraints.resize(total); }, [&](int slot, int k) { w.bouncingConstraints[slot] = k; });
     prepareContactBlocks(w);
 }
 
@@ -114,8 +119,8 @@ float reboundSpeed(float e, float V, float a, float h) {
 // step without the contact), for approaches faster than the restitution threshold.
 void applyRestitution(World::Impl& w, const StepContext& ctx) {
     std::vector<BodyState>& states = w.states;
-    for (ContactConstraint& c : w.constraints) {
-        if (c.restitution == 0.0f) continue;
+    for (int k : w.bouncingConstraints) {
+        ContactConstraint& c = w.constraints[k];
         BodyState& a = states[c.indexA];
         BodyState& b = states[c.indexB];
         // The pair's deceleration along n from this step's forces: −(ΔvB − ΔvA)·n / h.

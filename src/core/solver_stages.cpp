@@ -11,7 +11,7 @@ namespace {
 
 // Units per claim: enough work to outweigh the atomic claim, few enough to share a colour.
 constexpr int bodiesPerItem = 64;
-constexpr int jointUnitsPerItem = 4;
+constexpr int jointUnitsPerItem = 16;
 constexpr int contactBlocksPerItem = 8;
 
 }  // namespace

@@ -7,7 +7,9 @@
 // any worker count.
 #pragma once
 
+#include <algorithm>
 #include <memory>
+#include <vector>
 
 #include "perpdot/world.hpp"
 
@@ -34,7 +36,40 @@ public:
         run(&call<Fn>, itemCount, minRange, const_cast<Fn*>(&fn));
     }
 
+    // The items of [0, itemCount) that keep(i) keeps, in order, on the workers: each block of
+    // selectBlock items counts what it keeps, the counts' prefix sums give every block its place,
+    // then reserve(total) sizes the output once and write(k, i) fills slot k with item i, blocks
+    // side by side. keep runs twice per item and must give the same answer both times. Returns
+    // the total. The slots do not depend on the split: the output is the same for any worker count.
+    template <class Keep, class Reserve, class Write>
+    int parallelSelect(int itemCount, const Keep& keep, const Reserve& reserve, const Write& write) {
+        const int blocks = (itemCount + selectBlock - 1) / selectBlock;
+        blockOffsets_.resize(static_cast<size_t>(blocks) + 1);  // grows to the largest pool, then stays
+        blockOffsets_[0] = 0;
+        parallelFor(blocks, 1, [&](int begin, int end, int) {
+            for (int b = begin; b < end; ++b) {
+                int kept = 0;
+                for (int i = b * selectBlock, last = std::min(i + selectBlock, itemCount); i < last; ++i)
+                    kept += keep(i) ? 1 : 0;
+                blockOffsets_[static_cast<size_t>(b) + 1] = kept;
+            }
+        });
+        for (size_t b = 1; b < blockOffsets_.size(); ++b) blockOffsets_[b] += blockOffsets_[b - 1];
+        const int total = blockOffsets_.back();
+        reserve(total);
+        parallelFor(blocks, 1, [&](int begin, int end, int) {
+            for (int b = begin; b < end; ++b) {
+                int slot = blockOffsets_[static_cast<size_t>(b)];
+                for (int i = b * selectBlock, last = std::min(i + selectBlock, itemCount); i < last; ++i)
+                    if (keep(i)) write(slot++, i);
+            }
+        });
+        return total;
+    }
+
 private:
+    static constexpr int selectBlock = 1024;
+
     template <class Fn>
     static void call(int begin, int end, int worker, void* fn) {
         (*static_cast<const Fn*>(fn))(begin, end, worker);
@@ -47,6 +82,7 @@ private:
     void* userContext_ = nullptr;
     struct Arena;  // oneTBB, when the game brings no job system
     std::unique_ptr<Arena> arena_;
+    std::vector<int> blockOffsets_;  // parallelSelect's prefix sums
 };
 
 }  // namespace perpdot

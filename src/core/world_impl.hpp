@@ -210,6 +210,7 @@ struct World::Impl {
     std::vector<uint8_t> bodyMotion;    // finalizeBodies scratch, by awake body: moved, fast or non-finite
     std::vector<SubstepForces> substepForces;  // of states[i]
     std::vector<ContactConstraint> constraints;
+    std::vector<int> bouncingConstraints;        // the constraints with restitution, for its pass
     GraphColoring contactColoring;               // colours of `constraints` (graph_color.hpp)
     std::vector<ContactBlock> contactBlocks;     // four constraints of one colour each, in colour order
     ColorStarts contactBlockStart{};             // colour c is contactBlocks[start[c] .. start[c + 1])
