@@ -149,6 +149,25 @@ bool CollisionSystem::moveProxy(int proxy, const AABB& aabb, Vec2 displacement) 
     return impl_->tree.MoveProxy(proxy, box, toB2(displacement));
 }
 
+bool CollisionSystem::proxyKeeps(int proxy, const AABB& aabb, Vec2 displacement) const {
+    if (impl_->staticLeaf[proxy] >= 0) return false;  // two trees to keep in step: let moveProxy decide
+    const b2Vec2 lower = toB2(aabb.lower), upper = toB2(aabb.upper);
+    const b2AABB& tree = impl_->tree.GetFatAABB(proxy);
+    if (!(tree.lowerBound.x <= lower.x && tree.lowerBound.y <= lower.y && upper.x <= tree.upperBound.x &&
+          upper.y <= tree.upperBound.y))
+        return false;
+    // The box a re-insertion would make: aabb grown by the extension r and by b2_aabbMultiplier
+    // times the displacement on its side; "too large" is a tree box outside that grown by 4r more.
+    const b2Vec2 r(b2_aabbExtension, b2_aabbExtension);
+    b2Vec2 fatLower = lower - r, fatUpper = upper + r;
+    const b2Vec2 d = b2_aabbMultiplier * toB2(displacement);
+    (d.x < 0.0f ? fatLower.x : fatUpper.x) += d.x;
+    (d.y < 0.0f ? fatLower.y : fatUpper.y) += d.y;
+    const b2Vec2 hugeLower = fatLower - 4.0f * r, hugeUpper = fatUpper + 4.0f * r;
+    return hugeLower.x <= tree.lowerBound.x && hugeLower.y <= tree.lowerBound.y && tree.upperBound.x <= hugeUpper.x &&
+           tree.upperBound.y <= hugeUpper.y;
+}
+
 AABB CollisionSystem::fatAABB(int proxy) const {
     const b2AABB& box = impl_->tree.GetFatAABB(proxy);
     return {fromB2(box.lowerBound), fromB2(box.upperBound)};

@@ -95,6 +95,10 @@ public:
     void destroyProxy(int proxy);
     // Re-fits the proxy if `aabb` left its fat AABB; returns whether it moved.
     bool moveProxy(int proxy, const AABB& aabb, Vec2 displacement);
+    // True when moveProxy(proxy, aabb, displacement) would leave the trees as they are: the fat
+    // AABB still holds `aabb` and is not too large for it (b2DynamicTree::MoveProxy's two tests,
+    // same float operations). Reads only, so workers may ask side by side between tree updates.
+    bool proxyKeeps(int proxy, const AABB& aabb, Vec2 displacement) const;
     AABB fatAABB(int proxy) const;
     // A new proxy whose fat AABB is exactly `fat` (a snapshot's), marked as moved like createProxy's.
     int restoreProxy(const AABB& fat, ChildKey key, bool isStatic);

@@ -111,12 +111,13 @@ void integratePositions(World::Impl& w, const StepContext& ctx, int begin, int e
 }
 
 // Write the solver state back: c = c0 + Δp, θ = θ0 + Δθ, origin = c - R(θ) localCenter.
-// The workers write the bodies that are neither fast nor non-finite; then, one by one, the
-// non-finite ones are frozen, the broadphase follows the bodies, and fast bodies are swept from
-// their step-start pose against static shapes; bullets wait until every other body is final,
-// then meet moving bodies too (continuous_impacts.cpp).
+// The workers write the bodies that are neither fast nor non-finite and check which of them stay
+// inside their fat AABBs; then, one by one, the non-finite ones are frozen, the broadphase follows
+// the other bodies, and fast bodies are swept from their step-start pose against static shapes;
+// bullets wait until every other body is final, then meet moving bodies too
+// (continuous_impacts.cpp).
 void finalizeBodies(World::Impl& w, float h) {
-    enum Motion : uint8_t { Moved, Fast, NonFinite };
+    enum Motion : uint8_t { Moved, MovedInside, Fast, NonFinite };  // MovedInside: its proxies stay as they are
     // The solver's velocities and the pose (c1, a1) into the body.
     const auto moveTo = [](Body& b, const BodyState& s, Vec2 c1, float a1) {
         b.v = s.v;
@@ -138,8 +139,12 @@ void finalizeBodies(World::Impl& w, float h) {
             }
             const Vec2 c1 = b.center + s.dp;
             const float a1 = b.angle + dAngle;
-            w.bodyMotion[k] = w.def.enableContinuous && w.isFast(w.awakeBodies[k], b.center, b.angle, c1, a1) ? Fast : Moved;
-            if (w.bodyMotion[k] != Fast) moveTo(b, s, c1, a1);
+            if (w.def.enableContinuous && w.isFast(w.awakeBodies[k], b.center, b.angle, c1, a1)) {
+                w.bodyMotion[k] = Fast;
+                continue;
+            }
+            moveTo(b, s, c1, a1);
+            w.bodyMotion[k] = w.proxiesKeep(w.awakeBodies[k], s.dp) ? MovedInside : Moved;
         }
     });
     w.movers.clear();
@@ -159,6 +164,7 @@ void finalizeBodies(World::Impl& w, float h) {
             continue;
         }
         anyBullet = anyBullet || b.bullet;
+        if (w.bodyMotion[k] == MovedInside) continue;
         if (w.bodyMotion[k] == Moved) {
             w.synchronizeProxies(index, s.dp);
             continue;

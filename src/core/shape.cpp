@@ -167,6 +167,16 @@ void World::Impl::synchronizeProxies(int index, Vec2 displacement) {
     }
 }
 
+bool World::Impl::proxiesKeep(int index, Vec2 displacement) const {
+    const Body& b = bodies[index];
+    for (int s : b.shapes) {
+        const std::vector<int>& proxies = shapes[s].proxies;
+        for (int child = 0; child < static_cast<int>(proxies.size()); ++child)
+            if (!collision.proxyKeeps(proxies[child], collision.computeAABB(s, child, b.xf), displacement)) return false;
+    }
+    return true;
+}
+
 ShapeId World::createShape(BodyId body, const ShapeDef& def, const Circle& circle) { return create(*impl_, body, def, circle); }
 ShapeId World::createShape(BodyId body, const ShapeDef& def, const Polygon& polygon) { return create(*impl_, body, def, polygon); }
 ShapeId World::createShape(BodyId body, const ShapeDef& def, const Segment& segment) { return create(*impl_, body, def, segment); }

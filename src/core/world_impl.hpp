@@ -243,6 +243,8 @@ struct World::Impl {
     void createProxies(int shape);
     void destroyProxies(int shape);
     void synchronizeProxies(int body, Vec2 displacement);
+    // Whether synchronizeProxies(body, displacement) would change no proxy (any thread, between tree updates).
+    bool proxiesKeep(int body, Vec2 displacement) const;
     void updatePairs();
     void noteFilter(const Filter& f) {
         shapeCategories |= f.category;
