@@ -259,43 +259,42 @@ namespace {
 // Revolute joints without motor or limit go to the blocks, unless no colour could take them.
 bool inLanes(int color, const PreparedJoint& j) { return color != GraphColoring::overflow && solvesInLanes(j); }
 
-// A colour's block being filled: up to four prepared joints waiting for their lanes.
-struct OpenBlock {
-    std::array<const PreparedJoint*, 4> lanes;
-    std::array<int, 4> joints;
-    int count = 0;
-};
-
 }  // namespace
 
-// Two sweeps in store order, the order of the joints' and bodies' memory. The first colours the
-// awake joints (graph_color.hpp: joints of one colour share no moving body, so a pass never waits
-// for the velocities the previous joint wrote, and four can share SIMD lanes), prepares them and
-// counts each colour's lane and scalar joints. The second sends each joint to its colour's next
-// lane or scalar slot: within a colour the order is free.
+// Store order, the order of the joints' and bodies' memory, throughout. The workers select the
+// awake joints and prepare them; then, one by one, the joints are coloured (graph_color.hpp:
+// joints of one colour share no moving body, so a pass never waits for the velocities the
+// previous joint wrote, and four can share SIMD lanes), the revolute trees leave the colours, and
+// each joint is sent to its colour's next lane or scalar slot (within a colour the order is
+// free); the workers pack the blocks' lanes.
 void prepareJoints(World::Impl& w, const StepContext& ctx) {
     constexpr int overflow = GraphColoring::overflow;
     JointStore& s = store(w);
     s.invHs = ctx.invHs;
-    s.coloring.reset(static_cast<int>(w.states.size()));
-    s.awake.clear();
-    s.colors.clear();
-    std::array<int, overflow + 1> laneCount{}, scalarCount{};
-    // prepareJoint writes every field, so last step's elements are reused as they are.
-    s.prepared.resize(s.joints.size());
-    for (int index = 0; index < static_cast<int>(s.joints.size()); ++index) {
+    auto awake = [&](int index) {
         const Joint& joint = s.joints[index];
-        if (!joint.alive) continue;
-        const int slotA = w.bodies[joint.bodyA].solverIndex, slotB = w.bodies[joint.bodyB].solverIndex;
-        if (slotA == 0 && slotB == 0) continue;  // both static or asleep
-        const int color = s.coloring.assign(slotA, slotB);
-        PreparedJoint& j = s.prepared[s.awake.size()];
-        prepareJoint(j, w, joint, ctx);
-        ++(inLanes(color, j) ? laneCount[color] : scalarCount[color]);
-        s.awake.push_back(index);
-        s.colors.push_back(color);
+        return joint.alive && (w.bodies[joint.bodyA].solverIndex != 0 || w.bodies[joint.bodyB].solverIndex != 0);
+    };
+    // prepareJoint writes every field, so last step's elements are reused as they are.
+    const int count = w.workers.parallelSelect(
+        static_cast<int>(s.joints.size()), awake,
+        [&](int total) {
+            s.awake.resize(total);
+            s.prepared.resize(total);
+            s.colors.resize(total);
+        },
+        [&](int k, int index) {
+            s.awake[k] = index;
+            prepareJoint(s.prepared[k], w, s.joints[index], ctx);
+        });
+
+    s.coloring.reset(static_cast<int>(w.states.size()));
+    std::array<int, overflow + 1> laneCount{}, scalarCount{};
+    for (int k = 0; k < count; ++k) {
+        const PreparedJoint& j = s.prepared[k];
+        s.colors[k] = s.coloring.assign(j.indexA, j.indexB);
+        ++(inLanes(s.colors[k], j) ? laneCount[s.colors[k]] : scalarCount[s.colors[k]]);
     }
-    s.prepared.resize(s.awake.size());
     // Joints of revolute trees leave the colours: they are solved directly (joint_tree.hpp).
     findRevoluteTrees(s.trees, s.prepared, static_cast<int>(w.states.size()));
     for (int k : s.trees.joints) --(inLanes(s.colors[k], s.prepared[k]) ? laneCount[s.colors[k]] : scalarCount[s.colors[k]]);
@@ -304,35 +303,35 @@ void prepareJoints(World::Impl& w, const StepContext& ctx) {
         s.blockStart[color + 1] = s.blockStart[color] + (laneCount[color] + 3) / 4;
         s.scalarStart[color + 1] = s.scalarStart[color] + scalarCount[color];
     }
-    s.revoluteBlocks.resize(s.blockStart[overflow + 1]);
+    const int blocks = s.blockStart[overflow + 1];
+    s.revoluteBlocks.resize(blocks);
+    s.blockLanes.assign(blocks, {-1, -1, -1, -1});
     s.scalarOrder.resize(s.scalarStart[overflow + 1]);
-    ColorStarts nextBlock = s.blockStart, nextScalar = s.scalarStart;
-    std::array<OpenBlock, overflow> open;
-    for (int k = 0; k < static_cast<int>(s.prepared.size()); ++k) {
+    ColorStarts nextScalar = s.scalarStart;
+    std::array<int, overflow + 1> nextLane{};
+    for (int k = 0; k < count; ++k) {
         const int color = s.colors[k];
         if (s.trees.inTree[k]) continue;
         if (!inLanes(color, s.prepared[k])) {
             s.scalarOrder[nextScalar[color]++] = k;
             continue;
         }
-        OpenBlock& block = open[color];
-        block.lanes[block.count] = &s.prepared[k];
-        block.joints[block.count] = s.awake[k];
-        if (++block.count == 4) {
-            s.revoluteBlocks[nextBlock[color]++] = packRevoluteBlock(block.lanes, block.joints);
-            block.count = 0;
-        }
+        const int lane = nextLane[color]++;
+        s.blockLanes[s.blockStart[color] + lane / 4][lane % 4] = k;
     }
     static const PreparedJoint emptyLane;  // static slots, no mass
-    for (int color = 0; color < overflow; ++color) {
-        OpenBlock& block = open[color];
-        if (block.count == 0) continue;
-        for (int lane = block.count; lane < 4; ++lane) {
-            block.lanes[lane] = &emptyLane;
-            block.joints[lane] = -1;
+    w.workers.parallelFor(blocks, 16, [&](int begin, int end, int) {
+        for (int block = begin; block < end; ++block) {
+            std::array<const PreparedJoint*, 4> lanes;
+            std::array<int, 4> joints;
+            for (int lane = 0; lane < 4; ++lane) {
+                const int k = s.blockLanes[block][lane];
+                lanes[lane] = k < 0 ? &emptyLane : &s.prepared[k];
+                joints[lane] = k < 0 ? -1 : s.awake[k];
+            }
+            s.revoluteBlocks[block] = packRevoluteBlock(lanes, joints);
         }
-        s.revoluteBlocks[nextBlock[color]] = packRevoluteBlock(block.lanes, block.joints);
-    }
+    });
 }
 
 // Every substep begins by re-applying the accumulated impulses (Box2D v3's soft step).
@@ -360,7 +359,9 @@ void projectJoints(World::Impl& w) { projectRevoluteTrees(w, store(w).trees, sto
 // The accumulated impulses go back to the joints, ready for the next step's warm start.
 void storeJointImpulses(World::Impl& w, const StepContext&) {
     JointStore& s = store(w);
-    for (const RevoluteBlock& block : s.revoluteBlocks) unpackRevoluteImpulses(block, s.joints);
+    w.workers.parallelFor(static_cast<int>(s.revoluteBlocks.size()), 64, [&](int begin, int end, int) {
+        for (int block = begin; block < end; ++block) unpackRevoluteImpulses(s.revoluteBlocks[block], s.joints);
+    });
     for (int position : s.scalarOrder) s.joints[s.awake[position]].data = s.prepared[position].data;
     for (int position : s.trees.joints) s.joints[s.awake[position]].data = s.prepared[position].data;
 }
@@ -451,14 +452,25 @@ void World::setJointBreakLimits(JointId id, float maxForce, float maxTorque, boo
 // step's last substep (the accumulated impulses / hs, as jointReactionForce reports them).
 void breakJoints(World::Impl& w) {
     JointStore& s = store(w);
-    for (int index = 0; index < static_cast<int>(s.joints.size()); ++index) {
-        const Joint& j = s.joints[index];
-        if (!j.alive || (std::isinf(j.breakForce) && std::isinf(j.breakTorque))) continue;
-        if (!w.bodies[j.bodyA].awake && !w.bodies[j.bodyB].awake) continue;  // asleep: nothing changed
+    auto reaction = [&](const Joint& j) {
         const JointReaction r = reactionOf(j);
-        const Vec2 force = s.invHs * r.linear;
-        const float torque = s.invHs * r.angular;
-        if (!(length(force) > j.breakForce) && !(std::fabs(torque) > j.breakTorque)) continue;
+        return std::pair{s.invHs * r.linear, s.invHs * r.angular};  // force, torque
+    };
+    auto overLimit = [&](int index) {
+        const Joint& j = s.joints[index];
+        if (!j.alive || (std::isinf(j.breakForce) && std::isinf(j.breakTorque))) return false;
+        const auto [force, torque] = reaction(j);
+        return length(force) > j.breakForce || std::fabs(torque) > j.breakTorque;
+    };
+    // The workers find the joints over their limits; a break wakes bodies, so which of them are
+    // awake is asked one by one, in store order, as the joints break.
+    w.workers.parallelSelect(
+        static_cast<int>(s.joints.size()), overLimit, [&](int total) { s.breaking.resize(total); },
+        [&](int k, int index) { s.breaking[k] = index; });
+    for (int index : s.breaking) {
+        const Joint& j = s.joints[index];
+        if (!w.bodies[j.bodyA].awake && !w.bodies[j.bodyB].awake) continue;  // asleep: nothing changed
+        const auto [force, torque] = reaction(j);
         w.jointBreakEvents.push_back({jointId(w, j), force, torque, j.destroyOnBreak, j.userData});
         if (j.destroyOnBreak) removeJoint(w, index);
     }

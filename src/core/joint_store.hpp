@@ -204,6 +204,8 @@ struct JointStore {
     // Scratch of prepareJoints, kept to reuse its memory.
     GraphColoring coloring;
     std::vector<int> colors;  // of prepared[k]
+    std::vector<std::array<int, 4>> blockLanes;  // by revolute block: its lanes' k in prepared, -1 empty
+    std::vector<int> breaking;  // breakJoints: the joints over their break limits, in store order
     float invHs = 0;                     // of the last step, for reaction forces
 };
 
