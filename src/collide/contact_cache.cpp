@@ -210,26 +210,45 @@ World::Impl::Narrowphase World::Impl::collideContact(int index) {
     return wasTouching ? Narrowphase::WasTouching : Narrowphase::WasNotTouching;
 }
 
+// Whether the one-by-one pass of updateContacts has nothing to do for a contact the workers
+// collided: no begin or end event, no pre-solve call, no sleeper to wake. Awake flags only turn
+// on in that pass, so a body awake (or static) now needs no waking there.
+bool World::Impl::isQuiet(const Contact& c, Narrowphase result) const {
+    if (result != Narrowphase::WasTouching && result != Narrowphase::WasNotTouching) return false;
+    if (c.touching != (result == Narrowphase::WasTouching)) return false;
+    if (!c.touching) return true;
+    if (preSolve && (shapes[c.a.shape].enablePreSolveEvents || shapes[c.b.shape].enablePreSolveEvents)) return false;
+    const Body& ba = bodies[c.bodyA];
+    const Body& bb = bodies[c.bodyB];
+    return (ba.awake || ba.type == BodyType::Static) && (bb.awake || bb.type == BodyType::Static);
+}
+
 // Narrowphase for every contact with an awake body: the workers run collideContact on those
 // whose bodies were awake as the step began; then, in pool order, contacts are destroyed, events
 // raised and sleepers woken — and a contact whose body was woken by an earlier one in that order
-// takes its narrowphase there, as a one-by-one pass would.
+// takes its narrowphase there, as a one-by-one pass would. Quiet contacts skip that pass.
 void World::Impl::updateContacts() {
     const int count = static_cast<int>(contacts.size());
     narrowphase.resize(static_cast<size_t>(count));
     workers.parallelFor(count, 64, [&](int begin, int end, int) {
         for (int index = begin; index < end; ++index) {
-            const Contact& c = contacts[index];
+            Contact& c = contacts[index];
             const bool due = c.alive && (bodies[c.bodyA].awake || bodies[c.bodyB].awake);
-            narrowphase[index] = due ? collideContact(index) : Narrowphase::Skipped;
+            Narrowphase result = due ? collideContact(index) : Narrowphase::Skipped;
+            if (isQuiet(c, result)) {
+                if (!c.touching) c.rollingImpulse = 0.0f;
+                result = Narrowphase::Quiet;
+            }
+            narrowphase[index] = result;
         }
     });
     for (int index = 0; index < count; ++index) {
+        Narrowphase result = narrowphase[index];
+        if (result == Narrowphase::Quiet) continue;
         Contact& c = contacts[index];
         if (!c.alive) continue;
         Body& ba = bodies[c.bodyA];
         Body& bb = bodies[c.bodyB];
-        Narrowphase result = narrowphase[index];
         if (result == Narrowphase::Skipped) {
             if (!ba.awake && !bb.awake) continue;
             result = collideContact(index);

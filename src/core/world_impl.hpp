@@ -259,8 +259,10 @@ struct World::Impl {
     void updateContacts();
     // What collideContact found: not run (both bodies asleep), the fat AABBs apart, a sensor's
     // overlap, or a contact's manifold updated and whether it touched before.
-    enum class Narrowphase : uint8_t { Skipped, Apart, Overlapping, Separate, WasTouching, WasNotTouching };
+    // Quiet: collided by the workers, and nothing is left for updateContacts' one-by-one pass.
+    enum class Narrowphase : uint8_t { Skipped, Apart, Overlapping, Separate, WasTouching, WasNotTouching, Quiet };
     Narrowphase collideContact(int contact);
+    bool isQuiet(const Contact& c, Narrowphase result) const;
     std::vector<Narrowphase> narrowphase;  // updateContacts scratch, by contact
     void destroyContact(int contact);
     void beginEvents();                        // forget the events reported after the last step
