@@ -10,9 +10,9 @@ namespace perpdot {
 namespace {
 
 // Units per claim: enough work to outweigh the atomic claim, few enough to share a colour.
-constexpr int bodiesPerItem = 64;
-constexpr int jointUnitsPerItem = 16;
-constexpr int contactBlocksPerItem = 8;
+constexpr int bodiesPerItem = 256;
+constexpr int jointUnitsPerItem = 32;
+constexpr int contactBlocksPerItem = 32;
 
 }  // namespace
 
