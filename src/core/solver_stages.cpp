@@ -52,18 +52,26 @@ void SolverStages::execute(World::Impl& w, const StepContext& ctx, const SolverS
 
 // One worker's walk through every stage of every substep: claim items until none is left, then
 // wait for the items other workers claimed.
-void SolverStages::participate(World::Impl& w, const StepContext& ctx) {
+void SolverStages::participate(World::Impl& w, const StepContext& ctx, int worker, int workerCount) {
     const size_t count = stages_.size();
     for (int substep = 0; substep < ctx.substeps; ++substep) {
         for (size_t s = 0; s < count; ++s) {
             const SolverStage& stage = stages_[s];
             Sync& sync = sync_[static_cast<size_t>(substep) * count + s];
+            std::atomic<int>* claims = &claims_[static_cast<size_t>(firstClaim_[s])];
             const int items = stage.items();
-            for (int item; (item = sync.claimed.fetch_add(1, std::memory_order_relaxed)) < items;) {
+            auto tryItem = [&](int item) {
+                int expected = substep;
+                if (claims[item].load(std::memory_order_relaxed) != substep ||
+                    !claims[item].compare_exchange_strong(expected, substep + 1, std::memory_order_relaxed))
+                    return;
                 const int begin = item * stage.unitsPerItem;
                 execute(w, ctx, stage, begin, std::min(begin + stage.unitsPerItem, stage.units));
                 sync.done.fetch_add(1, std::memory_order_release);
-            }
+            };
+            const int start = static_cast<int>(static_cast<int64_t>(items) * worker / workerCount);
+            for (int item = start; item < items; ++item) tryItem(item);
+            for (int item = start - 1; item >= 0; --item) tryItem(item);
             for (int spins = 0; sync.done.load(std::memory_order_acquire) < items; ++spins)
                 if (spins > 100) std::this_thread::yield();
         }
@@ -81,12 +89,21 @@ void SolverStages::run(World::Impl& w, const StepContext& ctx) {
         syncCapacity_ = std::max(syncCount, 2 * syncCapacity_);
         sync_ = std::make_unique<Sync[]>(syncCapacity_);
     }
-    for (size_t i = 0; i < syncCount; ++i) {
-        sync_[i].claimed.store(0, std::memory_order_relaxed);
-        sync_[i].done.store(0, std::memory_order_relaxed);
+    for (size_t i = 0; i < syncCount; ++i) sync_[i].done.store(0, std::memory_order_relaxed);
+    firstClaim_.resize(stages_.size());
+    size_t claimCount = 0;
+    for (size_t s = 0; s < stages_.size(); ++s) {
+        firstClaim_[s] = static_cast<int>(claimCount);
+        claimCount += static_cast<size_t>(stages_[s].items());
     }
-    w.workers.parallelFor(w.workers.count(), 1, [&](int begin, int end, int) {
-        for (int k = begin; k < end; ++k) participate(w, ctx);
+    if (claimCount > claimCapacity_) {  // grows with the items in use, then stays
+        claimCapacity_ = std::max(claimCount, 2 * claimCapacity_);
+        claims_ = std::make_unique<std::atomic<int>[]>(claimCapacity_);
+    }
+    for (size_t i = 0; i < claimCount; ++i) claims_[i].store(0, std::memory_order_relaxed);
+    const int workerCount = w.workers.count();
+    w.workers.parallelFor(workerCount, 1, [&](int begin, int end, int) {
+        for (int k = begin; k < end; ++k) participate(w, ctx, k, workerCount);
     });
 }
 

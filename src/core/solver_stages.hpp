@@ -1,7 +1,9 @@
 // The substeps of World::step as a list of stages — a substep's forces, then per pass the joint
 // and contact rows colour by colour, and x += hs v between the solve and the relax — run in order
 // by every worker at once. The items of a stage share no moving body (graph colouring), so
-// workers claim them in any order; a worker leaves a stage when all its items are done. Nobody
+// workers claim them in any order: worker k of n starts at item k/n of every stage and goes
+// forward, then back from there, so the same worker keeps about the same bodies from stage to
+// stage (their states stay in its cache); a worker leaves a stage when all its items are done. Nobody
 // waits for a worker that has not started, so any worker count, and any task system that runs
 // the workers late or one after another, gives the same result.
 #pragma once
@@ -34,15 +36,19 @@ public:
     void run(World::Impl& w, const StepContext& ctx);
 
 private:
-    struct alignas(64) Sync {  // a stage of a substep: items claimed and items done
-        std::atomic<int> claimed{0}, done{0};
+    struct alignas(64) Sync {  // a stage of a substep: its items done
+        std::atomic<int> done{0};
     };
     void execute(World::Impl& w, const StepContext& ctx, const SolverStage& stage, int begin, int end) const;
-    void participate(World::Impl& w, const StepContext& ctx);
+    void participate(World::Impl& w, const StepContext& ctx, int worker, int workerCount);
 
     std::vector<SolverStage> stages_;
+    std::vector<int> firstClaim_;  // by stage: its first item's claim in claims_
     std::unique_ptr<Sync[]> sync_;
     size_t syncCapacity_ = 0;
+    // By item of every stage: how many substeps have claimed it (the claim of substep k turns k into k + 1).
+    std::unique_ptr<std::atomic<int>[]> claims_;
+    size_t claimCapacity_ = 0;
 };
 
 }  // namespace perpdot
