@@ -88,11 +88,16 @@ void prepareContacts(World::Impl& w, const StepContext& ctx) {
         return contact.alive && contact.touching && (w.bodies[contact.bodyA].awake || w.bodies[contact.bodyB].awake);
     };
     w.workers.parallelSelect(
-        static_cast<int>(w.contacts.size()), constrains, [&](int total) { w.constraints.resize(total); },
+        static_cast<int>(w.contacts.size()), constrains,
+        [&](int total) {
+            w.constraints.resize(total);
+            w.constraintSlots.resize(total);
+        },
         [&](int k, int index) {
             ContactConstraint& c = w.constraints[k];
             c.contact = index;
             prepareContact(w, ctx, c);
+            w.constraintSlots[k] = {c.indexA, c.indexB};
         });
     w.workers.parallelSelect(
         static_cast<int>(w.constraints.size()), [&](int k) { return w.constraints[k].restitution != 0.0f; },

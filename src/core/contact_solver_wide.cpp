@@ -72,39 +72,39 @@ void prepareContactBlocks(World::Impl& w) {
     w.contactColoring.reset(static_cast<int>(w.states.size()));
     w.contactColors.resize(w.constraints.size());
     for (int index = 0; index < count; ++index) {
-        const ContactConstraint& c = w.constraints[index];
-        w.contactColors[index] = w.contactColoring.assign(c.indexA, c.indexB);
+        const auto [slotA, slotB] = w.constraintSlots[index];
+        w.contactColors[index] = w.contactColoring.assign(slotA, slotB);
     }
     const ColorStarts start = sortByColor(w.contactColors, w.contactOrder);
 
-    w.contactBlocks.clear();
     // Blocks of four constraints of one colour; the last block of a colour may have empty lanes.
     w.contactBlockStart[0] = 0;
     for (int color = 0; color <= overflow; ++color)
         w.contactBlockStart[color + 1] =
             w.contactBlockStart[color] + (color < overflow ? (start[color + 1] - start[color] + 3) / 4 : 0);
-    w.contactBlocks.resize(static_cast<size_t>(w.contactBlockStart[overflow]));  // reused memory: every field is rewritten
+    const int blocks = w.contactBlockStart[overflow];
+    w.contactBlocks.resize(static_cast<size_t>(blocks));  // reused memory: every field is rewritten
     static const ContactRows<float> emptyLane;  // no mass, no impulse: leaves the bodies alone
-    // Block k of colour c holds the constraints contactOrder[start[c] + 4 (k − blockStart[c]) ...].
-    for (int color = 0; color < overflow; ++color) {
-        const int first = w.contactBlockStart[color], end = start[color + 1];
-        w.workers.parallelFor(contactBlockCount(w, color), 32, [&, color](int begin, int stop, int) {
-            for (int k = begin; k < stop; ++k) {
-                ContactBlock& block = w.contactBlocks[first + k];
-                std::array<const ContactRows<float>*, 4> lanes;
-                for (int lane = 0; lane < 4; ++lane) {
-                    const int position = start[color] + 4 * k + lane;
-                    const int index = position < end ? w.contactOrder[position] : -1;
-                    const ContactConstraint* c = index < 0 ? nullptr : &w.constraints[index];
-                    block.constraint[lane] = index;
-                    block.bodyA[lane] = c ? c->indexA : 0;
-                    block.bodyB[lane] = c ? c->indexB : 0;
-                    lanes[lane] = c ? c : &emptyLane;
-                }
-                packContactRows(lanes, block.rows);
+    // Block b of colour c holds the constraints contactOrder[start[c] + 4 (b − blockStart[c]) ...].
+    w.workers.parallelFor(blocks, 32, [&](int begin, int stop, int) {
+        int color = static_cast<int>(std::upper_bound(w.contactBlockStart.begin(), w.contactBlockStart.end(), begin) -
+                                     w.contactBlockStart.begin()) - 1;
+        for (int b = begin; b < stop; ++b) {
+            while (b >= w.contactBlockStart[color + 1]) ++color;
+            ContactBlock& block = w.contactBlocks[b];
+            std::array<const ContactRows<float>*, 4> lanes;
+            for (int lane = 0; lane < 4; ++lane) {
+                const int position = start[color] + 4 * (b - w.contactBlockStart[color]) + lane;
+                const int index = position < start[color + 1] ? w.contactOrder[position] : -1;
+                const ContactConstraint* c = index < 0 ? nullptr : &w.constraints[index];
+                block.constraint[lane] = index;
+                block.bodyA[lane] = c ? c->indexA : 0;
+                block.bodyB[lane] = c ? c->indexB : 0;
+                lanes[lane] = c ? c : &emptyLane;
             }
-        });
-    }
+            packContactRows(lanes, block.rows);
+        }
+    });
     w.overflowConstraints.assign(w.contactOrder.begin() + start[overflow], w.contactOrder.end());
 }
 

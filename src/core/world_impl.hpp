@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <string>
 #include <variant>
@@ -211,6 +212,7 @@ struct World::Impl {
     std::vector<SubstepForces> substepForces;  // of states[i]
     std::vector<ContactConstraint> constraints;
     std::vector<int> bouncingConstraints;        // the constraints with restitution, for its pass
+    std::vector<std::array<int, 2>> constraintSlots;  // by constraint: its bodies' solver slots, for colouring
     GraphColoring contactColoring;               // colours of `constraints` (graph_color.hpp)
     std::vector<ContactBlock> contactBlocks;     // four constraints of one colour each, in colour order
     ColorStarts contactBlockStart{};             // colour c is contactBlocks[start[c] .. start[c + 1])
