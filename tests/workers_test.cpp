@@ -1,12 +1,14 @@
 // Threads (WorldDef::workerCount, the task interface): the world after N steps is bit-identical
 // for every worker count and for a game's own task system, whichever way it splits the work; a
-// restored world keeps its threads; bad settings are refused.
+// restored world keeps its threads; bad settings are refused; a parallel selection keeps store
+// order for any worker count.
 #include <gtest/gtest.h>
 
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "core/workers.hpp"
 #include "perpdot/feature_scenes.hpp"
 #include "perpdot/perpdot.hpp"
 #include "perpdot/scene.hpp"
@@ -118,6 +120,25 @@ TEST(Workers, ATaskRunInsideEnqueueIsFinished) {
     addToWorld(world, scene);
     for (int i = 0; i < 120; ++i) world.step(scene.timestep);
     EXPECT_EQ(stateHash(world), hashAfter("ragdoll", 120, 1));
+}
+
+// Workers::parallelSelect: the kept items in store order, each written once, whatever the
+// worker count and wherever the 1024-item blocks end.
+TEST(Workers, AParallelSelectionKeepsTheItemsInOrder) {
+    for (int workerCount : {1, 2, 3}) {
+        Workers workers(WorldDef{.workerCount = workerCount});
+        for (int n : {0, 1, 1023, 1024, 1025, 5000}) {
+            auto keep = [](int i) { return i % 3 == 0 || i % 7 == 1; };
+            std::vector<int> selected(7, -2);  // resized by reserve: stale entries must be overwritten
+            const int total = workers.parallelSelect(n, keep, [&](int count) { selected.assign(count, -1); },
+                                                     [&](int slot, int i) { selected[slot] = i; });
+            std::vector<int> expected;
+            for (int i = 0; i < n; ++i)
+                if (keep(i)) expected.push_back(i);
+            EXPECT_EQ(total, static_cast<int>(expected.size())) << n << " items, " << workerCount << " workers";
+            EXPECT_EQ(selected, expected) << n << " items, " << workerCount << " workers";
+        }
+    }
 }
 
 TEST(Workers, BadSettingsAreRefused) {
