@@ -74,7 +74,7 @@ void unlinkEdge(World::Impl& w, int contact, int side, int bodyIndex) {
 
 void World::Impl::updatePairs() {
     // Every proxy that moved out of its fat AABB (or is new) looks for overlapping proxies, unless
-    // its filter rejects every shape (addPair would drop all it finds).
+    // its filter rejects every shape (pairWanted would refuse all it finds).
     // The workers query the tree side by side, each into its own list.
     newPairsOf.resize(static_cast<size_t>(workers.count()));
     for (std::vector<NewPair>& found : newPairsOf) found.clear();
@@ -87,7 +87,7 @@ void World::Impl::updatePairs() {
                 // When both moved, only the pair's lower proxy reports it. Pairs that have a contact
                 // are most of what a large moving proxy finds: they are dropped here, before the sort.
                 if (other == proxy || (other < proxy && collision.wasMoved(other))) return true;
-                if (pairs.contains(proxyPairKey(proxy, other))) return true;
+                if (pairs.contains(proxyPairKey(proxy, other)) || !pairWanted(proxy, other)) return true;
                 NewPair p{collision.proxyKey(proxy), collision.proxyKey(other), proxy, other};
                 if (std::tie(p.b.shape, p.b.child) < std::tie(p.a.shape, p.a.child)) {
                     std::swap(p.a, p.b);
@@ -112,22 +112,24 @@ void World::Impl::updatePairs() {
     for (const NewPair& p : newPairs) addPair(p.proxyA, p.proxyB);
 }
 
+bool World::Impl::pairWanted(int proxyA, int proxyB) const {
+    const ShapeData& sa = shapes[collision.proxyKey(proxyA).shape];
+    const ShapeData& sb = shapes[collision.proxyKey(proxyB).shape];
+    if (sa.body == sb.body) return false;
+    if (bodies[sa.body].type != BodyType::Dynamic && bodies[sb.body].type != BodyType::Dynamic) return false;
+    // A sensor sees shapes that are not sensors and want to be seen.
+    if (sa.sensor && sb.sensor) return false;
+    if ((sa.sensor && !sb.enableSensorEvents) || (sb.sensor && !sa.enableSensorEvents)) return false;
+    return collide::CollisionSystem::canCollide(sa.type, sb.type) && shouldCollide(sa.filter, sb.filter) &&
+           jointAllowsCollision(*this, sa.body, sb.body);
+}
+
 void World::Impl::addPair(int proxyA, int proxyB) {
+    const uint64_t key = proxyPairKey(proxyA, proxyB);
+    if (pairs.contains(key)) return;
     collide::ChildKey keyA = collision.proxyKey(proxyA), keyB = collision.proxyKey(proxyB);
     const ShapeData* sa = &shapes[keyA.shape];
     const ShapeData* sb = &shapes[keyB.shape];
-    if (sa->body == sb->body) return;
-    const Body& ba = bodies[sa->body];
-    const Body& bb = bodies[sb->body];
-    if (ba.type != BodyType::Dynamic && bb.type != BodyType::Dynamic) return;
-    // A sensor sees shapes that are not sensors and want to be seen.
-    if (sa->sensor && sb->sensor) return;
-    if ((sa->sensor && !sb->enableSensorEvents) || (sb->sensor && !sa->enableSensorEvents)) return;
-    if (!collide::CollisionSystem::canCollide(sa->type, sb->type)) return;
-    if (!shouldCollide(sa->filter, sb->filter)) return;
-    if (!jointAllowsCollision(*this, sa->body, sb->body)) return;
-    const uint64_t key = proxyPairKey(proxyA, proxyB);
-    if (pairs.contains(key)) return;
 
     if (collide::CollisionSystem::mustSwap(sa->type, sb->type)) {
         std::swap(keyA, keyB);

@@ -257,7 +257,10 @@ struct World::Impl {
     bool pairsWithNothing(const Filter& f) const {
         return f.group <= 0 && ((f.mask & shapeCategories) == 0 || (f.category & shapeMasks) == 0);
     }
-    void addPair(int proxyA, int proxyB);
+    // Whether two overlapping proxies may have a contact (bodies, sensors, shape types, filters,
+    // joints); reads only, so the pair-finding workers ask it.
+    bool pairWanted(int proxyA, int proxyB) const;
+    void addPair(int proxyA, int proxyB);  // a contact for a wanted pair, unless it has one
     void updateContacts();
     // What collideContact found: not run (both bodies asleep), the fat AABBs apart, a sensor's
     // overlap, or a contact's manifold updated and whether it touched before.
