@@ -17,9 +17,9 @@ namespace perpdot {
 class ByteWriter {
 public:
     void u8(uint8_t v) { bytes.push_back(v); }
-    void u16(uint16_t v) { unsigned_(v, 2); }
-    void u32(uint32_t v) { unsigned_(v, 4); }
-    void u64(uint64_t v) { unsigned_(v, 8); }
+    void u16(uint16_t v) { unsigned_<2>(v); }
+    void u32(uint32_t v) { unsigned_<4>(v); }
+    void u64(uint64_t v) { unsigned_<8>(v); }
     void i32(int32_t v) { u32(static_cast<uint32_t>(v)); }
     void boolean(bool v) { u8(v ? 1 : 0); }
     void f32(float v) { u32(std::bit_cast<uint32_t>(v)); }
@@ -28,8 +28,12 @@ public:
     std::vector<uint8_t> bytes;
 
 private:
-    void unsigned_(uint64_t v, int size) {
-        for (int i = 0; i < size; ++i) bytes.push_back(static_cast<uint8_t>(v >> (8 * i)));
+    // A fixed size, so that the compiler turns the byte loop into one store.
+    template <size_t Size>
+    void unsigned_(uint64_t v) {
+        const size_t at = bytes.size();
+        bytes.resize(at + Size);
+        for (size_t i = 0; i < Size; ++i) bytes[at + i] = static_cast<uint8_t>(v >> (8 * i));
     }
 };
 
@@ -39,10 +43,10 @@ public:
 
     uint32_t version = 0;  // the format version of what is read, once its header is
 
-    uint8_t u8() { return static_cast<uint8_t>(unsigned_(1)); }
-    uint16_t u16() { return static_cast<uint16_t>(unsigned_(2)); }
-    uint32_t u32() { return static_cast<uint32_t>(unsigned_(4)); }
-    uint64_t u64() { return unsigned_(8); }
+    uint8_t u8() { return static_cast<uint8_t>(unsigned_<1>()); }
+    uint16_t u16() { return static_cast<uint16_t>(unsigned_<2>()); }
+    uint32_t u32() { return static_cast<uint32_t>(unsigned_<4>()); }
+    uint64_t u64() { return unsigned_<8>(); }
     int32_t i32() { return static_cast<int32_t>(u32()); }
     bool boolean() {
         const uint8_t v = u8();
@@ -95,11 +99,13 @@ public:
     }
 
 private:
-    uint64_t unsigned_(size_t size) {
-        if (bytes_.size() - pos_ < size) fail("truncated");
+    // A fixed size, so that the compiler turns the byte loop into one load.
+    template <size_t Size>
+    uint64_t unsigned_() {
+        if (bytes_.size() - pos_ < Size) fail("truncated");
         uint64_t v = 0;
-        for (size_t i = 0; i < size; ++i) v |= static_cast<uint64_t>(bytes_[pos_ + i]) << (8 * i);
-        pos_ += size;
+        for (size_t i = 0; i < Size; ++i) v |= static_cast<uint64_t>(bytes_[pos_ + i]) << (8 * i);
+        pos_ += Size;
         return v;
     }
 
