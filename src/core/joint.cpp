@@ -1,7 +1,7 @@
 // The joint store and the World's joint API: creation and destruction with generational ids,
 // per-body joint lists (for collideConnected and destroyBody), and the solver stages, which
-// dispatch to the joint types (joint_<type>.cpp) by switch, revolute joints without motor or limit
-// four at a time (joint_solver_wide.hpp).
+// dispatch to the joint types' stages (joint_registry.cpp), revolute joints without motor or
+// limit four at a time (joint_solver_wide.hpp).
 #include <cmath>
 #include <string>
 
@@ -83,20 +83,7 @@ void removeJoint(World::Impl& w, int index) {
     s.freeList.push_back(index);
 }
 
-JointReaction reactionOf(const Joint& j) {
-    switch (j.type) {
-        case JointType::Revolute: return reactionRevolute(j);
-        case JointType::Prismatic: return reactionPrismatic(j);
-        case JointType::Distance: return reactionDistance(j);
-        case JointType::Weld: return reactionWeld(j);
-        case JointType::Wheel: return reactionWheel(j);
-        case JointType::Motor: return reactionMotor(j);
-        case JointType::Mouse: return reactionMouse(j);
-        case JointType::Gear: return reactionGear(j);
-        case JointType::Pulley: return reactionPulley(j);
-    }
-    return {};
-}
+JointReaction reactionOf(const Joint& j) { return stagesOf(j.type).reaction(j); }
 
 }  // namespace
 
@@ -175,17 +162,7 @@ void prepareJoint(PreparedJoint& j, const World::Impl& w, const Joint& joint, co
     j.anchorB = rotate(b.xf.q, joint.localAnchorB - b.localCenter);
     j.deltaCenter = b.center - a.center;
     j.deltaAngle = b.angle - a.angle - joint.referenceAngle;
-    switch (j.type) {
-        case JointType::Revolute: prepareRevolute(j, ctx, a.xf.q); break;
-        case JointType::Prismatic: preparePrismatic(j, ctx, a.xf.q); break;
-        case JointType::Distance: prepareDistance(j, ctx, a.xf.q); break;
-        case JointType::Weld: prepareWeld(j, ctx, a.xf.q); break;
-        case JointType::Wheel: prepareWheel(j, ctx, a.xf.q); break;
-        case JointType::Motor: prepareMotor(j, ctx, a.xf.q); break;
-        case JointType::Mouse: prepareMouse(j, ctx, a.xf.q); break;
-        case JointType::Gear: prepareGear(j, ctx, a, b); break;
-        case JointType::Pulley: preparePulley(j, ctx, a, b); break;
-    }
+    stagesOf(j.type).prepare(j, ctx, a, b);
 }
 
 // Units [begin, end) of colour `color`: its revolute blocks, then its other joints, `wide(rows,
@@ -220,38 +197,14 @@ void jointRows(World::Impl& w, const StepContext& ctx, RowPass pass, int color, 
     if (pass == RowPass::WarmStart) {
         forJointUnits(
             w, color, begin, end, [](RevoluteRows<Float4>& rows, JointPairT<Float4>& p) { warmStartRevoluteRows(rows, p); },
-            [](PreparedJoint& j, JointPair& p) {
-                switch (j.type) {
-                    case JointType::Revolute: warmStartRevolute(j, p); break;
-                    case JointType::Prismatic: warmStartPrismatic(j, p); break;
-                    case JointType::Distance: warmStartDistance(j, p); break;
-                    case JointType::Weld: warmStartWeld(j, p); break;
-                    case JointType::Wheel: warmStartWheel(j, p); break;
-                    case JointType::Motor: warmStartMotor(j, p); break;
-                    case JointType::Mouse: warmStartMouse(j, p); break;
-                    case JointType::Gear: warmStartGear(j, p); break;
-                    case JointType::Pulley: warmStartPulley(j, p); break;
-                }
-            });
+            [](PreparedJoint& j, JointPair& p) { stagesOf(j.type).warmStart(j, p); });
         return;
     }
     const bool useBias = pass == RowPass::Solve;
     const Softness soft = rigidSoftness(ctx, useBias);
     forJointUnits(
         w, color, begin, end, [&](RevoluteRows<Float4>& rows, JointPairT<Float4>& p) { solveRevolutePoint(rows, p, soft); },
-        [&](PreparedJoint& j, JointPair& p) {
-            switch (j.type) {
-                case JointType::Revolute: solveRevolute(j, p, ctx, useBias); break;
-                case JointType::Prismatic: solvePrismatic(j, p, ctx, useBias); break;
-                case JointType::Distance: solveDistance(j, p, ctx, useBias); break;
-                case JointType::Weld: solveWeld(j, p, ctx, useBias); break;
-                case JointType::Wheel: solveWheel(j, p, ctx, useBias); break;
-                case JointType::Motor: solveMotor(j, p, ctx, useBias); break;
-                case JointType::Mouse: solveMouse(j, p, ctx, useBias); break;
-                case JointType::Gear: solveGear(j, p, ctx, useBias); break;
-                case JointType::Pulley: solvePulley(j, p, ctx, useBias); break;
-            }
-        });
+        [&](PreparedJoint& j, JointPair& p) { stagesOf(j.type).solve(j, p, ctx, useBias); });
 }
 
 namespace {

@@ -26,7 +26,7 @@ JointId World::createJoint(const DistanceJointDef& def) {
     return jointId(*impl_, j);
 }
 
-void prepareDistance(PreparedJoint& j, const StepContext& ctx, Rot) {
+void prepareDistance(PreparedJoint& j, const StepContext& ctx, const Body&, const Body&) {
     DistanceJoint& s = j.data.distance;
     s.axis = normalize(j.deltaCenter + j.anchorB - j.anchorA);
     s.axialMass = effectiveMass(j.mass, linearRow(j.anchorA, j.anchorB, s.axis));
@@ -58,5 +58,7 @@ JointReaction reactionDistance(const Joint& j) {
     const DistanceJoint& s = j.data.distance;
     return {(s.impulse + s.lowerImpulse - s.upperImpulse) * s.axis, 0.0f};
 }
+
+extern const JointStages distanceStages{prepareDistance, warmStartDistance, solveDistance, reactionDistance};
 
 }  // namespace perpdot

@@ -110,4 +110,6 @@ JointReaction reactionGear(const Joint& j) {
     return {impulse * g.sideB.axis, 0.0f};
 }
 
+extern const JointStages gearStages{prepareGear, warmStartGear, solveGear, reactionGear};
+
 }  // namespace perpdot

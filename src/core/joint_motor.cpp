@@ -26,7 +26,7 @@ JointId World::createJoint(const MotorJointDef& def) {
     return jointId(*impl_, j);
 }
 
-void prepareMotor(PreparedJoint& j, const StepContext& ctx, Rot) {
+void prepareMotor(PreparedJoint& j, const StepContext& ctx, const Body&, const Body&) {
     MotorJoint& s = j.data.motor;
     s.axialMass = effectiveMass(j.mass, angularRow);
     if (!ctx.enableWarmStarting) {
@@ -51,5 +51,7 @@ void solveMotor(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool) {
 }
 
 JointReaction reactionMotor(const Joint& j) { return {j.data.motor.linearImpulse, j.data.motor.angularImpulse}; }
+
+extern const JointStages motorStages{prepareMotor, warmStartMotor, solveMotor, reactionMotor};
 
 }  // namespace perpdot

@@ -25,7 +25,7 @@ JointId World::createJoint(const MouseJointDef& def) {
     return jointId(*impl_, j);
 }
 
-void prepareMouse(PreparedJoint& j, const StepContext& ctx, Rot) {
+void prepareMouse(PreparedJoint& j, const StepContext& ctx, const Body&, const Body&) {
     MouseJoint& s = j.data.mouse;
     j.mass.mA = j.mass.iA = 0.0f;  // the mouse pulls B only
     s.softness = makeSoftness(s.hertz, s.dampingRatio, ctx.hs);
@@ -44,5 +44,7 @@ void solveMouse(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool) {
 }
 
 JointReaction reactionMouse(const Joint& j) { return {j.data.mouse.linearImpulse, 0.0f}; }
+
+extern const JointStages mouseStages{prepareMouse, warmStartMouse, solveMouse, reactionMouse};
 
 }  // namespace perpdot

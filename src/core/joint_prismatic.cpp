@@ -29,7 +29,8 @@ JointId World::createJoint(const PrismaticJointDef& def) {
     return jointId(*impl_, j);
 }
 
-void preparePrismatic(PreparedJoint& j, const StepContext& ctx, Rot qA) {
+void preparePrismatic(PreparedJoint& j, const StepContext& ctx, const Body& a, const Body&) {
+    const Rot qA = a.xf.q;
     PrismaticJoint& s = j.data.prismatic;
     s.axisA = rotate(qA, s.localAxisA);
     const Vec2 d = j.deltaCenter + j.anchorB - j.anchorA;
@@ -80,5 +81,7 @@ JointReaction reactionPrismatic(const Joint& j) {
     const PrismaticJoint& s = j.data.prismatic;
     return {(s.motorImpulse + s.lowerImpulse - s.upperImpulse) * s.axisA + s.impulse.x * perp(s.axisA), s.impulse.y};
 }
+
+extern const JointStages prismaticStages{preparePrismatic, warmStartPrismatic, solvePrismatic, reactionPrismatic};
 
 }  // namespace perpdot

@@ -68,4 +68,6 @@ JointReaction reactionPulley(const Joint& j) {
     return {(s.ratio * s.impulse) * s.uB, 0.0f};
 }
 
+extern const JointStages pulleyStages{preparePulley, warmStartPulley, solvePulley, reactionPulley};
+
 }  // namespace perpdot

@@ -26,7 +26,7 @@ JointId World::createJoint(const RevoluteJointDef& def) {
     return jointId(*impl_, j);
 }
 
-void prepareRevolute(PreparedJoint& j, const StepContext& ctx, Rot) {
+void prepareRevolute(PreparedJoint& j, const StepContext& ctx, const Body&, const Body&) {
     RevoluteJoint& r = j.data.revolute;
     r.axialMass = effectiveMass(j.mass, angularRow);
     if (!ctx.enableWarmStarting) {
@@ -55,5 +55,7 @@ JointReaction reactionRevolute(const Joint& j) {
     const RevoluteJoint& r = j.data.revolute;
     return {r.linearImpulse, r.motorImpulse + r.lowerImpulse - r.upperImpulse};
 }
+
+extern const JointStages revoluteStages{prepareRevolute, warmStartRevolute, solveRevolute, reactionRevolute};
 
 }  // namespace perpdot

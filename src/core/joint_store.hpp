@@ -224,31 +224,20 @@ JointId jointId(const World::Impl& world, const Joint& joint);
 Joint& checkedJoint(const World::Impl& world, JointId id);
 void requireFinite(bool ok, const char* what);  // Error "<what> must be finite" unless ok
 
-// Per-type stages (joint_<type>.cpp). prepare runs after the common frame (anchors, masses,
-// deltaCenter, deltaAngle) is set; qA is body A's rotation at step start.
-#define PERPDOT_JOINT_STAGES(Name)                                                             \
-    void prepare##Name(PreparedJoint& joint, const StepContext& ctx, Rot qA);                 \
-    void warmStart##Name(PreparedJoint& joint, JointPair& pair);                               \
-    void solve##Name(PreparedJoint& joint, JointPair& pair, const StepContext& ctx, bool useBias); \
-    JointReaction reaction##Name(const Joint& joint);
-PERPDOT_JOINT_STAGES(Revolute)
-PERPDOT_JOINT_STAGES(Prismatic)
-PERPDOT_JOINT_STAGES(Distance)
-PERPDOT_JOINT_STAGES(Weld)
-PERPDOT_JOINT_STAGES(Wheel)
-PERPDOT_JOINT_STAGES(Motor)
-PERPDOT_JOINT_STAGES(Mouse)
-#undef PERPDOT_JOINT_STAGES
-
-// Gear and pulley joints measure each body on its own, so their prepare sees both bodies.
+// A joint type's solver stages, defined at the end of its joint_<type>.cpp and listed in
+// joint_registry.cpp. prepare runs after the common frame (anchors, masses, deltaCenter,
+// deltaAngle) is set, with the two bodies as the step starts.
 struct Body;
-#define PERPDOT_COUPLED_JOINT_STAGES(Name)                                                     \
-    void prepare##Name(PreparedJoint& joint, const StepContext& ctx, const Body& a, const Body& b); \
-    void warmStart##Name(PreparedJoint& joint, JointPair& pair);                               \
-    void solve##Name(PreparedJoint& joint, JointPair& pair, const StepContext& ctx, bool useBias); \
-    JointReaction reaction##Name(const Joint& joint);
-PERPDOT_COUPLED_JOINT_STAGES(Gear)
-PERPDOT_COUPLED_JOINT_STAGES(Pulley)
-#undef PERPDOT_COUPLED_JOINT_STAGES
+struct JointStages {
+    void (*prepare)(PreparedJoint& joint, const StepContext& ctx, const Body& a, const Body& b);
+    void (*warmStart)(PreparedJoint& joint, JointPair& pair);
+    void (*solve)(PreparedJoint& joint, JointPair& pair, const StepContext& ctx, bool useBias);
+    JointReaction (*reaction)(const Joint& joint);
+};
+const JointStages& stagesOf(JointType type);
+
+// The revolute joint's rows one at a time, also for revolute trees that do not factor.
+void warmStartRevolute(PreparedJoint& joint, JointPair& pair);
+void solveRevolute(PreparedJoint& joint, JointPair& pair, const StepContext& ctx, bool useBias);
 
 }  // namespace perpdot

@@ -20,7 +20,7 @@ JointId World::createJoint(const WeldJointDef& def) {
     return jointId(*impl_, j);
 }
 
-void prepareWeld(PreparedJoint& j, const StepContext& ctx, Rot) {
+void prepareWeld(PreparedJoint& j, const StepContext& ctx, const Body&, const Body&) {
     WeldJoint& s = j.data.weld;
     s.axialMass = effectiveMass(j.mass, angularRow);
     s.angularSoftness = makeSoftness(s.hertz, s.dampingRatio, ctx.hs);
@@ -46,5 +46,7 @@ void solveWeld(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool useB
 }
 
 JointReaction reactionWeld(const Joint& j) { return {j.data.weld.linearImpulse, j.data.weld.angularImpulse}; }
+
+extern const JointStages weldStages{prepareWeld, warmStartWeld, solveWeld, reactionWeld};
 
 }  // namespace perpdot

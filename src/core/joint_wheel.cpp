@@ -28,7 +28,8 @@ JointId World::createJoint(const WheelJointDef& def) {
     return jointId(*impl_, j);
 }
 
-void prepareWheel(PreparedJoint& j, const StepContext& ctx, Rot qA) {
+void prepareWheel(PreparedJoint& j, const StepContext& ctx, const Body& a, const Body&) {
+    const Rot qA = a.xf.q;
     WheelJoint& s = j.data.wheel;
     s.axisA = rotate(qA, s.localAxisA);
     const Vec2 d = j.deltaCenter + j.anchorB - j.anchorA;
@@ -77,5 +78,7 @@ JointReaction reactionWheel(const Joint& j) {
     const WheelJoint& s = j.data.wheel;
     return {s.springImpulse * s.axisA + s.perpImpulse * perp(s.axisA), s.motorImpulse};
 }
+
+extern const JointStages wheelStages{prepareWheel, warmStartWheel, solveWheel, reactionWheel};
 
 }  // namespace perpdot
