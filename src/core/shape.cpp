@@ -154,27 +154,35 @@ void World::Impl::destroyProxies(int index) {
     shapes[index].proxies.clear();
 }
 
+namespace {
+
+// visit(proxy, aabb) for every proxy of the body, with its box at the body's transform, until
+// visit returns false; returns whether it never did.
+template <class Visit>
+bool everyProxy(const World::Impl& w, int body, const Visit& visit) {
+    const Body& b = w.bodies[body];
+    for (int s : b.shapes) {
+        const std::vector<int>& proxies = w.shapes[s].proxies;
+        for (int child = 0; child < static_cast<int>(proxies.size()); ++child)
+            if (!visit(proxies[child], w.collision.computeAABB(s, child, b.xf))) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
 // Re-fit the body's proxies to its new transform; proxies that left their fat AABB are queried
 // for new pairs next step.
 void World::Impl::synchronizeProxies(int index, Vec2 displacement) {
-    const Body& b = bodies[index];
-    for (int s : b.shapes) {
-        const std::vector<int>& proxies = shapes[s].proxies;
-        for (int child = 0; child < static_cast<int>(proxies.size()); ++child) {
-            if (collision.moveProxy(proxies[child], collision.computeAABB(s, child, b.xf), displacement))
-                movedProxies.push_back(proxies[child]);
-        }
-    }
+    everyProxy(*this, index, [&](int proxy, const AABB& aabb) {
+        if (collision.moveProxy(proxy, aabb, displacement)) movedProxies.push_back(proxy);
+        return true;
+    });
 }
 
 bool World::Impl::proxiesKeep(int index, Vec2 displacement) const {
-    const Body& b = bodies[index];
-    for (int s : b.shapes) {
-        const std::vector<int>& proxies = shapes[s].proxies;
-        for (int child = 0; child < static_cast<int>(proxies.size()); ++child)
-            if (!collision.proxyKeeps(proxies[child], collision.computeAABB(s, child, b.xf), displacement)) return false;
-    }
-    return true;
+    return everyProxy(*this, index,
+                      [&](int proxy, const AABB& aabb) { return collision.proxyKeeps(proxy, aabb, displacement); });
 }
 
 ShapeId World::createShape(BodyId body, const ShapeDef& def, const Circle& circle) { return create(*impl_, body, def, circle); }

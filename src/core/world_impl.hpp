@@ -208,7 +208,7 @@ struct World::Impl {
     std::vector<int> awakeBodies;       // body index of states[i + 1]
     std::vector<uint8_t> touchingBodies;  // by body index: has a touching contact (integrateVelocities)
     std::vector<float> stepRotation;    // Δθ of states[i], summed over substeps
-    std::vector<uint8_t> bodyMotion;    // finalizeBodies scratch, by awake body: moved, fast or non-finite
+    std::vector<uint8_t> bodyMotion;    // finalizeBodies scratch, by awake body: its Motion (integrate.cpp)
     std::vector<SubstepForces> substepForces;  // of states[i]
     std::vector<ContactConstraint> constraints;
     std::vector<int> bouncingConstraints;        // the constraints with restitution, for its pass
