@@ -11,7 +11,7 @@ extern const JointStages revoluteStages, prismaticStages, distanceStages, weldSt
 
 namespace {
 
-// In JointType's order.
+// In JointType's order. The assert names the last enumerator: a new type moves it there.
 constexpr std::array registry{&revoluteStages, &prismaticStages, &distanceStages, &weldStages, &wheelStages,
                               &motorStages,    &mouseStages,     &gearStages,     &pulleyStages};
 static_assert(registry.size() == static_cast<size_t>(JointType::Pulley) + 1, "a JointType without stages");
