@@ -6,7 +6,8 @@
 # stacking, friction, restitution, rotation, many contacts and joints (scalar and 4-wide). A
 # difference names the scene and the three hashes. SCENE:N runs N steps (perpdot run --steps N,
 # the scene's step count) instead of the scene's own, to keep the benchmark scenes short. The gcc
-# build must also print the same hash on 2, 3, 4 and 8 workers (perpdot run --workers N).
+# build must also print the same hash on 2, 3, 4 and 8 workers (perpdot run --workers N), and with
+# four contact lanes where it would use eight (PERPDOT_CONTACT_LANES=4).
 #
 # Snapshots too: for each scene of `snapshotScenes` (SCENE:N:K), every build saves the run at step
 # K (`perpdot run --save-at`), the three files must be the same bytes, and every build loads every
@@ -61,6 +62,12 @@ for scene in "${scenes[@]}"; do
             failed=1
         fi
     done
+    # Contact lanes: four (SSE2) where the default is eight (AVX2 CPUs) gives the same world.
+    f="$(PERPDOT_CONTACT_LANES=4 hashOf "$gccDir" "$scene")"
+    if [[ "$f" != "$g" ]]; then
+        echo "DIFFERENT $scene with four contact lanes: $f (default lanes: $g)"
+        failed=1
+    fi
 done
 snapDir="$(mktemp -d)"
 trap 'rm -rf "$snapDir"' EXIT

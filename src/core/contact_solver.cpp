@@ -121,47 +121,33 @@ float reboundSpeed(float e, float V, float a, float h) {
 }  // namespace
 
 // Hecker's bounce: drive v_rel·n to the rebound speed of the approach (v_rel·n at the end of the
-// step without the contact), for approaches faster than the restitution threshold.
+// step without the contact), for approaches faster than the restitution threshold. Runs after
+// storeContactImpulses: the accumulated impulses it adds to are the contact's.
 void applyRestitution(World::Impl& w, const StepContext& ctx) {
     std::vector<BodyState>& states = w.states;
     for (int k : w.bouncingConstraints) {
-        ContactConstraint& c = w.constraints[k];
+        const ContactConstraint& c = w.constraints[k];
+        Contact& contact = w.contacts[c.contact];
         BodyState& a = states[c.indexA];
         BodyState& b = states[c.indexB];
         // The pair's deceleration along n from this step's forces: −(ΔvB − ΔvA)·n / h.
         const Vec2 dv = w.substepForces[c.indexB].dv - w.substepForces[c.indexA].dv;
         const float deceleration = -static_cast<float>(ctx.substeps) * dot(dv, c.normal) * ctx.invH;
         for (int i = 0; i < c.pointCount; ++i) {
-            ContactPointRows<float>& cp = c.points[i];
-            if (cp.relativeVelocity > -ctx.restitutionThreshold || cp.maxNormalImpulse == 0.0f) continue;
+            const ContactPointRows<float>& cp = c.points[i];
+            ContactPointState& stored = contact.points[i];
+            if (cp.relativeVelocity > -ctx.restitutionThreshold || stored.maxNormalImpulse == 0.0f) continue;
             const Vec2 rA = cp.anchorA, rB = cp.anchorB;
             const float vn = dot(relativeVelocity(a, b, rA, rB), c.normal);
             const float rebound = reboundSpeed(c.restitution, -cp.relativeVelocity, deceleration, ctx.h);
             float impulse = -cp.normalMass * (vn - rebound);
-            const float newImpulse = std::max(cp.normalImpulse + impulse, 0.0f);
-            impulse = newImpulse - cp.normalImpulse;
-            cp.normalImpulse = newImpulse;
-            cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, impulse);
+            const float newImpulse = std::max(stored.normalImpulse + impulse, 0.0f);
+            impulse = newImpulse - stored.normalImpulse;
+            stored.normalImpulse = newImpulse;
+            stored.maxNormalImpulse = std::max(stored.maxNormalImpulse, impulse);
             applyImpulse(c, a, b, rA, rB, impulse * c.normal);
         }
     }
-}
-
-// Each constraint's impulses back into its contact (a contact has one constraint: the workers
-// write apart).
-void storeContactImpulses(World::Impl& w) {
-    w.workers.parallelFor(static_cast<int>(w.constraints.size()), 256, [&](int begin, int end, int) {
-        for (int k = begin; k < end; ++k) {
-            const ContactConstraint& c = w.constraints[k];
-            Contact& contact = w.contacts[c.contact];
-            contact.rollingImpulse = c.rollingImpulse;
-            for (int i = 0; i < c.pointCount; ++i) {
-                contact.points[i].normalImpulse = c.points[i].normalImpulse;
-                contact.points[i].tangentImpulse = c.points[i].tangentImpulse;
-                contact.points[i].maxNormalImpulse = c.points[i].maxNormalImpulse;
-            }
-        }
-    });
 }
 
 }  // namespace perpdot

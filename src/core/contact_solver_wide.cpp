@@ -1,12 +1,13 @@
-// The contact rows solved four at a time. Constraints are graph-coloured (graph_color.hpp) so that
-// the four lanes of a block never share a dynamic body; each block gathers its bodies' state
-// into lanes, runs the rows of contact_solver_wide.hpp once for all four, and scatters the
-// velocities back. Constraints no colour could take (a body touching more than 16 others) are
-// solved one by one with the same rows at F = float, after the blocks.
+// The contact rows solved four (SSE2) or eight (AVX2, contact_solver_avx2.cpp) at a time.
+// Constraints are graph-coloured (graph_color.hpp) so that the lanes of a block never share a
+// dynamic body; each block gathers its bodies' state into lanes, runs the rows of
+// contact_solver_wide.hpp once for all of them, and scatters the velocities back. Constraints no
+// colour could take (a body touching more than 16 others) are solved one by one with the same rows
+// at F = float, after the blocks.
 #include <algorithm>
-#include <array>
 #include <cstddef>
-#include <type_traits>
+#include <cstdlib>
+#include <cstring>
 
 #include "core/world_impl.hpp"
 
@@ -14,14 +15,23 @@ namespace perpdot {
 
 using simd::Float4;
 
-// ContactRows<float> is nothing but floats, and ContactRows<Float4> is the same fields as Float4s
-// in the same order: packing four constraints is a 4×4 transpose of every run of four floats.
-constexpr std::size_t rowFloats = sizeof(ContactRows<float>) / sizeof(float);
-static_assert(std::is_standard_layout_v<ContactRows<float>> && std::is_standard_layout_v<ContactRows<Float4>>);
-static_assert(sizeof(ContactRows<float>) == rowFloats * sizeof(float) &&
-              sizeof(ContactRows<Float4>) == rowFloats * sizeof(Float4) && rowFloats >= 4);
+bool contactLanes8Available() {
+#ifdef PERPDOT_AVX2
+    return __builtin_cpu_supports("avx2");
+#else
+    return false;
+#endif
+}
 
-void packContactRows(const std::array<const ContactRows<float>*, 4>& lanes, ContactRows<Float4>& packed) {
+// Eight lanes where the CPU has AVX2, unless PERPDOT_CONTACT_LANES=4 asks for four (to compare
+// the two: the results are the same bits).
+int chooseContactLanes() {
+    const char* asked = std::getenv("PERPDOT_CONTACT_LANES");
+    if (asked != nullptr && std::strcmp(asked, "4") == 0) return 4;
+    return contactLanes8Available() ? 8 : 4;
+}
+
+void packContactRows(const ContactRows<float>* const (&lanes)[4], ContactRows<Float4>& packed) {
     auto* out = reinterpret_cast<Float4*>(&packed);
     for (std::size_t k = 0; k < rowFloats; k += 4) {
         const std::size_t first = std::min(k, rowFloats - 4);  // the last run overlaps the one before
@@ -64,8 +74,47 @@ void passContacts(World::Impl& w, const StepContext& ctx, RowPass pass, int begi
 
 }  // namespace
 
+namespace {
+
+// Blocks of Block::lanes constraints of one colour, in colour order (the last block of a colour
+// may have empty lanes); `pack(lanes, block)` writes a block's rows.
+template <class Block, class Pack>
+void layOutBlocks(World::Impl& w, const ColorStarts& start, std::vector<Block>& blocks, Pack pack) {
+    constexpr int overflow = GraphColoring::overflow;
+    constexpr int width = Block::lanes;
+    w.contactBlockStart[0] = 0;
+    for (int color = 0; color <= overflow; ++color)
+        w.contactBlockStart[color + 1] =
+            w.contactBlockStart[color] + (color < overflow ? (start[color + 1] - start[color] + width - 1) / width : 0);
+    blocks.resize(static_cast<size_t>(w.contactBlockStart[overflow]));  // reused memory: every field is rewritten
+    static const ContactRows<float> emptyLane;  // no mass, no impulse: leaves the bodies alone
+    // Block b of colour c holds the constraints contactOrder[start[c] + width (b − blockStart[c]) ...].
+    w.workers.parallelFor(static_cast<int>(blocks.size()), 128 / width, [&](int begin, int stop, int) {
+        int color = static_cast<int>(std::upper_bound(w.contactBlockStart.begin(), w.contactBlockStart.end(), begin) -
+                                     w.contactBlockStart.begin()) - 1;
+        for (int b = begin; b < stop; ++b) {
+            while (b >= w.contactBlockStart[color + 1]) ++color;
+            Block& block = blocks[b];
+            const ContactRows<float>* lanes[width];
+            for (int lane = 0; lane < width; ++lane) {
+                const int position = start[color] + width * (b - w.contactBlockStart[color]) + lane;
+                const int index = position < start[color + 1] ? w.contactOrder[position] : -1;
+                const ContactConstraint* c = index < 0 ? nullptr : &w.constraints[index];
+                block.contact[lane] = c ? c->contact : -1;
+                block.bodyA[lane] = c ? c->indexA : 0;
+                block.bodyB[lane] = c ? c->indexB : 0;
+                lanes[lane] = c ? c : &emptyLane;
+            }
+            pack(lanes, block);
+        }
+    });
+}
+
+}  // namespace
+
 // Colour the constraints in order, then lay them out colour by colour (Box2D v3's solve order:
-// it keeps stacks as stiff as the plain constraint order does), four to a block; overflow last.
+// it keeps stacks as stiff as the plain constraint order does), four or eight to a block; overflow
+// last. The lane width changes no result: a colour's constraints share no moving body.
 void prepareContactBlocks(World::Impl& w) {
     constexpr int overflow = GraphColoring::overflow;
     const int count = static_cast<int>(w.constraints.size());
@@ -76,35 +125,16 @@ void prepareContactBlocks(World::Impl& w) {
         w.contactColors[index] = w.contactColoring.assign(slotA, slotB);
     }
     const ColorStarts start = sortByColor(w.contactColors, w.contactOrder);
-
-    // Blocks of four constraints of one colour; the last block of a colour may have empty lanes.
-    w.contactBlockStart[0] = 0;
-    for (int color = 0; color <= overflow; ++color)
-        w.contactBlockStart[color + 1] =
-            w.contactBlockStart[color] + (color < overflow ? (start[color + 1] - start[color] + 3) / 4 : 0);
-    const int blocks = w.contactBlockStart[overflow];
-    w.contactBlocks.resize(static_cast<size_t>(blocks));  // reused memory: every field is rewritten
-    static const ContactRows<float> emptyLane;  // no mass, no impulse: leaves the bodies alone
-    // Block b of colour c holds the constraints contactOrder[start[c] + 4 (b − blockStart[c]) ...].
-    w.workers.parallelFor(blocks, 32, [&](int begin, int stop, int) {
-        int color = static_cast<int>(std::upper_bound(w.contactBlockStart.begin(), w.contactBlockStart.end(), begin) -
-                                     w.contactBlockStart.begin()) - 1;
-        for (int b = begin; b < stop; ++b) {
-            while (b >= w.contactBlockStart[color + 1]) ++color;
-            ContactBlock& block = w.contactBlocks[b];
-            std::array<const ContactRows<float>*, 4> lanes;
-            for (int lane = 0; lane < 4; ++lane) {
-                const int position = start[color] + 4 * (b - w.contactBlockStart[color]) + lane;
-                const int index = position < start[color + 1] ? w.contactOrder[position] : -1;
-                const ContactConstraint* c = index < 0 ? nullptr : &w.constraints[index];
-                block.constraint[lane] = index;
-                block.bodyA[lane] = c ? c->indexA : 0;
-                block.bodyB[lane] = c ? c->indexB : 0;
-                lanes[lane] = c ? c : &emptyLane;
-            }
+#ifdef PERPDOT_AVX2
+    if (w.contactLanes == 8)
+        layOutBlocks(w, start, w.contactBlocks8, [](const ContactRows<float>* const (&lanes)[8], ContactBlock8& block) {
+            packContactRows8(lanes, block);
+        });
+    else
+#endif
+        layOutBlocks(w, start, w.contactBlocks, [](const ContactRows<float>* const (&lanes)[4], ContactBlock& block) {
             packContactRows(lanes, block.rows);
-        }
-    });
+        });
     w.overflowConstraints.assign(w.contactOrder.begin() + start[overflow], w.contactOrder.end());
 }
 
@@ -114,6 +144,9 @@ int contactBlockCount(const World::Impl& w, int color) {
 
 void contactRows(World::Impl& w, const StepContext& ctx, RowPass pass, int color, int begin, int end) {
     const int first = w.contactBlockStart[color];
+#ifdef PERPDOT_AVX2
+    if (w.contactLanes == 8) return contactRows8(w.contactBlocks8.data(), first + begin, first + end, w.states.data(), ctx, pass);
+#endif
     passContacts(w, ctx, pass, first + begin, first + end, false);
 }
 
@@ -121,33 +154,59 @@ void serialContactRows(World::Impl& w, const StepContext& ctx, RowPass pass) { p
 
 namespace {
 
-// A block's accumulated impulses back into its four constraints.
-void unpackContactBlock(World::Impl& w, const ContactBlock& block) {
-    float rolling[4], normal[2][4], tangent[2][4], maxNormal[2][4];
-    block.rows.rollingImpulse.store(rolling);
-    for (int i = 0; i < 2; ++i) {
-        block.rows.points[i].normalImpulse.store(normal[i]);
-        block.rows.points[i].tangentImpulse.store(tangent[i]);
-        block.rows.points[i].maxNormalImpulse.store(maxNormal[i]);
-    }
-    for (int lane = 0; lane < 4; ++lane) {
-        if (block.constraint[lane] < 0) continue;
-        ContactConstraint& c = w.constraints[block.constraint[lane]];
-        c.rollingImpulse = rolling[lane];
-        for (int i = 0; i < c.pointCount; ++i) {
-            c.points[i].normalImpulse = normal[i][lane];
-            c.points[i].tangentImpulse = tangent[i][lane];
-            c.points[i].maxNormalImpulse = maxNormal[i][lane];
+// Where a field of ContactRows<float> is, in floats: in a block of N lanes, lane l of it is float
+// (that index)·N + l of the rows (contact_solver_wide.hpp).
+constexpr std::size_t rollingField = offsetof(ContactRows<float>, rollingImpulse) / sizeof(float);
+constexpr std::size_t pointField(int point, std::size_t memberOffset) {
+    return (offsetof(ContactRows<float>, points) + static_cast<std::size_t>(point) * sizeof(ContactPointRows<float>) +
+            memberOffset) / sizeof(float);
+}
+
+// A block's accumulated impulses straight from its lanes into its contacts.
+template <class Block>
+void storeBlockImpulses(World::Impl& w, const Block& block) {
+    const float* rows = block.rowData();
+    for (int lane = 0; lane < Block::lanes; ++lane) {
+        if (block.contact[lane] < 0) continue;
+        auto field = [&](std::size_t index) { return rows[index * Block::lanes + static_cast<std::size_t>(lane)]; };
+        Contact& contact = w.contacts[block.contact[lane]];
+        contact.rollingImpulse = field(rollingField);
+        for (int i = 0; i < contact.pointCount; ++i) {
+            ContactPointState& stored = contact.points[i];
+            stored.normalImpulse = field(pointField(i, offsetof(ContactPointRows<float>, normalImpulse)));
+            stored.tangentImpulse = field(pointField(i, offsetof(ContactPointRows<float>, tangentImpulse)));
+            stored.maxNormalImpulse = field(pointField(i, offsetof(ContactPointRows<float>, maxNormalImpulse)));
         }
     }
 }
 
+template <class Block>
+void storeBlocks(World::Impl& w, const std::vector<Block>& blocks) {
+    w.workers.parallelFor(static_cast<int>(blocks.size()), 256 / Block::lanes, [&](int begin, int end, int) {
+        for (int k = begin; k < end; ++k) storeBlockImpulses(w, blocks[k]);
+    });
+}
+
 }  // namespace
 
-void unpackContactBlocks(World::Impl& w) {
-    w.workers.parallelFor(static_cast<int>(w.contactBlocks.size()), 64, [&](int begin, int end, int) {
-        for (int k = begin; k < end; ++k) unpackContactBlock(w, w.contactBlocks[k]);
-    });
+// The impulses for the next step's warm start: the blocks' from their lanes, the overflow
+// constraints' from their rows (a contact has one constraint: the workers write apart).
+void storeContactImpulses(World::Impl& w) {
+#ifdef PERPDOT_AVX2
+    if (w.contactLanes == 8) storeBlocks(w, w.contactBlocks8);
+    else
+#endif
+        storeBlocks(w, w.contactBlocks);
+    for (int index : w.overflowConstraints) {
+        const ContactConstraint& c = w.constraints[index];
+        Contact& contact = w.contacts[c.contact];
+        contact.rollingImpulse = c.rollingImpulse;
+        for (int i = 0; i < c.pointCount; ++i) {
+            contact.points[i].normalImpulse = c.points[i].normalImpulse;
+            contact.points[i].tangentImpulse = c.points[i].tangentImpulse;
+            contact.points[i].maxNormalImpulse = c.points[i].maxNormalImpulse;
+        }
+    }
 }
 
 }  // namespace perpdot

@@ -8,7 +8,8 @@
 // a block) has zero masses and zero impulses: its rows compute like the others and apply zero.
 #pragma once
 
-#include <array>
+#include <cstddef>
+#include <type_traits>
 #include <vector>
 
 #include "collide/collision.hpp"
@@ -127,14 +128,44 @@ void solveContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, const Ste
     applyAngularImpulse(c, a, b, c.rollingImpulse - lambda);
 }
 
+// ContactRows<float> is nothing but floats, and ContactRows<F> of an N-lane F is the same fields as
+// N floats each, in the same order: field i of lane l is float i·N + l of the rows.
+constexpr std::size_t rowFloats = sizeof(ContactRows<float>) / sizeof(float);
+static_assert(std::is_standard_layout_v<ContactRows<float>> && std::is_standard_layout_v<ContactRows<simd::Float4>>);
+static_assert(sizeof(ContactRows<float>) == rowFloats * sizeof(float) &&
+              sizeof(ContactRows<simd::Float4>) == rowFloats * sizeof(simd::Float4) && rowFloats >= 4);
+
 // Four constraints of one graph colour (no two share a dynamic body) as the lanes of one row set.
 struct ContactBlock {
+    static constexpr int lanes = 4;
     ContactRows<simd::Float4> rows;
-    int constraint[4] = {-1, -1, -1, -1};  // index in World::Impl::constraints; -1: an empty lane
+    int contact[4] = {-1, -1, -1, -1};     // index in World::Impl::contacts; -1: an empty lane
     int bodyA[4] = {}, bodyB[4] = {};      // solver slots; an empty lane uses the static slot 0
+    const float* rowData() const { return reinterpret_cast<const float*>(&rows); }
+};
+
+// Eight constraints of one colour, for CPUs with AVX2 (contact_solver_avx2.cpp): the rows are
+// ContactRows<Float8>, kept as floats here because only that file may name AVX2 types.
+struct ContactBlock8 {
+    static constexpr int lanes = 8;
+    alignas(32) float rows[rowFloats * 8];
+    int contact[8] = {-1, -1, -1, -1, -1, -1, -1, -1};
+    int bodyA[8] = {}, bodyB[8] = {};
+    const float* rowData() const { return rows; }
 };
 
 // Four constraints' rows as lanes (an empty lane: a default ContactRows, which moves nothing).
-void packContactRows(const std::array<const ContactRows<float>*, 4>& lanes, ContactRows<simd::Float4>& packed);
+void packContactRows(const ContactRows<float>* const (&lanes)[4], ContactRows<simd::Float4>& packed);
+
+// The lane width of a new world's contact blocks: 8 where contactLanes8Available() (this build
+// has the AVX2 rows and the CPU runs AVX2), else 4; the environment's PERPDOT_CONTACT_LANES=4 picks 4.
+bool contactLanes8Available();
+int chooseContactLanes();
+
+// The eight-lane rows (src/core/avx2/contact_solver_avx2.cpp, built where PERPDOT_AVX2 is defined):
+// packContactRows8 packs eight constraints' rows into a block's lanes; contactRows8 is one pass
+// over blocks [begin, end), as contactRows is over four-lane blocks.
+void packContactRows8(const ContactRows<float>* const (&lanes)[8], ContactBlock8& block);
+void contactRows8(ContactBlock8* blocks, int begin, int end, BodyState* states, const StepContext& ctx, RowPass pass);
 
 }  // namespace perpdot

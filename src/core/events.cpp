@@ -55,7 +55,7 @@ void reportHitEvents(World::Impl& w) {
         bool hit = false;
         for (int i = 0; i < c.pointCount; ++i) {
             const float approachSpeed = -c.points[i].relativeVelocity;
-            if (approachSpeed > event.approachSpeed && c.points[i].maxNormalImpulse > 0.0f) {
+            if (approachSpeed > event.approachSpeed && contact.points[i].maxNormalImpulse > 0.0f) {
                 event.approachSpeed = approachSpeed;
                 event.point = contact.points[i].point;
                 hit = true;

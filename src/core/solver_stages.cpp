@@ -12,7 +12,7 @@ namespace {
 // Units per claim: enough work to outweigh the atomic claim, few enough to share a colour.
 constexpr int bodiesPerItem = 256;
 constexpr int jointUnitsPerItem = 32;
-constexpr int contactBlocksPerItem = 32;
+constexpr int contactsPerItem = 128;
 
 }  // namespace
 
@@ -28,7 +28,7 @@ void SolverStages::build(const World::Impl& w) {
             add(Work::Joints, pass, color, jointUnitCount(w, color), jointUnitsPerItem);
         add(Work::SerialJoints, pass, 0, serialJointCount(w) > 0 ? 1 : 0, 1);
         for (int color = 0; color < GraphColoring::overflow; ++color)
-            add(Work::Contacts, pass, color, contactBlockCount(w, color), contactBlocksPerItem);
+            add(Work::Contacts, pass, color, contactBlockCount(w, color), contactsPerItem / w.contactLanes);
         add(Work::SerialContacts, pass, 0, w.overflowConstraints.empty() ? 0 : 1, 1);
     };
     add(Work::SubstepForces, RowPass::WarmStart, 0, bodies, bodiesPerItem);

@@ -52,10 +52,9 @@ void World::step(float timeStep) {
     w.solverStages.build(w);
     w.solverStages.run(w, ctx);
     projectJoints(w);  // project: the anchors of revolute trees meet again
-    unpackContactBlocks(w);
+    storeContactImpulses(w);   // store: impulses for the next step's warm start, from the lanes
     applyRestitution(w, ctx);  // restitution: Hecker's bounce, once per step
-    storeJointImpulses(w, ctx);  // store: impulses for the next step's warm start
-    storeContactImpulses(w);
+    storeJointImpulses(w, ctx);
     reportHitEvents(w);
     finalizeBodies(w, timeStep);  // positions back into the bodies; continuous collision
     breakJoints(w);               // joints whose reaction passed their break limits

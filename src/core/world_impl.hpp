@@ -214,7 +214,9 @@ struct World::Impl {
     std::vector<int> bouncingConstraints;        // the constraints with restitution, for its pass
     std::vector<std::array<int, 2>> constraintSlots;  // by constraint: its bodies' solver slots, for colouring
     GraphColoring contactColoring;               // colours of `constraints` (graph_color.hpp)
-    std::vector<ContactBlock> contactBlocks;     // four constraints of one colour each, in colour order
+    int contactLanes = chooseContactLanes();     // constraints per block: 4, or 8 with AVX2
+    std::vector<ContactBlock> contactBlocks;     // four constraints of one colour each, in colour order,
+    std::vector<ContactBlock8> contactBlocks8;   // or eight (contactLanes = 8)
     ColorStarts contactBlockStart{};             // colour c is contactBlocks[start[c] .. start[c + 1])
     std::vector<int> contactColors;              // prepareContactBlocks scratch: colour of each constraint,
     std::vector<int> contactOrder;               // and the constraints sorted by colour
@@ -302,9 +304,10 @@ void prepareContactBlocks(World::Impl& world);
 int contactBlockCount(const World::Impl& world, int color);
 void contactRows(World::Impl& world, const StepContext& ctx, RowPass pass, int color, int begin, int end);
 void serialContactRows(World::Impl& world, const StepContext& ctx, RowPass pass);
-void unpackContactBlocks(World::Impl& world);  // the blocks' accumulated impulses back into `constraints`
-void applyRestitution(World::Impl& world, const StepContext& ctx);
+// The accumulated impulses into the contacts (the blocks' straight from their lanes), then
+// restitution on them: `constraints` keeps only what the step prepared.
 void storeContactImpulses(World::Impl& world);
+void applyRestitution(World::Impl& world, const StepContext& ctx);
 void reportHitEvents(World::Impl& world);
 
 }  // namespace perpdot
