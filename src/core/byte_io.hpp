@@ -43,24 +43,24 @@ public:
 
     uint32_t version = 0;  // the format version of what is read, once its header is
 
-    uint8_t u8() { return static_cast<uint8_t>(unsigned_<1>()); }
+    [[gnu::always_inline]] uint8_t u8() { return static_cast<uint8_t>(unsigned_<1>()); }
     uint16_t u16() { return static_cast<uint16_t>(unsigned_<2>()); }
-    uint32_t u32() { return static_cast<uint32_t>(unsigned_<4>()); }
+    [[gnu::always_inline]] uint32_t u32() { return static_cast<uint32_t>(unsigned_<4>()); }
     uint64_t u64() { return unsigned_<8>(); }
     int32_t i32() { return static_cast<int32_t>(u32()); }
     bool boolean() {
         const uint8_t v = u8();
-        if (v > 1) fail("a boolean is " + std::to_string(v));
+        if (v > 1) [[unlikely]] notBoolean(v);
         return v == 1;
     }
     // Any bits, NaN and infinity included, for contact and joint values: a world's own snapshot
     // must always load back, and its contacts may hold non-finite values next to wild bodies.
-    float f32() { return std::bit_cast<float>(u32()); }
+    [[gnu::always_inline]] float f32() { return std::bit_cast<float>(u32()); }
     // Body state, settings and broadphase boxes must be finite (the step keeps them so, and
     // Box2D's time of impact asserts on NaN).
     float finite() {
         const float v = f32();
-        if (!std::isfinite(v)) fail("a number is not finite");
+        if (!std::isfinite(v)) [[unlikely]] notFinite();
         return v;
     }
     Vec2 finiteVec2() {
@@ -88,7 +88,7 @@ public:
         return static_cast<int>(n);
     }
     void skip(size_t size) {
-        if (bytes_.size() - pos_ < size) fail("truncated");
+        if (bytes_.size() - pos_ < size) truncated();
         pos_ += size;
     }
     void expectEnd() const {
@@ -99,10 +99,15 @@ public:
     }
 
 private:
-    // A fixed size, so that the compiler turns the byte loop into one load.
+    [[noreturn, gnu::cold, gnu::noinline]] void truncated() const { fail("truncated"); }
+    [[noreturn, gnu::cold, gnu::noinline]] void notBoolean(uint8_t v) const { fail("a boolean is " + std::to_string(v)); }
+    [[noreturn, gnu::cold, gnu::noinline]] void notFinite() const { fail("a number is not finite"); }
+
+    // A fixed size, so that the compiler turns the byte loop into one load; the failure is out of
+    // line, so that each read inlines to a compare and a load.
     template <size_t Size>
-    uint64_t unsigned_() {
-        if (bytes_.size() - pos_ < Size) fail("truncated");
+    [[gnu::always_inline]] uint64_t unsigned_() {
+        if (bytes_.size() - pos_ < Size) [[unlikely]] truncated();
         uint64_t v = 0;
         for (size_t i = 0; i < Size; ++i) v |= static_cast<uint64_t>(bytes_[pos_ + i]) << (8 * i);
         pos_ += Size;

@@ -101,8 +101,10 @@ void writeGeometry(ByteWriter& out, const ShapeData& s) {
 }
 
 // Reads geometry and runs the checks createShape runs; a polygon must also be the exact
-// normalised form makePolygon produces, which is what the world stores.
-void readGeometry(ByteReader& in, ShapeData& s) {
+// normalised form makePolygon produces, which is what the world stores. A polygon equal to the
+// one the restoring world holds in that slot (`held`: a rollback restores the same shapes) passed
+// those checks when it was made, and is not checked again.
+void readGeometry(ByteReader& in, ShapeData& s, const ShapeData* held) {
     try {
         switch (in.u8()) {
             case 0: {
@@ -119,9 +121,12 @@ void readGeometry(ByteReader& in, ShapeData& s) {
                 if (p.count < 3 || p.count > maxPolygonVertices) in.fail("polygon vertex count out of range");
                 for (int i = 0; i < p.count; ++i) p.vertices[i] = in.finiteVec2();
                 p.radius = in.finite();
-                validateGeometry(p);
-                if (!(makePolygon(std::span(p.vertices.data(), static_cast<size_t>(p.count)), p.radius) == p))
-                    in.fail("polygon is not in normalised form");
+                const Polygon* known = held ? std::get_if<Polygon>(&held->geometry) : nullptr;
+                if (!known || !(*known == p)) {
+                    validateGeometry(p);
+                    if (!(makePolygon(std::span(p.vertices.data(), static_cast<size_t>(p.count)), p.radius) == p))
+                        in.fail("polygon is not in normalised form");
+                }
                 s.geometry = p;
                 break;
             }
@@ -174,9 +179,9 @@ void writeShape(ByteWriter& out, const World::Impl& w, const ShapeData& s) {
     }
 }
 
-void readShape(ByteReader& in, ShapeData& s, std::vector<AABB>& proxies, int bodyCount) {
+void readShape(ByteReader& in, ShapeData& s, std::vector<AABB>& proxies, int bodyCount, const ShapeData* held) {
     s.body = in.integer(0, bodyCount - 1, "shape body");
-    readGeometry(in, s);
+    readGeometry(in, s, held);
     readFields(in, s);
     if (s.density < 0 || s.friction < 0 || s.restitution < 0) in.fail("negative shape material");
     proxies.resize(in.count(16, "proxy"));
@@ -365,7 +370,8 @@ void World::restore(std::span<const uint8_t> bytes) {
         s.generation = in.u32();
         s.alive = shapeAlive[i] = in.boolean();
         if (!s.alive) continue;
-        readShape(in, s, savedProxies[i], bodyCount);
+        const bool holds = i < static_cast<int>(impl_->shapes.size()) && impl_->shapes[i].alive;
+        readShape(in, s, savedProxies[i], bodyCount, holds ? &impl_->shapes[i] : nullptr);
         w.noteFilter(s.filter);
         if (!bodyAlive[s.body]) in.fail("shape " + std::to_string(i) + " belongs to a dead body");
     }
