@@ -65,7 +65,8 @@ TEST(ContactSolverWide, FourLanesEqualFourScalarSolves) {
         for (const bool useBias : {true, false}) {
             for (int lane = 0; lane < (emptyLast ? 3 : 4); ++lane) {
                 warmStartContact(scalarRows[lane], scalar[bodyA[lane]], scalar[bodyB[lane]]);
-                solveContact(scalarRows[lane], scalar[bodyA[lane]], scalar[bodyB[lane]], ctx, useBias);
+                if (useBias) solveContact<true>(scalarRows[lane], scalar[bodyA[lane]], scalar[bodyB[lane]], ctx);
+                else solveContact<false>(scalarRows[lane], scalar[bodyA[lane]], scalar[bodyB[lane]], ctx);
             }
         }
 
@@ -74,7 +75,8 @@ TEST(ContactSolverWide, FourLanesEqualFourScalarSolves) {
         for (const bool useBias : {true, false}) {
             BodyLanes<simd::Float4> a = gatherBodies(states, bodyA), b = gatherBodies(states, bodyB);
             warmStartContact(wide, a, b);
-            solveContact(wide, a, b, ctx, useBias);
+            if (useBias) solveContact<true>(wide, a, b, ctx);
+            else solveContact<false>(wide, a, b, ctx);
             scatterVelocities(states, bodyA, a);
             scatterVelocities(states, bodyB, b);
         }

@@ -67,9 +67,10 @@ void forContacts(World::Impl& w, int begin, int end, bool overflow, Rows rows) {
 void passContacts(World::Impl& w, const StepContext& ctx, RowPass pass, int begin, int end, bool overflow) {
     if (pass == RowPass::WarmStart)
         forContacts(w, begin, end, overflow, [](auto& c, auto& a, auto& b) { warmStartContact(c, a, b); });
+    else if (pass == RowPass::Solve)
+        forContacts(w, begin, end, overflow, [&](auto& c, auto& a, auto& b) { solveContact<true>(c, a, b, ctx); });
     else
-        forContacts(w, begin, end, overflow,
-                    [&, useBias = pass == RowPass::Solve](auto& c, auto& a, auto& b) { solveContact(c, a, b, ctx, useBias); });
+        forContacts(w, begin, end, overflow, [&](auto& c, auto& a, auto& b) { solveContact<false>(c, a, b, ctx); });
 }
 
 }  // namespace

@@ -72,8 +72,10 @@ void warmStartContact(const ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b)
 }
 
 // One pass over a constraint's rows: non-penetration, then friction, then rolling resistance.
-template <class F>
-void solveContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, const StepContext& ctx, bool useBias) {
+// useBias: the solve pass (soft push-out), else the relax pass; a template argument, so that each
+// pass compiles to its own loop with only the values it uses.
+template <bool useBias, class F>
+void solveContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, const StepContext& ctx) {
     using simd::max;
     using simd::select;
     const Vec2T<F> n = c.normal;
@@ -91,7 +93,7 @@ void solveContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, const Ste
         const simd::MaskOf<F> speculative = s > F(0.0f);
         F bias = select(speculative, s * F(ctx.invHs), F(0.0f));
         F massScale = 1.0f, impulseScale = 0.0f;
-        if (useBias) {
+        if constexpr (useBias) {
             // Soft push-out of the overlap, at most maxBiasVelocity.
             const F push = max(c.biasRate * simd::min(s + F(ctx.pushSlop), F(0.0f)), F(-ctx.maxBiasVelocity));
             bias = select(speculative, bias, push);

@@ -68,17 +68,31 @@ void packContactRows8(const ContactRows<float>* const (&lanes)[8], ContactBlock8
     }
 }
 
-void contactRows8(ContactBlock8* blocks, int begin, int end, BodyState* states, const StepContext& ctx, RowPass pass) {
+namespace {
+
+// `rows(blockRows, a, b)` on blocks [begin, end).
+template <class Rows>
+void forBlocks(ContactBlock8* blocks, int begin, int end, BodyState* states, Rows rows) {
     for (int k = begin; k < end; ++k) {
         ContactBlock8& block = blocks[k];
-        auto& rows = *reinterpret_cast<ContactRows<Float8>*>(block.rows);
         BodyLanes<Float8> a = gatherBodies8(states, block.bodyA);
         BodyLanes<Float8> b = gatherBodies8(states, block.bodyB);
-        if (pass == RowPass::WarmStart) warmStartContact(rows, a, b);
-        else solveContact(rows, a, b, ctx, pass == RowPass::Solve);
+        rows(*reinterpret_cast<ContactRows<Float8>*>(block.rows), a, b);
         scatterVelocities8(states, block.bodyA, a);
         scatterVelocities8(states, block.bodyB, b);
     }
+}
+
+}  // namespace
+
+void contactRows8(ContactBlock8* blocks, int begin, int end, BodyState* states, const StepContext& ctx, RowPass pass) {
+    using Lanes = BodyLanes<Float8>;
+    if (pass == RowPass::WarmStart)
+        forBlocks(blocks, begin, end, states, [](ContactRows<Float8>& c, Lanes& a, Lanes& b) { warmStartContact(c, a, b); });
+    else if (pass == RowPass::Solve)
+        forBlocks(blocks, begin, end, states, [&](ContactRows<Float8>& c, Lanes& a, Lanes& b) { solveContact<true>(c, a, b, ctx); });
+    else
+        forBlocks(blocks, begin, end, states, [&](ContactRows<Float8>& c, Lanes& a, Lanes& b) { solveContact<false>(c, a, b, ctx); });
 }
 
 }  // namespace perpdot
