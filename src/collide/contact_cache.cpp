@@ -52,24 +52,6 @@ void takeManifold(Contact& c, const collide::Manifold& m, const Body& ba, const 
     rememberManifoldPose(c, ba, bb, keepable);
 }
 
-void linkEdge(World::Impl& w, int contact, int side, int bodyIndex) {
-    const int key = 2 * contact + side;
-    Body& b = w.bodies[bodyIndex];
-    ContactEdge& e = w.contacts[contact].edges[side];
-    e.prev = -1;
-    e.next = b.contactHead;
-    if (b.contactHead >= 0) w.contacts[b.contactHead >> 1].edges[b.contactHead & 1].prev = key;
-    b.contactHead = key;
-}
-
-void unlinkEdge(World::Impl& w, int contact, int side, int bodyIndex) {
-    ContactEdge& e = w.contacts[contact].edges[side];
-    if (e.prev >= 0) w.contacts[e.prev >> 1].edges[e.prev & 1].next = e.next;
-    else w.bodies[bodyIndex].contactHead = e.next;
-    if (e.next >= 0) w.contacts[e.next >> 1].edges[e.next & 1].prev = e.prev;
-    e = {};
-}
-
 }  // namespace
 
 void World::Impl::updatePairs() {
@@ -136,17 +118,8 @@ void World::Impl::addPair(int proxyA, int proxyB) {
         std::swap(proxyA, proxyB);
         std::swap(sa, sb);
     }
-    int index;
-    if (!freeContacts.empty()) {
-        index = freeContacts.back();
-        freeContacts.pop_back();
-    } else {
-        index = static_cast<int>(contacts.size());
-        contacts.emplace_back();
-    }
+    const int index = contacts.create();
     Contact& c = contacts[index];
-    c = Contact{};
-    c.alive = true;
     c.pairKey = key;
     c.proxyA = proxyA;
     c.proxyB = proxyB;
@@ -155,8 +128,8 @@ void World::Impl::addPair(int proxyA, int proxyB) {
     c.bodyA = sa->body;
     c.bodyB = sb->body;
     c.sensor = sa->sensor || sb->sensor;
-    linkEdge(*this, index, 0, c.bodyA);
-    linkEdge(*this, index, 1, c.bodyB);
+    contactLists.link(contacts, index, 0, c.bodyA);
+    contactLists.link(contacts, index, 1, c.bodyB);
     pairs.insert(key);
 }
 
@@ -164,16 +137,13 @@ void World::Impl::destroyContact(int index) {
     Contact& c = contacts[index];
     if (c.touching || c.overlapping) reportTouch(c, false);
     pairs.erase(c.pairKey);
-    unlinkEdge(*this, index, 0, c.bodyA);
-    unlinkEdge(*this, index, 1, c.bodyB);
-    c.alive = false;
-    freeContacts.push_back(index);
+    contactLists.unlink(contacts, index, 0, c.bodyA);
+    contactLists.unlink(contacts, index, 1, c.bodyB);
+    contacts.destroy(index);
 }
 
 void World::Impl::destroyContactsOf(int bodyIndex, int shapeIndex) {
-    for (int edge = bodies[bodyIndex].contactHead; edge >= 0;) {
-        const int index = edge >> 1;
-        const int next = contacts[index].edges[edge & 1].next;
+    contactLists.forEach(contacts, bodyIndex, [&](int index, int) {
         const Contact& c = contacts[index];
         if (shapeIndex < 0 || c.a.shape == shapeIndex || c.b.shape == shapeIndex) {
             // The other body loses a support: wake it.
@@ -181,8 +151,7 @@ void World::Impl::destroyContactsOf(int bodyIndex, int shapeIndex) {
             if (c.touching) wake(other);
             destroyContact(index);
         }
-        edge = next;
-    }
+    });
 }
 
 // The narrowphase of one contact, with the bodies' poses alone: whether its fat AABBs still
@@ -230,7 +199,7 @@ bool World::Impl::isQuiet(const Contact& c, Narrowphase result) const {
 // raised and sleepers woken — and a contact whose body was woken by an earlier one in that order
 // takes its narrowphase there, as a one-by-one pass would. Quiet contacts skip that pass.
 void World::Impl::updateContacts() {
-    const int count = static_cast<int>(contacts.size());
+    const int count = contacts.capacity();
     narrowphase.resize(static_cast<size_t>(count));
     workers.parallelFor(count, 64, [&](int begin, int end, int) {
         for (int index = begin; index < end; ++index) {

@@ -88,7 +88,7 @@ void prepareContacts(World::Impl& w, const StepContext& ctx) {
         return contact.alive && contact.touching && (w.bodies[contact.bodyA].awake || w.bodies[contact.bodyB].awake);
     };
     w.workers.parallelSelect(
-        static_cast<int>(w.contacts.size()), constrains,
+        w.contacts.capacity(), constrains,
         [&](int total) {
             w.constraints.resize(total);
             w.constraintSlots.resize(total);

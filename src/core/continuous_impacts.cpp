@@ -93,7 +93,7 @@ void applyImpulse(Mover& a, const Body& ba, Mover& b, const Body& bb, const Impa
 // are added, and every pair with a bullet in it is listed once.
 void World::Impl::collectMoverPairs() {
     moverPairs.clear();
-    moverOfBody.assign(bodies.size(), -1);
+    moverOfBody.assign(bodies.capacity(), -1);
     const int fastCount = static_cast<int>(movers.size());
     for (int i = 0; i < fastCount; ++i) {
         Mover& m = movers[i];

@@ -18,9 +18,10 @@ namespace {
 // Marks the bodies with a touching contact: one pass over the contact pool, rather than a walk of
 // each body's contact list (a turning container has thousands, most of them not touching).
 void markTouching(World::Impl& w) {
-    w.touchingBodies.assign(w.bodies.size(), 0);
-    for (const Contact& c : w.contacts)
-        if (c.alive && c.touching) w.touchingBodies[c.bodyA] = w.touchingBodies[c.bodyB] = 1;
+    w.touchingBodies.assign(w.bodies.capacity(), 0);
+    w.contacts.forEachLive([&](int, const Contact& c) {
+        if (c.touching) w.touchingBodies[c.bodyA] = w.touchingBodies[c.bodyB] = 1;
+    });
 }
 
 }  // namespace
@@ -30,7 +31,7 @@ void markTouching(World::Impl& w) {
 void integrateVelocities(World::Impl& w, const StepContext& ctx) {
     w.awakeBodies.clear();
     markTouching(w);
-    for (int i = 0; i < static_cast<int>(w.bodies.size()); ++i) {
+    for (int i = 0; i < w.bodies.capacity(); ++i) {
         Body& b = w.bodies[i];
         b.solverIndex = 0;
         if (!b.alive || b.type == BodyType::Static || !b.awake) continue;
@@ -181,7 +182,7 @@ void finalizeBodies(World::Impl& w, float h) {
         w.movers.back().a1 = b.angle;
     }
     if (anyBullet && !w.movers.empty()) w.solveMovingImpacts(h);
-    for (Body& b : w.bodies) {
+    for (Body& b : w.bodies.slots()) {
         b.force = {};
         b.torque = 0.0f;
     }

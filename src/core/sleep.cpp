@@ -32,7 +32,7 @@ void unite(std::vector<int>& parent, int a, int b) {
 
 void World::Impl::updateSleep(float h) {
     if (!def.enableSleep) return;
-    const size_t n = bodies.size();
+    const size_t n = bodies.capacity();
     islandParent.resize(n);
     bool anySleepy = false;
     for (int i : awakeBodies) {
@@ -49,8 +49,9 @@ void World::Impl::updateSleep(float h) {
     if (!anySleepy) return;
 
     auto joinable = [&](int body) { return bodies[body].type == BodyType::Dynamic && bodies[body].awake; };
-    for (const Contact& c : contacts)
-        if (c.alive && c.touching && joinable(c.bodyA) && joinable(c.bodyB)) unite(islandParent, c.bodyA, c.bodyB);
+    contacts.forEachLive([&](int, const Contact& c) {
+        if (c.touching && joinable(c.bodyA) && joinable(c.bodyB)) unite(islandParent, c.bodyA, c.bodyB);
+    });
     forEachJointPair(
         *this,
         [](void* context, int a, int b) {

@@ -1,4 +1,4 @@
-// The World's internals: pools of bodies, shapes and contacts addressed by generational ids,
+// The World's internals: pools of bodies, shapes and contacts (pool.hpp),
 // the collision system, and the per-step solver arrays.
 #pragma once
 
@@ -12,8 +12,10 @@
 #include "collide/collision.hpp"
 #include "collide/pair_set.hpp"
 #include "core/contact_solver_wide.hpp"
+#include "core/edge_list.hpp"
 #include "core/graph_color.hpp"
 #include "core/joint.hpp"
+#include "core/pool.hpp"
 #include "core/solver_stages.hpp"
 #include "core/step_context.hpp"
 #include "core/workers.hpp"
@@ -41,7 +43,6 @@ struct Body {
     float sleepTime = 0;
     void* userData = nullptr;
     std::vector<int> shapes;
-    int contactHead = -1;  // first edge (contact*2 + side) of this body's contact list
     int solverIndex = 0;   // slot in StepContext::states during a step; 0 = static
     int jointCount = 0;    // joints attached (maintained by the joint store)
     int islandNext = -1;   // next body of the island it fell asleep with
@@ -88,10 +89,6 @@ struct ContactPointState {
     float baseSeparation = 0;  // at the last narrowphase, for a kept manifold (manifold_reuse.hpp)
 };
 
-struct ContactEdge {
-    int prev = -1, next = -1;  // edge keys (contact*2 + side) in the body's list
-};
-
 struct Contact {
     bool alive = false;
     bool touching = false;     // has manifold points and takes part in the solve (never for sensors)
@@ -111,7 +108,7 @@ struct Contact {
     bool reuseValid = false;
     Vec2 reuseOffset;
     float reuseAngleA = 0, reuseAngleB = 0;
-    ContactEdge edges[2];  // in bodyA's list (side 0) and bodyB's (side 1)
+    Edge edges[2];  // in bodyA's list (side 0) and bodyB's (side 1): World::Impl::contactLists
 };
 
 // A contact's rows for this step (ContactRows<float>, contact_solver_wide.hpp) and where they
@@ -170,12 +167,10 @@ void validateGeometry(const Capsule& capsule);
 
 struct World::Impl {
     WorldDef def;
-    std::vector<Body> bodies;
-    std::vector<int> freeBodies;
-    std::vector<ShapeData> shapes;
-    std::vector<int> freeShapes;
-    std::vector<Contact> contacts;
-    std::vector<int> freeContacts;
+    Pool<Body> bodies;
+    Pool<ShapeData> shapes;
+    Pool<Contact> contacts;
+    EdgeList contactLists;  // each body's contacts
     collide::PairSet pairs;  // broadphase pairs that have a contact
     std::vector<int> movedProxies;
     collide::CollisionSystem collision;
