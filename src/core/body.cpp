@@ -113,7 +113,7 @@ void World::destroyBody(BodyId id) {
     Body& b = w.body(id);
     destroyJointsOf(w, id.index);
     w.wake(id.index);  // its island mates lose a support
-    w.destroyContactsOf(id.index, -1);
+    destroyContactsOf(w, id.index, -1);
     for (int s : b.shapes) {
         w.destroyProxies(s);
         w.collision.clearGeometry(s);

@@ -32,7 +32,7 @@ namespace {
 
 // The constraint of a touching contact: masses, softness, anchors and effective masses.
 void prepareContact(const World::Impl& w, const StepContext& ctx, ContactConstraint& c) {
-    const Contact& contact = w.contacts[c.contact];
+    const Contact& contact = w.contactCache.contacts[c.contact];
     const Body& ba = w.bodies[contact.bodyA];
     const Body& bb = w.bodies[contact.bodyB];
     c.indexA = ba.solverIndex;
@@ -84,11 +84,11 @@ void prepareContact(const World::Impl& w, const StepContext& ctx, ContactConstra
 // The touching contacts with an awake body, in pool order, selected and prepared by the workers.
 void prepareContacts(World::Impl& w, const StepContext& ctx) {
     auto constrains = [&](int index) {
-        const Contact& contact = w.contacts[index];
+        const Contact& contact = w.contactCache.contacts[index];
         return contact.alive && contact.touching && (w.bodies[contact.bodyA].awake || w.bodies[contact.bodyB].awake);
     };
     w.workers.parallelSelect(
-        w.contacts.capacity(), constrains,
+        w.contactCache.contacts.capacity(), constrains,
         [&](int total) {
             w.constraints.resize(total);
             w.constraintSlots.resize(total);
@@ -153,7 +153,7 @@ void storeContactImpulses(World::Impl& w) {
     w.workers.parallelFor(static_cast<int>(w.constraints.size()), 256, [&](int begin, int end, int) {
         for (int k = begin; k < end; ++k) {
             const ContactConstraint& c = w.constraints[k];
-            Contact& contact = w.contacts[c.contact];
+            Contact& contact = w.contactCache.contacts[c.contact];
             contact.rollingImpulse = c.rollingImpulse;
             for (int i = 0; i < c.pointCount; ++i) {
                 contact.points[i].normalImpulse = c.points[i].normalImpulse;

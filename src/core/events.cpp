@@ -49,7 +49,7 @@ void World::Impl::reportTouch(const Contact& c, bool begin) {
 void reportHitEvents(World::Impl& w) {
     if (!w.anyHitEvents) return;
     for (const ContactConstraint& c : w.constraints) {
-        const Contact& contact = w.contacts[c.contact];
+        const Contact& contact = w.contactCache.contacts[c.contact];
         if (!w.shapes[contact.a.shape].enableHitEvents && !w.shapes[contact.b.shape].enableHitEvents) continue;
         ContactHitEvent event{w.shapeId(contact.a.shape), w.shapeId(contact.b.shape), {}, c.normal, w.def.hitEventThreshold};
         bool hit = false;

@@ -19,7 +19,7 @@ namespace {
 // each body's contact list (a turning container has thousands, most of them not touching).
 void markTouching(World::Impl& w) {
     w.touchingBodies.assign(w.bodies.capacity(), 0);
-    w.contacts.forEachLive([&](int, const Contact& c) {
+    w.contactCache.contacts.forEachLive([&](int, const Contact& c) {
         if (c.touching) w.touchingBodies[c.bodyA] = w.touchingBodies[c.bodyB] = 1;
     });
 }

@@ -24,9 +24,10 @@ const JointStore& store(const World::Impl& w) { return *w.joints; }
 
 // A joint that forbids collision between its bodies removes their contacts.
 void destroyContactsBetween(World::Impl& w, int bodyA, int bodyB) {
-    w.contactLists.forEach(w.contacts, bodyA, [&](int index, int) {
-        const Contact& c = w.contacts[index];
-        if ((c.bodyA == bodyA && c.bodyB == bodyB) || (c.bodyA == bodyB && c.bodyB == bodyA)) w.destroyContact(index);
+    const ContactCache& cache = w.contactCache;
+    cache.bodyLists.forEach(cache.contacts, bodyA, [&](int index, int) {
+        const Contact& c = cache.contacts[index];
+        if ((c.bodyA == bodyA && c.bodyB == bodyB) || (c.bodyA == bodyB && c.bodyB == bodyA)) destroyContact(w, index);
     });
 }
 

@@ -235,8 +235,9 @@ public:
     // The impulse dynamic bodies put on the capsule's body in the last step, over the mover's mass.
     Vec2 pushedVelocity() const {
         Vec2 impulse;
-        w_.contactLists.forEach(w_.contacts, body_, [&](int contact, int onB) {
-            const Contact& c = w_.contacts[contact];
+        const ContactCache& cache = w_.contactCache;
+        cache.bodyLists.forEach(cache.contacts, body_, [&](int contact, int onB) {
+            const Contact& c = cache.contacts[contact];
             const float side = onB ? 1.0f : -1.0f;  // normal runs from A to B
             if (c.touching && w_.bodies[onB ? c.bodyA : c.bodyB].type == BodyType::Dynamic)
                 for (int p = 0; p < c.pointCount; ++p) impulse += (side * c.points[p].normalImpulse) * c.normal;

@@ -179,7 +179,7 @@ void World::destroyShape(ShapeId id) {
     w.checkUnlocked("destroyShape");
     ShapeData& s = w.shape(id);
     const int bodyIndex = s.body;
-    w.destroyContactsOf(bodyIndex, id.index);
+    destroyContactsOf(w, bodyIndex, id.index);
     w.destroyProxies(id.index);
     w.collision.clearGeometry(id.index);
     std::vector<int>& owned = w.bodies[bodyIndex].shapes;

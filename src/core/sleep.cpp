@@ -49,7 +49,7 @@ void World::Impl::updateSleep(float h) {
     if (!anySleepy) return;
 
     auto joinable = [&](int body) { return bodies[body].type == BodyType::Dynamic && bodies[body].awake; };
-    contacts.forEachLive([&](int, const Contact& c) {
+    contactCache.contacts.forEachLive([&](int, const Contact& c) {
         if (c.touching && joinable(c.bodyA) && joinable(c.bodyB)) unite(islandParent, c.bodyA, c.bodyB);
     });
     forEachJointPair(

@@ -54,7 +54,8 @@ void writeBody(ByteWriter& out, const World::Impl& w, int index, bool futureOnly
     out.u32(static_cast<uint32_t>(b.shapes.size()));
     for (int s : b.shapes) out.i32(s);
     // The contact list as the sequence of its edge keys (contact*2 + side), head first.
-    const std::vector<int> edges = w.contactLists.keys(w.contacts, index);
+    const ContactCache& cache = w.contactCache;
+    const std::vector<int> edges = cache.bodyLists.keys(cache.contacts, index);
     out.u32(static_cast<uint32_t>(edges.size()));
     for (int e : edges) out.i32(e);
 }
@@ -237,12 +238,13 @@ std::vector<int> readFreeList(ByteReader& in, const std::vector<bool>& alive, co
 
 // Relinks body `index`'s contact list in the saved order, checking that every edge belongs to it.
 void linkEdges(ByteReader& in, World::Impl& w, int index, const std::vector<int>& edges, std::vector<bool>& seen) {
+    ContactCache& cache = w.contactCache;
     for (int e : edges) {
-        const Contact& c = w.contacts[e >> 1];
+        const Contact& c = cache.contacts[e >> 1];
         if (!c.alive || seen[e] || ((e & 1) ? c.bodyB : c.bodyA) != index) in.fail("contact list is inconsistent");
         seen[e] = true;
     }
-    w.contactLists.restore(w.contacts, index, edges);
+    cache.bodyLists.restore(cache.contacts, index, edges);
 }
 
 // Island rings (bodies that fell asleep together) must be proper cycles, or wake() would not end:
@@ -303,12 +305,12 @@ std::vector<uint8_t> writeSnapshot(const World::Impl& w, bool futureOnly) {
     }
     writeFreeList(out, w.shapes.freeList());
 
-    out.u32(static_cast<uint32_t>(w.contacts.capacity()));
-    for (const Contact& c : w.contacts.slots()) {
+    out.u32(static_cast<uint32_t>(w.contactCache.contacts.capacity()));
+    for (const Contact& c : w.contactCache.contacts.slots()) {
         out.boolean(c.alive);
         if (c.alive) writeContact(out, c, futureOnly && (w.bodies[c.bodyA].awake || w.bodies[c.bodyB].awake));
     }
-    writeFreeList(out, w.contacts.freeList());
+    writeFreeList(out, w.contactCache.contacts.freeList());
     writeJoints(out, w);
 
     out.u32(static_cast<uint32_t>(w.movedProxies.size()));
@@ -373,10 +375,10 @@ void World::restore(std::span<const uint8_t> bytes) {
         if (shapeAlive[i] && !shapeListed[i]) in.fail("shape " + std::to_string(i) + " is missing from its body");
 
     const int contactCount = in.count(1, "contact");
-    w.contacts.restoreSlots(contactCount);
+    w.contactCache.contacts.restoreSlots(contactCount);
     std::vector<bool> contactAlive(contactCount);
     for (int i = 0; i < contactCount; ++i) {
-        Contact& c = w.contacts[i];
+        Contact& c = w.contactCache.contacts[i];
         c.alive = contactAlive[i] = in.boolean();
         if (!c.alive) continue;
         readContact(in, c, shapeCount);
@@ -393,7 +395,7 @@ void World::restore(std::span<const uint8_t> bytes) {
         c.bodyA = sa.body;
         c.bodyB = sb.body;
     }
-    w.contacts.restoreFreeList(readFreeList(in, contactAlive, "free contact"));
+    w.contactCache.contacts.restoreFreeList(readFreeList(in, contactAlive, "free contact"));
     std::vector<bool> edgeSeen(2 * static_cast<size_t>(contactCount), false);
     for (int i = 0; i < bodyCount; ++i) {
         for (int e : edgesOf[i])
@@ -435,12 +437,12 @@ void World::restore(std::span<const uint8_t> bytes) {
         for (int proxy : s.proxies)
             if (!movedSet.contains(proxy)) w.collision.clearMoved(proxy);
     for (int i = 0; i < contactCount; ++i) {
-        Contact& c = w.contacts[i];
+        Contact& c = w.contactCache.contacts[i];
         if (!c.alive) continue;
         c.proxyA = w.shapes[c.a.shape].proxies[c.a.child];
         c.proxyB = w.shapes[c.b.shape].proxies[c.b.child];
         c.pairKey = proxyPairKey(c.proxyA, c.proxyB);
-        if (!w.pairs.insert(c.pairKey)) in.fail("two contacts for one pair");
+        if (!w.contactCache.pairs.insert(c.pairKey)) in.fail("two contacts for one pair");
     }
 
     fresh->preSolve = std::move(impl_->preSolve);  // a setting of this World, not of the state

@@ -40,8 +40,8 @@ void World::step(float timeStep) {
     } lock(w.locked);
     w.beginEvents();
 
-    w.updatePairs();     // pairs: proxies that left their fat AABB meet new partners
-    w.updateContacts();  // narrowphase: each contact keeps its manifold or takes a new one
+    updatePairs(w);     // pairs: proxies that left their fat AABB meet new partners
+    updateContacts(w);  // narrowphase: each contact keeps its manifold or takes a new one
 
     StepContext ctx = makeStepContext(w, timeStep);
     integrateVelocities(w, ctx);

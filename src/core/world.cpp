@@ -24,13 +24,13 @@ void World::setSubsteps(int substeps) {
 
 int World::contactCount() const {
     int count = 0;
-    impl_->contacts.forEachLive([&](int, const Contact& c) { count += c.touching; });
+    impl_->contactCache.contacts.forEachLive([&](int, const Contact& c) { count += c.touching; });
     return count;
 }
 
 std::vector<ContactData> World::contacts() const {
     std::vector<ContactData> out;
-    impl_->contacts.forEachLive([&](int, const Contact& c) {
+    impl_->contactCache.contacts.forEachLive([&](int, const Contact& c) {
         if (c.touching) out.push_back(impl_->contactData(c));
     });
     return out;

@@ -10,9 +10,8 @@
 #include <vector>
 
 #include "collide/collision.hpp"
-#include "collide/pair_set.hpp"
+#include "core/contact_cache.hpp"
 #include "core/contact_solver_wide.hpp"
-#include "core/edge_list.hpp"
 #include "core/graph_color.hpp"
 #include "core/joint.hpp"
 #include "core/pool.hpp"
@@ -80,37 +79,6 @@ inline float roundingRadius(const ShapeData& s) {
     return 0.0f;
 }
 
-struct ContactPointState {
-    Vec2 point;             // world, at the last narrowphase
-    Vec2 anchorA, anchorB;  // from each body's centre of mass to the point
-    float separation = 0;
-    float normalImpulse = 0, tangentImpulse = 0, maxNormalImpulse = 0;
-    uint32_t id = 0;
-    float baseSeparation = 0;  // at the last narrowphase, for a kept manifold (manifold_reuse.hpp)
-};
-
-struct Contact {
-    bool alive = false;
-    bool touching = false;     // has manifold points and takes part in the solve (never for sensors)
-    bool sensor = false;       // a sensor and a visitor: overlap test only, no constraint
-    bool overlapping = false;  // sensor contacts: the shapes overlap
-    uint64_t pairKey = 0;
-    int proxyA = -1, proxyB = -1;
-    collide::ChildKey a, b;
-    int bodyA = -1, bodyB = -1;
-    float friction = 0, restitution = 0;
-    float rollingResistance = 0, tangentSpeed = 0;
-    float rollingImpulse = 0;  // warm start of the rolling-resistance row
-    Vec2 normal;
-    int pointCount = 0;
-    ContactPointState points[2];
-    // The pose at the last narrowphase (manifold_reuse.hpp): B's centre in A's frame, both angles.
-    bool reuseValid = false;
-    Vec2 reuseOffset;
-    float reuseAngleA = 0, reuseAngleB = 0;
-    Edge edges[2];  // in bodyA's list (side 0) and bodyB's (side 1): World::Impl::contactLists
-};
-
 // A contact's rows for this step (ContactRows<float>, contact_solver_wide.hpp) and where they
 // came from: the bodies' solver slots and the contact.
 struct ContactConstraint : ContactRows<float> {
@@ -118,13 +86,6 @@ struct ContactConstraint : ContactRows<float> {
     int contact = -1;
     int pointCount = 0;
 };
-
-// Identity of a broadphase pair in World::Impl::pairs (never 0: the two proxies differ).
-inline uint64_t proxyPairKey(int proxyA, int proxyB) {
-    const auto lo = static_cast<uint32_t>(std::min(proxyA, proxyB));
-    const auto hi = static_cast<uint32_t>(std::max(proxyA, proxyB));
-    return (static_cast<uint64_t>(lo) << 32) | hi;
-}
 
 // A body's path over the rest of a step, for continuous collision between moving bodies
 // (continuous_impacts.cpp): centre of mass and angle go linearly from (c0, a0) at time t0 to
@@ -152,12 +113,6 @@ struct MoverPair {
     collide::ChildKey keyA, keyB;  // the children that meet first
 };
 
-// A pair found by the broadphase this step, child keys in order (a < b).
-struct NewPair {
-    collide::ChildKey a, b;
-    int proxyA = -1, proxyB = -1;
-};
-
 // The geometry checks of createShape (shape.cpp), also run on restored snapshots: Error if invalid.
 void validateGeometry(const Circle& circle);
 void validateGeometry(const Polygon& polygon);
@@ -169,17 +124,13 @@ struct World::Impl {
     WorldDef def;
     Pool<Body> bodies;
     Pool<ShapeData> shapes;
-    Pool<Contact> contacts;
-    EdgeList contactLists;  // each body's contacts
-    collide::PairSet pairs;  // broadphase pairs that have a contact
+    ContactCache contactCache;
     std::vector<int> movedProxies;
     collide::CollisionSystem collision;
     JointStorePtr joints;
     Workers workers;  // the threads of the step's parallel stages
     bool locked = false;  // inside step()
     int frozenBodies = 0;  // bodies frozen because their state went non-finite (stats())
-    std::vector<NewPair> newPairs;  // updatePairs scratch: the pairs found,
-    std::vector<std::vector<NewPair>> newPairsOf;  // by each worker
 
     // Events of the last step (events.cpp). End events raised between steps (a destroyed shape)
     // are kept for the next step: the first `endEventsReported` entries are the stale ones.
@@ -235,14 +186,13 @@ struct World::Impl {
     void updateMass(int body);
     void wake(int body);  // wakes the body and the island it slept with
 
-    // Shapes and broadphase (shape.cpp, contact_cache.cpp)
+    // Shapes and broadphase (shape.cpp)
     int addShape(BodyId body, const ShapeDef& def);
     void createProxies(int shape);
     void destroyProxies(int shape);
     void synchronizeProxies(int body, Vec2 displacement);
     // Whether synchronizeProxies(body, displacement) would change no proxy (any thread, between tree updates).
     bool proxiesKeep(int body, Vec2 displacement) const;
-    void updatePairs();
     void noteFilter(const Filter& f) {
         shapeCategories |= f.category;
         shapeMasks |= f.mask;
@@ -252,25 +202,11 @@ struct World::Impl {
     bool pairsWithNothing(const Filter& f) const {
         return f.group <= 0 && ((f.mask & shapeCategories) == 0 || (f.category & shapeMasks) == 0);
     }
-    // Whether two overlapping proxies may have a contact (bodies, sensors, shape types, filters,
-    // joints); reads only, so the pair-finding workers ask it.
-    bool pairWanted(int proxyA, int proxyB) const;
-    void addPair(int proxyA, int proxyB);  // a contact for a wanted pair, unless it has one
-    void updateContacts();
-    // What collideContact found: not run (both bodies asleep), the fat AABBs apart, a sensor's
-    // overlap, or a contact's manifold updated and whether it touched before.
-    // Quiet: collided by the workers, and nothing is left for updateContacts' one-by-one pass.
-    enum class Narrowphase : uint8_t { Skipped, Apart, Overlapping, Separate, WasTouching, WasNotTouching, Quiet };
-    Narrowphase collideContact(int contact);
-    bool isQuiet(const Contact& c, Narrowphase result) const;
-    std::vector<Narrowphase> narrowphase;  // updateContacts scratch, by contact
-    void destroyContact(int contact);
     void beginEvents();                        // forget the events reported after the last step
     void reportTouch(const Contact& c, bool begin);  // begin/end event for a contact or sensor
     ContactData contactData(const Contact& c) const;
-    void destroyContactsOf(int body, int shape);  // shape = -1: all of the body's contacts
 
-    // Stages of the step run by step.cpp (stages.hpp; contact_cache.cpp, sleep.cpp, continuous*.cpp)
+    // Stages of the step run by step.cpp (stages.hpp; sleep.cpp, continuous*.cpp)
     void updateSleep(float h);
     // Continuous collision (continuous.cpp): a body is fast when its move from (centre c0, angle
     // a0) to (c1, a1) may tunnel; solveContinuous sweeps it from its step-start pose (c0, a0) to

@@ -8,10 +8,10 @@ WorldStats World::stats() const {
     WorldStats s;
     s.bodySlots = w.bodies.capacity();
     s.shapeSlots = w.shapes.capacity();
-    s.contactSlots = w.contacts.capacity();
+    s.contactSlots = w.contactCache.contacts.capacity();
     s.bodies = w.bodies.size();
     s.shapes = w.shapes.size();
-    s.contacts = w.contacts.size();
+    s.contacts = w.contactCache.contacts.size();
     s.frozenBodies = w.frozenBodies;
     return s;
 }
