@@ -19,8 +19,8 @@ float invEffectiveMass(const ContactConstraint& c, Vec2 rA, Vec2 rB, Vec2 d) {
 // included: in the discrete fall a ball hits the ground with that speed, and an e = 1 bounce then
 // climbs exactly as many steps as it fell (docs/stress.md).
 BodyState velocityWithoutContact(const World::Impl& w, const StepContext& ctx, int slot) {
-    BodyState s = w.states[slot];
-    const SubstepForces& f = w.substepForces[slot];
+    BodyState s = w.scratch.states[slot];
+    const SubstepForces& f = w.scratch.substepForces[slot];
     s.v += static_cast<float>(ctx.substeps) * f.dv;
     s.w += static_cast<float>(ctx.substeps) * f.dw;
     return s;
@@ -83,6 +83,7 @@ void prepareContact(const World::Impl& w, const StepContext& ctx, ContactConstra
 
 // The touching contacts with an awake body, in pool order, selected and prepared by the workers.
 void prepareContacts(World::Impl& w, const StepContext& ctx) {
+    StepScratch& s = w.scratch;
     auto constrains = [&](int index) {
         const Contact& contact = w.contactCache.contacts[index];
         return contact.alive && contact.touching && (w.bodies[contact.bodyA].awake || w.bodies[contact.bodyB].awake);
@@ -90,18 +91,18 @@ void prepareContacts(World::Impl& w, const StepContext& ctx) {
     w.workers.parallelSelect(
         w.contactCache.contacts.capacity(), constrains,
         [&](int total) {
-            w.constraints.resize(total);
-            w.constraintSlots.resize(total);
+            s.constraints.resize(total);
+            s.constraintSlots.resize(total);
         },
         [&](int k, int index) {
-            ContactConstraint& c = w.constraints[k];
+            ContactConstraint& c = s.constraints[k];
             c.contact = index;
             prepareContact(w, ctx, c);
-            w.constraintSlots[k] = {c.indexA, c.indexB};
+            s.constraintSlots[k] = {c.indexA, c.indexB};
         });
     w.workers.parallelSelect(
-        static_cast<int>(w.constraints.size()), [&](int k) { return w.constraints[k].restitution != 0.0f; },
-        [&](int total) { w.bouncingConstraints.resize(total); }, [&](int slot, int k) { w.bouncingConstraints[slot] = k; });
+        static_cast<int>(s.constraints.size()), [&](int k) { return s.constraints[k].restitution != 0.0f; },
+        [&](int total) { s.bouncingConstraints.resize(total); }, [&](int slot, int k) { s.bouncingConstraints[slot] = k; });
     prepareContactBlocks(w);
 }
 
@@ -123,13 +124,13 @@ float reboundSpeed(float e, float V, float a, float h) {
 // Hecker's bounce: drive v_rel·n to the rebound speed of the approach (v_rel·n at the end of the
 // step without the contact), for approaches faster than the restitution threshold.
 void applyRestitution(World::Impl& w, const StepContext& ctx) {
-    std::vector<BodyState>& states = w.states;
-    for (int k : w.bouncingConstraints) {
-        ContactConstraint& c = w.constraints[k];
+    std::vector<BodyState>& states = w.scratch.states;
+    for (int k : w.scratch.bouncingConstraints) {
+        ContactConstraint& c = w.scratch.constraints[k];
         BodyState& a = states[c.indexA];
         BodyState& b = states[c.indexB];
         // The pair's deceleration along n from this step's forces: −(ΔvB − ΔvA)·n / h.
-        const Vec2 dv = w.substepForces[c.indexB].dv - w.substepForces[c.indexA].dv;
+        const Vec2 dv = w.scratch.substepForces[c.indexB].dv - w.scratch.substepForces[c.indexA].dv;
         const float deceleration = -static_cast<float>(ctx.substeps) * dot(dv, c.normal) * ctx.invH;
         for (int i = 0; i < c.pointCount; ++i) {
             ContactPointRows<float>& cp = c.points[i];
@@ -150,9 +151,9 @@ void applyRestitution(World::Impl& w, const StepContext& ctx) {
 // Each constraint's impulses back into its contact (a contact has one constraint: the workers
 // write apart).
 void storeContactImpulses(World::Impl& w) {
-    w.workers.parallelFor(static_cast<int>(w.constraints.size()), 256, [&](int begin, int end, int) {
+    w.workers.parallelFor(static_cast<int>(w.scratch.constraints.size()), 256, [&](int begin, int end, int) {
         for (int k = begin; k < end; ++k) {
-            const ContactConstraint& c = w.constraints[k];
+            const ContactConstraint& c = w.scratch.constraints[k];
             Contact& contact = w.contactCache.contacts[c.contact];
             contact.rollingImpulse = c.rollingImpulse;
             for (int i = 0; i < c.pointCount; ++i) {

@@ -38,9 +38,9 @@ namespace {
 // constraint when overflow is set.
 template <class Rows>
 void forContacts(World::Impl& w, int begin, int end, bool overflow, Rows rows) {
-    std::vector<BodyState>& states = w.states;
+    std::vector<BodyState>& states = w.scratch.states;
     for (int k = begin; k < end; ++k) {
-        ContactBlock& block = w.contactBlocks[k];
+        ContactBlock& block = w.scratch.contactBlocks[k];
         BodyLanes<Float4> a = gatherBodies(states, block.bodyA);
         BodyLanes<Float4> b = gatherBodies(states, block.bodyB);
         rows(block.rows, a, b);
@@ -48,8 +48,8 @@ void forContacts(World::Impl& w, int begin, int end, bool overflow, Rows rows) {
         scatterVelocities(states, block.bodyB, b);
     }
     if (!overflow) return;
-    for (int index : w.overflowConstraints) {
-        ContactConstraint& c = w.constraints[index];
+    for (int index : w.scratch.overflowConstraints) {
+        ContactConstraint& c = w.scratch.constraints[index];
         rows(c, states[c.indexA], states[c.indexB]);
     }
 }
@@ -67,36 +67,37 @@ void passContacts(World::Impl& w, const StepContext& ctx, RowPass pass, int begi
 // Colour the constraints in order, then lay them out colour by colour (Box2D v3's solve order:
 // it keeps stacks as stiff as the plain constraint order does), four to a block; overflow last.
 void prepareContactBlocks(World::Impl& w) {
+    StepScratch& s = w.scratch;
     constexpr int overflow = GraphColoring::overflow;
-    const int count = static_cast<int>(w.constraints.size());
-    w.contactColoring.reset(static_cast<int>(w.states.size()));
-    w.contactColors.resize(w.constraints.size());
+    const int count = static_cast<int>(s.constraints.size());
+    s.contactColoring.reset(static_cast<int>(s.states.size()));
+    s.contactColors.resize(s.constraints.size());
     for (int index = 0; index < count; ++index) {
-        const auto [slotA, slotB] = w.constraintSlots[index];
-        w.contactColors[index] = w.contactColoring.assign(slotA, slotB);
+        const auto [slotA, slotB] = s.constraintSlots[index];
+        s.contactColors[index] = s.contactColoring.assign(slotA, slotB);
     }
-    const ColorStarts start = sortByColor(w.contactColors, w.contactOrder);
+    const ColorStarts start = sortByColor(s.contactColors, s.contactOrder);
 
     // Blocks of four constraints of one colour; the last block of a colour may have empty lanes.
-    w.contactBlockStart[0] = 0;
+    s.contactBlockStart[0] = 0;
     for (int color = 0; color <= overflow; ++color)
-        w.contactBlockStart[color + 1] =
-            w.contactBlockStart[color] + (color < overflow ? (start[color + 1] - start[color] + 3) / 4 : 0);
-    const int blocks = w.contactBlockStart[overflow];
-    w.contactBlocks.resize(static_cast<size_t>(blocks));  // reused memory: every field is rewritten
+        s.contactBlockStart[color + 1] =
+            s.contactBlockStart[color] + (color < overflow ? (start[color + 1] - start[color] + 3) / 4 : 0);
+    const int blocks = s.contactBlockStart[overflow];
+    s.contactBlocks.resize(static_cast<size_t>(blocks));  // reused memory: every field is rewritten
     static const ContactRows<float> emptyLane;  // no mass, no impulse: leaves the bodies alone
     // Block b of colour c holds the constraints contactOrder[start[c] + 4 (b − blockStart[c]) ...].
     w.workers.parallelFor(blocks, 32, [&](int begin, int stop, int) {
-        int color = static_cast<int>(std::upper_bound(w.contactBlockStart.begin(), w.contactBlockStart.end(), begin) -
-                                     w.contactBlockStart.begin()) - 1;
+        int color = static_cast<int>(std::upper_bound(s.contactBlockStart.begin(), s.contactBlockStart.end(), begin) -
+                                     s.contactBlockStart.begin()) - 1;
         for (int b = begin; b < stop; ++b) {
-            while (b >= w.contactBlockStart[color + 1]) ++color;
-            ContactBlock& block = w.contactBlocks[b];
+            while (b >= s.contactBlockStart[color + 1]) ++color;
+            ContactBlock& block = s.contactBlocks[b];
             std::array<const ContactRows<float>*, 4> lanes;
             for (int lane = 0; lane < 4; ++lane) {
-                const int position = start[color] + 4 * (b - w.contactBlockStart[color]) + lane;
-                const int index = position < start[color + 1] ? w.contactOrder[position] : -1;
-                const ContactConstraint* c = index < 0 ? nullptr : &w.constraints[index];
+                const int position = start[color] + 4 * (b - s.contactBlockStart[color]) + lane;
+                const int index = position < start[color + 1] ? s.contactOrder[position] : -1;
+                const ContactConstraint* c = index < 0 ? nullptr : &s.constraints[index];
                 block.constraint[lane] = index;
                 block.bodyA[lane] = c ? c->indexA : 0;
                 block.bodyB[lane] = c ? c->indexB : 0;
@@ -105,15 +106,15 @@ void prepareContactBlocks(World::Impl& w) {
             packContactRows(lanes, block.rows);
         }
     });
-    w.overflowConstraints.assign(w.contactOrder.begin() + start[overflow], w.contactOrder.end());
+    s.overflowConstraints.assign(s.contactOrder.begin() + start[overflow], s.contactOrder.end());
 }
 
 int contactBlockCount(const World::Impl& w, int color) {
-    return w.contactBlockStart[color + 1] - w.contactBlockStart[color];
+    return w.scratch.contactBlockStart[color + 1] - w.scratch.contactBlockStart[color];
 }
 
 void contactRows(World::Impl& w, const StepContext& ctx, RowPass pass, int color, int begin, int end) {
-    const int first = w.contactBlockStart[color];
+    const int first = w.scratch.contactBlockStart[color];
     passContacts(w, ctx, pass, first + begin, first + end, false);
 }
 
@@ -132,7 +133,7 @@ void unpackContactBlock(World::Impl& w, const ContactBlock& block) {
     }
     for (int lane = 0; lane < 4; ++lane) {
         if (block.constraint[lane] < 0) continue;
-        ContactConstraint& c = w.constraints[block.constraint[lane]];
+        ContactConstraint& c = w.scratch.constraints[block.constraint[lane]];
         c.rollingImpulse = rolling[lane];
         for (int i = 0; i < c.pointCount; ++i) {
             c.points[i].normalImpulse = normal[i][lane];
@@ -145,8 +146,8 @@ void unpackContactBlock(World::Impl& w, const ContactBlock& block) {
 }  // namespace
 
 void unpackContactBlocks(World::Impl& w) {
-    w.workers.parallelFor(static_cast<int>(w.contactBlocks.size()), 64, [&](int begin, int end, int) {
-        for (int k = begin; k < end; ++k) unpackContactBlock(w, w.contactBlocks[k]);
+    w.workers.parallelFor(static_cast<int>(w.scratch.contactBlocks.size()), 64, [&](int begin, int end, int) {
+        for (int k = begin; k < end; ++k) unpackContactBlock(w, w.scratch.contactBlocks[k]);
     });
 }
 

@@ -48,7 +48,7 @@ void World::Impl::reportTouch(const Contact& c, bool begin) {
 // approached faster than the threshold and actually pushed (λn > 0 at some substep).
 void reportHitEvents(World::Impl& w) {
     if (!w.anyHitEvents) return;
-    for (const ContactConstraint& c : w.constraints) {
+    for (const ContactConstraint& c : w.scratch.constraints) {
         const Contact& contact = w.contactCache.contacts[c.contact];
         if (!w.shapes[contact.a.shape].enableHitEvents && !w.shapes[contact.b.shape].enableHitEvents) continue;
         ContactHitEvent event{w.shapeId(contact.a.shape), w.shapeId(contact.b.shape), {}, c.normal, w.def.hitEventThreshold};

@@ -121,7 +121,7 @@ void prepareJoint(PreparedJoint& j, const World::Impl& w, const Joint& joint, co
 template <class Wide, class Scalar>
 void forJointUnits(World::Impl& w, int color, int begin, int end, Wide wide, Scalar scalar) {
     JointStore& s = store(w);
-    std::vector<BodyState>& states = w.states;
+    std::vector<BodyState>& states = w.scratch.states;
     const int blocks = s.blockStart[color + 1] - s.blockStart[color];
     for (int unit = begin; unit < std::min(end, blocks); ++unit) {
         RevoluteBlock& block = s.revoluteBlocks[s.blockStart[color] + unit];
@@ -136,7 +136,7 @@ void forJointUnits(World::Impl& w, int color, int begin, int end, Wide wide, Sca
     for (int unit = std::max(begin, blocks); unit < end; ++unit) {
         PreparedJoint& j = s.prepared[s.scalarOrder[s.scalarStart[color] + unit - blocks]];
         JointPair p = pairOf(j.indexA == 0 ? fixed : states[j.indexA], j.indexB == 0 ? fixed : states[j.indexB],
-                             w.stepRotation, j);
+                             w.scratch.stepRotation, j);
         scalar(j, p);
     }
 }
@@ -191,7 +191,7 @@ void prepareJoints(World::Impl& w, const StepContext& ctx) {
             prepareJoint(s.prepared[k], w, s.joints[index], ctx);
         });
 
-    s.coloring.reset(static_cast<int>(w.states.size()));
+    s.coloring.reset(static_cast<int>(w.scratch.states.size()));
     std::array<int, overflow + 1> laneCount{}, scalarCount{};
     for (int k = 0; k < count; ++k) {
         const PreparedJoint& j = s.prepared[k];
@@ -199,7 +199,7 @@ void prepareJoints(World::Impl& w, const StepContext& ctx) {
         ++(inLanes(s.colors[k], j) ? laneCount[s.colors[k]] : scalarCount[s.colors[k]]);
     }
     // Joints of revolute trees leave the colours: they are solved directly (joint_tree.hpp).
-    findRevoluteTrees(s.trees, s.prepared, static_cast<int>(w.states.size()));
+    findRevoluteTrees(s.trees, s.prepared, static_cast<int>(w.scratch.states.size()));
     for (int k : s.trees.joints) --(inLanes(s.colors[k], s.prepared[k]) ? laneCount[s.colors[k]] : scalarCount[s.colors[k]]);
 
     for (int color = 0; color <= overflow; ++color) {

@@ -49,8 +49,8 @@ void World::step(float timeStep) {
     prepareContacts(w, ctx);
     // Per substep: its forces, warm start, solve with soft bias, x += hs v, relax without bias
     // (solver_stages.hpp: the rows colour by colour, on the workers).
-    w.solverStages.build(w);
-    w.solverStages.run(w, ctx);
+    w.scratch.solverStages.build(w);
+    w.scratch.solverStages.run(w, ctx);
     projectJoints(w);  // project: the anchors of revolute trees meet again
     unpackContactBlocks(w);
     applyRestitution(w, ctx);  // restitution: Hecker's bounce, once per step
