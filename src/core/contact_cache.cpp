@@ -151,7 +151,7 @@ void updatePairs(World::Impl& w) {
         std::vector<NewPair>& found = cache.newPairsOf[static_cast<size_t>(worker)];
         for (int k = begin; k < end; ++k) {
             const int proxy = w.movedProxies[k];
-            if (w.pairsWithNothing(w.shapes[collision.proxyKey(proxy).shape].filter)) continue;
+            if (w.shapes.pairsWithNothing(w.shapes[collision.proxyKey(proxy).shape].filter)) continue;
             collision.query(collision.fatAABB(proxy), [&](int other) {
                 // When both moved, only the pair's lower proxy reports it. Pairs that have a contact
                 // are most of what a large moving proxy finds: they are dropped here, before the sort.

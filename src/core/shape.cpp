@@ -105,11 +105,11 @@ int World::Impl::addShape(BodyId bodyId, const ShapeDef& def) {
     s.sensor = def.sensor;
     s.enableContactEvents = def.enableContactEvents;
     s.enableHitEvents = def.enableHitEvents;
-    anyHitEvents = anyHitEvents || def.enableHitEvents;
+    shapes.anyHitEvents = shapes.anyHitEvents || def.enableHitEvents;
     s.enableSensorEvents = def.enableSensorEvents;
     s.enablePreSolveEvents = def.enablePreSolveEvents;
     s.filter = def.filter;
-    noteFilter(def.filter);
+    shapes.noteFilter(def.filter);
     s.userData = def.userData;
     bodies[bodyId.index].shapes.push_back(index);
     return index;

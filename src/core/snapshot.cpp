@@ -287,7 +287,7 @@ std::vector<uint8_t> writeSnapshot(const World::Impl& w, bool futureOnly) {
     out.u32(formatVersion);
     writeFields(out, w.def);
     out.u32(static_cast<uint32_t>(w.frozenBodies));
-    out.boolean(w.anyHitEvents);
+    out.boolean(w.shapes.anyHitEvents);
 
     out.u32(static_cast<uint32_t>(w.bodies.capacity()));
     for (int i = 0; i < w.bodies.capacity(); ++i) {
@@ -336,7 +336,7 @@ void World::restore(std::span<const uint8_t> bytes) {
     auto fresh = std::make_unique<Impl>(readDef(in));  // one worker: the snapshot holds no threads
     Impl& w = *fresh;
     w.frozenBodies = in.integer(0, 0x7FFFFFFF, "frozen body count");
-    w.anyHitEvents = in.boolean();
+    w.shapes.anyHitEvents = in.boolean();
 
     // Bodies, with their contact lists kept aside until the contacts are read.
     const int bodyCount = in.count(5, "body");
@@ -363,7 +363,7 @@ void World::restore(std::span<const uint8_t> bytes) {
         s.alive = shapeAlive[i] = in.boolean();
         if (!s.alive) continue;
         readShape(in, s, savedProxies[i], bodyCount);
-        w.noteFilter(s.filter);
+        w.shapes.noteFilter(s.filter);
         if (!bodyAlive[s.body]) in.fail("shape " + std::to_string(i) + " belongs to a dead body");
     }
     w.shapes.restoreFreeList(readFreeList(in, shapeAlive, "free shape"));
