@@ -5,6 +5,7 @@
 // snapshots save each list as its keys, front first.
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 namespace perpdot {
