@@ -23,13 +23,7 @@ Body& World::Impl::body(BodyId id) {
     return const_cast<Body&>(static_cast<const Impl*>(this)->body(id));
 }
 
-const Body& World::Impl::body(BodyId id) const {
-    if (id.index < 0 || static_cast<size_t>(id.index) >= bodies.size() || !bodies[id.index].alive ||
-        bodies[id.index].generation != id.generation)
-        throw Error("stale or invalid BodyId (index " + std::to_string(id.index) + ", generation " +
-                    std::to_string(id.generation) + ")");
-    return bodies[id.index];
-}
+const Body& World::Impl::body(BodyId id) const { return bodies.checked(id.index, id.generation, "BodyId"); }
 
 void World::Impl::checkUnlocked(const char* what) const {
     if (locked) throw Error(std::string(what) + ": the world cannot be changed during step()");
@@ -91,19 +85,8 @@ BodyId World::createBody(const BodyDef& def) {
     if (!(def.linearDamping >= 0.0f && std::isfinite(def.linearDamping))) throw Error("BodyDef.linearDamping must be finite and >= 0");
     if (!(def.angularDamping >= 0.0f && std::isfinite(def.angularDamping))) throw Error("BodyDef.angularDamping must be finite and >= 0");
 
-    int index;
-    if (!w.freeBodies.empty()) {
-        index = w.freeBodies.back();
-        w.freeBodies.pop_back();
-    } else {
-        index = static_cast<int>(w.bodies.size());
-        w.bodies.emplace_back();
-    }
+    const int index = w.bodies.create();
     Body& b = w.bodies[index];
-    const uint32_t generation = b.generation;
-    b = Body{};
-    b.generation = generation;
-    b.alive = true;
     b.type = def.type;
     b.angle = def.angle;
     b.xf = {def.position, Rot::fromAngle(def.angle)};
@@ -130,33 +113,25 @@ void World::destroyBody(BodyId id) {
     Body& b = w.body(id);
     destroyJointsOf(w, id.index);
     w.wake(id.index);  // its island mates lose a support
-    w.destroyContactsOf(id.index, -1);
+    destroyContactsOf(w, id.index, -1);
     for (int s : b.shapes) {
         w.destroyProxies(s);
         w.collision.clearGeometry(s);
-        w.shapes[s].alive = false;
-        ++w.shapes[s].generation;
-        w.freeShapes.push_back(s);
+        w.shapes.destroy(s);
     }
     b.shapes.clear();
-    b.alive = false;
-    ++b.generation;
-    w.freeBodies.push_back(id.index);
+    w.bodies.destroy(id.index);
 }
 
-bool World::isValid(BodyId id) const {
-    return id.index >= 0 && static_cast<size_t>(id.index) < impl_->bodies.size() && impl_->bodies[id.index].alive &&
-           impl_->bodies[id.index].generation == id.generation;
-}
+bool World::isValid(BodyId id) const { return impl_->bodies.isValid(id.index, id.generation); }
 
 std::vector<BodyId> World::bodies() const {
     std::vector<BodyId> ids;
-    for (int i = 0; i < static_cast<int>(impl_->bodies.size()); ++i)
-        if (impl_->bodies[i].alive) ids.push_back(impl_->bodyId(i));
+    impl_->bodies.forEachLive([&](int i, const Body&) { ids.push_back(impl_->bodyId(i)); });
     return ids;
 }
 
-int World::bodyCount() const { return static_cast<int>(impl_->bodies.size() - impl_->freeBodies.size()); }
+int World::bodyCount() const { return impl_->bodies.size(); }
 
 BodyType World::bodyType(BodyId id) const { return impl_->body(id).type; }
 Vec2 World::position(BodyId id) const { return impl_->body(id).xf.p; }

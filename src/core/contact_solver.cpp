@@ -19,8 +19,8 @@ float invEffectiveMass(const ContactConstraint& c, Vec2 rA, Vec2 rB, Vec2 d) {
 // included: in the discrete fall a ball hits the ground with that speed, and an e = 1 bounce then
 // climbs exactly as many steps as it fell (docs/stress.md).
 BodyState velocityWithoutContact(const World::Impl& w, const StepContext& ctx, int slot) {
-    BodyState s = w.states[slot];
-    const SubstepForces& f = w.substepForces[slot];
+    BodyState s = w.scratch.states[slot];
+    const SubstepForces& f = w.scratch.substepForces[slot];
     s.v += static_cast<float>(ctx.substeps) * f.dv;
     s.w += static_cast<float>(ctx.substeps) * f.dw;
     return s;
@@ -32,7 +32,7 @@ namespace {
 
 // The constraint of a touching contact: masses, softness, anchors and effective masses.
 void prepareContact(const World::Impl& w, const StepContext& ctx, ContactConstraint& c) {
-    const Contact& contact = w.contacts[c.contact];
+    const Contact& contact = w.contactCache.contacts[c.contact];
     const Body& ba = w.bodies[contact.bodyA];
     const Body& bb = w.bodies[contact.bodyB];
     c.indexA = ba.solverIndex;
@@ -83,25 +83,26 @@ void prepareContact(const World::Impl& w, const StepContext& ctx, ContactConstra
 
 // The touching contacts with an awake body, in pool order, selected and prepared by the workers.
 void prepareContacts(World::Impl& w, const StepContext& ctx) {
+    StepScratch& s = w.scratch;
     auto constrains = [&](int index) {
-        const Contact& contact = w.contacts[index];
+        const Contact& contact = w.contactCache.contacts[index];
         return contact.alive && contact.touching && (w.bodies[contact.bodyA].awake || w.bodies[contact.bodyB].awake);
     };
     w.workers.parallelSelect(
-        static_cast<int>(w.contacts.size()), constrains,
+        w.contactCache.contacts.capacity(), constrains,
         [&](int total) {
-            w.constraints.resize(total);
-            w.constraintSlots.resize(total);
+            s.constraints.resize(total);
+            s.constraintSlots.resize(total);
         },
         [&](int k, int index) {
-            ContactConstraint& c = w.constraints[k];
+            ContactConstraint& c = s.constraints[k];
             c.contact = index;
             prepareContact(w, ctx, c);
-            w.constraintSlots[k] = {c.indexA, c.indexB};
+            s.constraintSlots[k] = {c.indexA, c.indexB};
         });
     w.workers.parallelSelect(
-        static_cast<int>(w.constraints.size()), [&](int k) { return w.constraints[k].restitution != 0.0f; },
-        [&](int total) { w.bouncingConstraints.resize(total); }, [&](int slot, int k) { w.bouncingConstraints[slot] = k; });
+        static_cast<int>(s.constraints.size()), [&](int k) { return s.constraints[k].restitution != 0.0f; },
+        [&](int total) { s.bouncingConstraints.resize(total); }, [&](int slot, int k) { s.bouncingConstraints[slot] = k; });
     prepareContactBlocks(w);
 }
 
@@ -124,14 +125,14 @@ float reboundSpeed(float e, float V, float a, float h) {
 // step without the contact), for approaches faster than the restitution threshold. Runs after
 // storeContactImpulses: the accumulated impulses it adds to are the contact's.
 void applyRestitution(World::Impl& w, const StepContext& ctx) {
-    std::vector<BodyState>& states = w.states;
-    for (int k : w.bouncingConstraints) {
-        const ContactConstraint& c = w.constraints[k];
-        Contact& contact = w.contacts[c.contact];
+    std::vector<BodyState>& states = w.scratch.states;
+    for (int k : w.scratch.bouncingConstraints) {
+        const ContactConstraint& c = w.scratch.constraints[k];
+        Contact& contact = w.contactCache.contacts[c.contact];
         BodyState& a = states[c.indexA];
         BodyState& b = states[c.indexB];
         // The pair's deceleration along n from this step's forces: −(ΔvB − ΔvA)·n / h.
-        const Vec2 dv = w.substepForces[c.indexB].dv - w.substepForces[c.indexA].dv;
+        const Vec2 dv = w.scratch.substepForces[c.indexB].dv - w.scratch.substepForces[c.indexA].dv;
         const float deceleration = -static_cast<float>(ctx.substeps) * dot(dv, c.normal) * ctx.invH;
         for (int i = 0; i < c.pointCount; ++i) {
             const ContactPointRows<float>& cp = c.points[i];

@@ -48,9 +48,9 @@ namespace {
 // constraint when overflow is set.
 template <class Rows>
 void forContacts(World::Impl& w, int begin, int end, bool overflow, Rows rows) {
-    std::vector<BodyState>& states = w.states;
+    std::vector<BodyState>& states = w.scratch.states;
     for (int k = begin; k < end; ++k) {
-        ContactBlock& block = w.contactBlocks[k];
+        ContactBlock& block = w.scratch.contactBlocks[k];
         BodyLanes<Float4> a = gatherBodies(states, block.bodyA);
         BodyLanes<Float4> b = gatherBodies(states, block.bodyB);
         rows(block.rows, a, b);
@@ -58,8 +58,8 @@ void forContacts(World::Impl& w, int begin, int end, bool overflow, Rows rows) {
         scatterVelocities(states, block.bodyB, b);
     }
     if (!overflow) return;
-    for (int index : w.overflowConstraints) {
-        ContactConstraint& c = w.constraints[index];
+    for (int index : w.scratch.overflowConstraints) {
+        ContactConstraint& c = w.scratch.constraints[index];
         rows(c, states[c.indexA], states[c.indexB]);
     }
 }
@@ -83,24 +83,24 @@ template <class Block, class Pack>
 void layOutBlocks(World::Impl& w, const ColorStarts& start, std::vector<Block>& blocks, Pack pack) {
     constexpr int overflow = GraphColoring::overflow;
     constexpr int width = Block::lanes;
-    w.contactBlockStart[0] = 0;
+    w.scratch.contactBlockStart[0] = 0;
     for (int color = 0; color <= overflow; ++color)
-        w.contactBlockStart[color + 1] =
-            w.contactBlockStart[color] + (color < overflow ? (start[color + 1] - start[color] + width - 1) / width : 0);
-    blocks.resize(static_cast<size_t>(w.contactBlockStart[overflow]));  // reused memory: every field is rewritten
+        w.scratch.contactBlockStart[color + 1] =
+            w.scratch.contactBlockStart[color] + (color < overflow ? (start[color + 1] - start[color] + width - 1) / width : 0);
+    blocks.resize(static_cast<size_t>(w.scratch.contactBlockStart[overflow]));  // reused memory: every field is rewritten
     static const ContactRows<float> emptyLane;  // no mass, no impulse: leaves the bodies alone
     // Block b of colour c holds the constraints contactOrder[start[c] + width (b − blockStart[c]) ...].
     w.workers.parallelFor(static_cast<int>(blocks.size()), 128 / width, [&](int begin, int stop, int) {
-        int color = static_cast<int>(std::upper_bound(w.contactBlockStart.begin(), w.contactBlockStart.end(), begin) -
-                                     w.contactBlockStart.begin()) - 1;
+        int color = static_cast<int>(std::upper_bound(w.scratch.contactBlockStart.begin(), w.scratch.contactBlockStart.end(), begin) -
+                                     w.scratch.contactBlockStart.begin()) - 1;
         for (int b = begin; b < stop; ++b) {
-            while (b >= w.contactBlockStart[color + 1]) ++color;
+            while (b >= w.scratch.contactBlockStart[color + 1]) ++color;
             Block& block = blocks[b];
             const ContactRows<float>* lanes[width];
             for (int lane = 0; lane < width; ++lane) {
-                const int position = start[color] + width * (b - w.contactBlockStart[color]) + lane;
-                const int index = position < start[color + 1] ? w.contactOrder[position] : -1;
-                const ContactConstraint* c = index < 0 ? nullptr : &w.constraints[index];
+                const int position = start[color] + width * (b - w.scratch.contactBlockStart[color]) + lane;
+                const int index = position < start[color + 1] ? w.scratch.contactOrder[position] : -1;
+                const ContactConstraint* c = index < 0 ? nullptr : &w.scratch.constraints[index];
                 block.contact[lane] = c ? c->contact : -1;
                 block.bodyA[lane] = c ? c->indexA : 0;
                 block.bodyB[lane] = c ? c->indexB : 0;
@@ -117,36 +117,37 @@ void layOutBlocks(World::Impl& w, const ColorStarts& start, std::vector<Block>& 
 // it keeps stacks as stiff as the plain constraint order does), four or eight to a block; overflow
 // last. The lane width changes no result: a colour's constraints share no moving body.
 void prepareContactBlocks(World::Impl& w) {
+    StepScratch& s = w.scratch;
     constexpr int overflow = GraphColoring::overflow;
-    const int count = static_cast<int>(w.constraints.size());
-    w.contactColoring.reset(static_cast<int>(w.states.size()));
-    w.contactColors.resize(w.constraints.size());
+    const int count = static_cast<int>(s.constraints.size());
+    s.contactColoring.reset(static_cast<int>(s.states.size()));
+    s.contactColors.resize(s.constraints.size());
     for (int index = 0; index < count; ++index) {
-        const auto [slotA, slotB] = w.constraintSlots[index];
-        w.contactColors[index] = w.contactColoring.assign(slotA, slotB);
+        const auto [slotA, slotB] = s.constraintSlots[index];
+        s.contactColors[index] = s.contactColoring.assign(slotA, slotB);
     }
-    const ColorStarts start = sortByColor(w.contactColors, w.contactOrder);
+    const ColorStarts start = sortByColor(w.scratch.contactColors, w.scratch.contactOrder);
 #ifdef PERPDOT_AVX2
-    if (w.contactLanes == 8)
-        layOutBlocks(w, start, w.contactBlocks8, [](const ContactRows<float>* const (&lanes)[8], ContactBlock8& block) {
+    if (w.scratch.contactLanes == 8)
+        layOutBlocks(w, start, w.scratch.contactBlocks8, [](const ContactRows<float>* const (&lanes)[8], ContactBlock8& block) {
             packContactRows8(lanes, block);
         });
     else
 #endif
-        layOutBlocks(w, start, w.contactBlocks, [](const ContactRows<float>* const (&lanes)[4], ContactBlock& block) {
+        layOutBlocks(w, start, w.scratch.contactBlocks, [](const ContactRows<float>* const (&lanes)[4], ContactBlock& block) {
             packContactRows(lanes, block.rows);
         });
-    w.overflowConstraints.assign(w.contactOrder.begin() + start[overflow], w.contactOrder.end());
+    w.scratch.overflowConstraints.assign(w.scratch.contactOrder.begin() + start[overflow], w.scratch.contactOrder.end());
 }
 
 int contactBlockCount(const World::Impl& w, int color) {
-    return w.contactBlockStart[color + 1] - w.contactBlockStart[color];
+    return w.scratch.contactBlockStart[color + 1] - w.scratch.contactBlockStart[color];
 }
 
 void contactRows(World::Impl& w, const StepContext& ctx, RowPass pass, int color, int begin, int end) {
-    const int first = w.contactBlockStart[color];
+    const int first = w.scratch.contactBlockStart[color];
 #ifdef PERPDOT_AVX2
-    if (w.contactLanes == 8) return contactRows8(w.contactBlocks8.data(), first + begin, first + end, w.states.data(), ctx, pass);
+    if (w.scratch.contactLanes == 8) return contactRows8(w.scratch.contactBlocks8.data(), first + begin, first + end, w.scratch.states.data(), ctx, pass);
 #endif
     passContacts(w, ctx, pass, first + begin, first + end, false);
 }
@@ -170,7 +171,7 @@ void storeBlockImpulses(World::Impl& w, const Block& block) {
     for (int lane = 0; lane < Block::lanes; ++lane) {
         if (block.contact[lane] < 0) continue;
         auto field = [&](std::size_t index) { return rows[index * Block::lanes + static_cast<std::size_t>(lane)]; };
-        Contact& contact = w.contacts[block.contact[lane]];
+        Contact& contact = w.contactCache.contacts[block.contact[lane]];
         contact.rollingImpulse = field(rollingField);
         for (int i = 0; i < contact.pointCount; ++i) {
             ContactPointState& stored = contact.points[i];
@@ -194,13 +195,13 @@ void storeBlocks(World::Impl& w, const std::vector<Block>& blocks) {
 // constraints' from their rows (a contact has one constraint: the workers write apart).
 void storeContactImpulses(World::Impl& w) {
 #ifdef PERPDOT_AVX2
-    if (w.contactLanes == 8) storeBlocks(w, w.contactBlocks8);
+    if (w.scratch.contactLanes == 8) storeBlocks(w, w.scratch.contactBlocks8);
     else
 #endif
-        storeBlocks(w, w.contactBlocks);
-    for (int index : w.overflowConstraints) {
-        const ContactConstraint& c = w.constraints[index];
-        Contact& contact = w.contacts[c.contact];
+        storeBlocks(w, w.scratch.contactBlocks);
+    for (int index : w.scratch.overflowConstraints) {
+        const ContactConstraint& c = w.scratch.constraints[index];
+        Contact& contact = w.contactCache.contacts[c.contact];
         contact.rollingImpulse = c.rollingImpulse;
         for (int i = 0; i < c.pointCount; ++i) {
             contact.points[i].normalImpulse = c.points[i].normalImpulse;

@@ -92,8 +92,11 @@ void applyImpulse(Mover& a, const Body& ba, Mover& b, const Body& bb, const Impa
 // Movers and pairs: the fast movers are in `movers` already; the bodies their swept boxes meet
 // are added, and every pair with a bullet in it is listed once.
 void World::Impl::collectMoverPairs() {
+    std::vector<Mover>& movers = scratch.movers;
+    std::vector<MoverPair>& moverPairs = scratch.moverPairs;
+    std::vector<int>& moverOfBody = scratch.moverOfBody;
     moverPairs.clear();
-    moverOfBody.assign(bodies.size(), -1);
+    moverOfBody.assign(bodies.capacity(), -1);
     const int fastCount = static_cast<int>(movers.size());
     for (int i = 0; i < fastCount; ++i) {
         Mover& m = movers[i];
@@ -121,9 +124,9 @@ void World::Impl::collectMoverPairs() {
             int m = moverOfBody[other];
             if (m >= 0 && m < fastCount) return true;  // fast against fast: below
             if (m < 0) {
-                const BodyState& s = states[o.solverIndex];  // slot 0 (asleep): no motion
+                const BodyState& s = scratch.states[o.solverIndex];  // slot 0 (asleep): no motion
                 const Vec2 c0 = o.center - s.dp;
-                const float a0 = o.angle - stepRotation[o.solverIndex];
+                const float a0 = o.angle - scratch.stepRotation[o.solverIndex];
                 m = static_cast<int>(movers.size());
                 movers.push_back({.body = other, .c0 = c0, .c1 = o.center, .a0 = a0, .a1 = o.angle, .v = o.v,
                                   .w = o.w, .stepStart = c0});
@@ -146,6 +149,7 @@ void World::Impl::collectMoverPairs() {
 
 // The pair's first time of impact after step time t (1: none), and the children that meet.
 void World::Impl::pairImpact(MoverPair& pair, float t) const {
+    const std::vector<Mover>& movers = scratch.movers;
     const Mover& a = movers[pair.a];
     const Mover& b = movers[pair.b];
     const Body& ba = bodies[a.body];
@@ -184,6 +188,7 @@ void World::Impl::pairImpact(MoverPair& pair, float t) const {
 // The impact of the pair at step time t: Hecker's impulse at the manifold's points, the pair
 // moved back to first touch, and new paths for the rest of the step.
 void World::Impl::resolveImpact(const MoverPair& pair, float t, float h) {
+    std::vector<Mover>& movers = scratch.movers;
     Mover& a = movers[pair.a];
     Mover& b = movers[pair.b];
     const Body& ba = bodies[a.body];
@@ -250,6 +255,8 @@ void World::Impl::resolveImpact(const MoverPair& pair, float t, float h) {
 
 void World::Impl::solveMovingImpacts(float h) {
     collectMoverPairs();
+    std::vector<Mover>& movers = scratch.movers;
+    std::vector<MoverPair>& moverPairs = scratch.moverPairs;
     for (Mover& m : movers) m.sweepStatic = m.fast && bodies[m.body].bullet;  // the others were swept already
     float now = 0.0f;
     const int maxImpacts = impactsPerMover * static_cast<int>(movers.size() + moverPairs.size());

@@ -47,9 +47,9 @@ void World::Impl::reportTouch(const Contact& c, bool begin) {
 // After the solve: a hit for every touching contact with hit events whose fastest point
 // approached faster than the threshold and actually pushed (λn > 0 at some substep).
 void reportHitEvents(World::Impl& w) {
-    if (!w.anyHitEvents) return;
-    for (const ContactConstraint& c : w.constraints) {
-        const Contact& contact = w.contacts[c.contact];
+    if (!w.shapes.anyHitEvents) return;
+    for (const ContactConstraint& c : w.scratch.constraints) {
+        const Contact& contact = w.contactCache.contacts[c.contact];
         if (!w.shapes[contact.a.shape].enableHitEvents && !w.shapes[contact.b.shape].enableHitEvents) continue;
         ContactHitEvent event{w.shapeId(contact.a.shape), w.shapeId(contact.b.shape), {}, c.normal, w.def.hitEventThreshold};
         bool hit = false;

@@ -18,9 +18,10 @@ namespace {
 // Marks the bodies with a touching contact: one pass over the contact pool, rather than a walk of
 // each body's contact list (a turning container has thousands, most of them not touching).
 void markTouching(World::Impl& w) {
-    w.touchingBodies.assign(w.bodies.size(), 0);
-    for (const Contact& c : w.contacts)
-        if (c.alive && c.touching) w.touchingBodies[c.bodyA] = w.touchingBodies[c.bodyB] = 1;
+    w.scratch.touchingBodies.assign(w.bodies.capacity(), 0);
+    w.contactCache.contacts.forEachLive([&](int, const Contact& c) {
+        if (c.touching) w.scratch.touchingBodies[c.bodyA] = w.scratch.touchingBodies[c.bodyB] = 1;
+    });
 }
 
 }  // namespace
@@ -28,30 +29,30 @@ void markTouching(World::Impl& w) {
 // Gather awake bodies into the solver arrays and integrate forces: whole step for free bodies,
 // substep pieces (SubstepForces) for constrained ones.
 void integrateVelocities(World::Impl& w, const StepContext& ctx) {
-    w.awakeBodies.clear();
+    w.scratch.awakeBodies.clear();
     markTouching(w);
-    for (int i = 0; i < static_cast<int>(w.bodies.size()); ++i) {
+    for (int i = 0; i < w.bodies.capacity(); ++i) {
         Body& b = w.bodies[i];
         b.solverIndex = 0;
         if (!b.alive || b.type == BodyType::Static || !b.awake) continue;
-        w.awakeBodies.push_back(i);
-        b.solverIndex = static_cast<int>(w.awakeBodies.size());
+        w.scratch.awakeBodies.push_back(i);
+        b.solverIndex = static_cast<int>(w.scratch.awakeBodies.size());
     }
-    const int count = static_cast<int>(w.awakeBodies.size());
-    w.states.resize(static_cast<size_t>(count) + 1);
-    w.states[0] = BodyState{};
-    w.substepForces.resize(static_cast<size_t>(count) + 1);
-    w.substepForces[0] = SubstepForces{};
+    const int count = static_cast<int>(w.scratch.awakeBodies.size());
+    w.scratch.states.resize(static_cast<size_t>(count) + 1);
+    w.scratch.states[0] = BodyState{};
+    w.scratch.substepForces.resize(static_cast<size_t>(count) + 1);
+    w.scratch.substepForces[0] = SubstepForces{};
     w.workers.parallelFor(count, 256, [&](int begin, int end, int) {
         for (int k = begin; k < end; ++k) {
-            const int i = w.awakeBodies[k];
+            const int i = w.scratch.awakeBodies[k];
             const Body& b = w.bodies[i];
             Vec2 v = b.v;
             float omega = b.w;
             SubstepForces f;
             if (b.type == BodyType::Dynamic) {
                 const Vec2 force = (b.gravityScale * b.mass) * w.def.gravity + b.force;
-                if (b.jointCount > 0 || w.touchingBodies[i]) {
+                if (b.jointCount > 0 || w.scratch.touchingBodies[i]) {
                     f.dv = (ctx.hs * b.invMass) * force;
                     f.dw = ctx.hs * b.invInertia * b.torque;
                     f.linearDamping = 1.0f / (1.0f + ctx.hs * b.linearDamping);
@@ -64,17 +65,17 @@ void integrateVelocities(World::Impl& w, const StepContext& ctx) {
                     omega *= 1.0f / (1.0f + ctx.h * b.angularDamping);
                 }
             }
-            w.states[k + 1] = {v, omega, {}, {}};
-            w.substepForces[k + 1] = f;
+            w.scratch.states[k + 1] = {v, omega, {}, {}};
+            w.scratch.substepForces[k + 1] = f;
         }
     });
-    w.stepRotation.assign(w.states.size(), 0.0f);
+    w.scratch.stepRotation.assign(w.scratch.states.size(), 0.0f);
 }
 
 void applySubstepForces(World::Impl& w, int begin, int end) {
     for (int i = begin; i < end; ++i) {
-        BodyState& s = w.states[i];
-        const SubstepForces& f = w.substepForces[i];
+        BodyState& s = w.scratch.states[i];
+        const SubstepForces& f = w.scratch.substepForces[i];
         s.v = f.dv + f.linearDamping * s.v;
         s.w = f.dw + f.angularDamping * s.w;
     }
@@ -101,11 +102,11 @@ void integratePositions(World::Impl& w, const StepContext& ctx, int begin, int e
     const float maxLinearSpeed = w.def.maxLinearSpeed;
     const float maxAngularSpeed = 0.25f * pi * ctx.invHs;
     for (int i = begin; i < end; ++i) {
-        BodyState& s = w.states[i];
+        BodyState& s = w.scratch.states[i];
         s.v = clampSpeed(s.v, maxLinearSpeed);
         if (s.w * s.w > maxAngularSpeed * maxAngularSpeed) s.w *= maxAngularSpeed / std::fabs(s.w);
         s.dp += ctx.hs * s.v;
-        w.stepRotation[i] += ctx.hs * s.w;
+        w.scratch.stepRotation[i] += ctx.hs * s.w;
         s.dq = integrateRotation(s.dq, ctx.hs * s.w);
     }
 }
@@ -126,34 +127,34 @@ void finalizeBodies(World::Impl& w, float h) {
         b.angle = a1;
         b.xf = b.derivedTransform();
     };
-    const int count = static_cast<int>(w.awakeBodies.size());
-    w.bodyMotion.resize(static_cast<size_t>(count));
+    const int count = static_cast<int>(w.scratch.awakeBodies.size());
+    w.scratch.bodyMotion.resize(static_cast<size_t>(count));
     w.workers.parallelFor(count, 256, [&](int begin, int end, int) {
         for (int k = begin; k < end; ++k) {
-            Body& b = w.bodies[w.awakeBodies[k]];
-            const BodyState& s = w.states[k + 1];
-            const float dAngle = w.stepRotation[k + 1];
+            Body& b = w.bodies[w.scratch.awakeBodies[k]];
+            const BodyState& s = w.scratch.states[k + 1];
+            const float dAngle = w.scratch.stepRotation[k + 1];
             if (!isFinite(s.v) || !std::isfinite(s.w) || !isFinite(s.dp) || !std::isfinite(dAngle)) {
-                w.bodyMotion[k] = NonFinite;
+                w.scratch.bodyMotion[k] = NonFinite;
                 continue;
             }
             const Vec2 c1 = b.center + s.dp;
             const float a1 = b.angle + dAngle;
-            if (w.def.enableContinuous && w.isFast(w.awakeBodies[k], b.center, b.angle, c1, a1)) {
-                w.bodyMotion[k] = Fast;
+            if (w.def.enableContinuous && w.isFast(w.scratch.awakeBodies[k], b.center, b.angle, c1, a1)) {
+                w.scratch.bodyMotion[k] = Fast;
                 continue;
             }
             moveTo(b, s, c1, a1);
-            w.bodyMotion[k] = w.proxiesKeep(w.awakeBodies[k], s.dp) ? MovedInside : Moved;
+            w.scratch.bodyMotion[k] = w.proxiesKeep(w.scratch.awakeBodies[k], s.dp) ? MovedInside : Moved;
         }
     });
-    w.movers.clear();
+    w.scratch.movers.clear();
     bool anyBullet = false;
     for (int k = 0; k < count; ++k) {
-        const int index = w.awakeBodies[k];
+        const int index = w.scratch.awakeBodies[k];
         Body& b = w.bodies[index];
-        const BodyState& s = w.states[k + 1];
-        if (w.bodyMotion[k] == NonFinite) {
+        const BodyState& s = w.scratch.states[k + 1];
+        if (w.scratch.bodyMotion[k] == NonFinite) {
             // A body that went non-finite is frozen where it was instead of spreading NaN: stopped,
             // put to sleep until something wakes it, and counted in stats().frozenBodies.
             b.v = {};
@@ -164,24 +165,24 @@ void finalizeBodies(World::Impl& w, float h) {
             continue;
         }
         anyBullet = anyBullet || b.bullet;
-        if (w.bodyMotion[k] == MovedInside) continue;
-        if (w.bodyMotion[k] == Moved) {
+        if (w.scratch.bodyMotion[k] == MovedInside) continue;
+        if (w.scratch.bodyMotion[k] == Moved) {
             w.synchronizeProxies(index, s.dp);
             continue;
         }
         const Vec2 c0 = b.center;
         const float a0 = b.angle;
-        moveTo(b, s, c0 + s.dp, a0 + w.stepRotation[k + 1]);
-        w.movers.push_back({.body = index, .c0 = c0, .a0 = a0, .v = b.v, .w = b.w, .stepStart = c0, .fast = true});
+        moveTo(b, s, c0 + s.dp, a0 + w.scratch.stepRotation[k + 1]);
+        w.scratch.movers.push_back({.body = index, .c0 = c0, .a0 = a0, .v = b.v, .w = b.w, .stepStart = c0, .fast = true});
         if (!b.bullet) {
             w.solveContinuous(index, c0, a0);
             w.synchronizeProxies(index, b.center - c0);
         }
-        w.movers.back().c1 = b.center;
-        w.movers.back().a1 = b.angle;
+        w.scratch.movers.back().c1 = b.center;
+        w.scratch.movers.back().a1 = b.angle;
     }
-    if (anyBullet && !w.movers.empty()) w.solveMovingImpacts(h);
-    for (Body& b : w.bodies) {
+    if (anyBullet && !w.scratch.movers.empty()) w.solveMovingImpacts(h);
+    for (Body& b : w.bodies.slots()) {
         b.force = {};
         b.torque = 0.0f;
     }

@@ -22,52 +22,20 @@ namespace {
 JointStore& store(World::Impl& w) { return *w.joints; }
 const JointStore& store(const World::Impl& w) { return *w.joints; }
 
-int& headOf(JointStore& s, int body) {
-    if (static_cast<size_t>(body) >= s.bodyHead.size()) s.bodyHead.resize(body + 1, -1);
-    return s.bodyHead[body];
-}
-
-int headOf(const JointStore& s, int body) {
-    return static_cast<size_t>(body) < s.bodyHead.size() ? s.bodyHead[body] : -1;
-}
-
-// Edge key (joint*2 + side) -> the joint's edge in that body's list.
-JointEdge& edgeOf(JointStore& s, int key) { return s.joints[key >> 1].edges[key & 1]; }
-
-void linkEdge(JointStore& s, int joint, int side, int body) {
-    const int key = 2 * joint + side;
-    int& head = headOf(s, body);
-    JointEdge& e = edgeOf(s, key);
-    e.prev = -1;
-    e.next = head;
-    if (head >= 0) edgeOf(s, head).prev = key;
-    head = key;
-}
-
-void unlinkEdge(JointStore& s, int joint, int side, int body) {
-    JointEdge& e = edgeOf(s, 2 * joint + side);
-    if (e.prev >= 0) edgeOf(s, e.prev).next = e.next;
-    else headOf(s, body) = e.next;
-    if (e.next >= 0) edgeOf(s, e.next).prev = e.prev;
-    e = {};
-}
-
 // A joint that forbids collision between its bodies removes their contacts.
 void destroyContactsBetween(World::Impl& w, int bodyA, int bodyB) {
-    for (int edge = w.bodies[bodyA].contactHead; edge >= 0;) {
-        const int index = edge >> 1;
-        const int next = w.contacts[index].edges[edge & 1].next;
-        const Contact& c = w.contacts[index];
-        if ((c.bodyA == bodyA && c.bodyB == bodyB) || (c.bodyA == bodyB && c.bodyB == bodyA)) w.destroyContact(index);
-        edge = next;
-    }
+    const ContactCache& cache = w.contactCache;
+    cache.bodyLists.forEach(cache.contacts, bodyA, [&](int index, int) {
+        const Contact& c = cache.contacts[index];
+        if ((c.bodyA == bodyA && c.bodyB == bodyB) || (c.bodyA == bodyB && c.bodyB == bodyA)) destroyContact(w, index);
+    });
 }
 
 void removeJoint(World::Impl& w, int index) {
     JointStore& s = store(w);
     Joint& j = s.joints[index];
-    unlinkEdge(s, index, 0, j.bodyA);
-    unlinkEdge(s, index, 1, j.bodyB);
+    s.bodyLists.unlink(s.joints, index, 0, j.bodyA);
+    s.bodyLists.unlink(s.joints, index, 1, j.bodyB);
     Body& a = w.bodies[j.bodyA];
     Body& b = w.bodies[j.bodyB];
     --a.jointCount;
@@ -78,9 +46,7 @@ void removeJoint(World::Impl& w, int index) {
     if (!j.collideConnected)
         for (int shape : b.shapes)
             for (int proxy : w.shapes[shape].proxies) w.movedProxies.push_back(proxy);
-    j.alive = false;
-    ++j.generation;
-    s.freeList.push_back(index);
+    s.joints.destroy(index);
 }
 
 JointReaction reactionOf(const Joint& j) { return stagesOf(j.type).reaction(j); }
@@ -97,19 +63,8 @@ Joint& addJoint(World::Impl& w, JointType type, BodyId bodyA, BodyId bodyB, Vec2
     requireFinite(std::isfinite(referenceAngle), "referenceAngle");
 
     JointStore& s = store(w);
-    int index;
-    if (!s.freeList.empty()) {
-        index = s.freeList.back();
-        s.freeList.pop_back();
-    } else {
-        index = static_cast<int>(s.joints.size());
-        s.joints.emplace_back();
-    }
+    const int index = s.joints.create();
     Joint& j = s.joints[index];
-    const uint32_t generation = j.generation;
-    j = Joint{};
-    j.generation = generation;
-    j.alive = true;
     j.type = type;
     j.bodyA = bodyA.index;
     j.bodyB = bodyB.index;
@@ -118,8 +73,8 @@ Joint& addJoint(World::Impl& w, JointType type, BodyId bodyA, BodyId bodyB, Vec2
     j.referenceAngle = referenceAngle;
     j.collideConnected = collideConnected;
     j.userData = userData;
-    linkEdge(s, index, 0, j.bodyA);
-    linkEdge(s, index, 1, j.bodyB);
+    s.bodyLists.link(s.joints, index, 0, j.bodyA);
+    s.bodyLists.link(s.joints, index, 1, j.bodyB);
     ++w.bodies[j.bodyA].jointCount;
     ++w.bodies[j.bodyB].jointCount;
     if (!collideConnected) destroyContactsBetween(w, j.bodyA, j.bodyB);
@@ -129,16 +84,11 @@ Joint& addJoint(World::Impl& w, JointType type, BodyId bodyA, BodyId bodyB, Vec2
 }
 
 Joint& checkedJoint(const World::Impl& w, JointId id) {
-    const JointStore& s = store(w);
-    if (id.index < 0 || static_cast<size_t>(id.index) >= s.joints.size() || !s.joints[id.index].alive ||
-        s.joints[id.index].generation != id.generation)
-        throw Error("stale or invalid JointId (index " + std::to_string(id.index) + ", generation " +
-                    std::to_string(id.generation) + ")");
-    return const_cast<Joint&>(s.joints[id.index]);
+    return const_cast<Joint&>(store(w).joints.checked(id.index, id.generation, "JointId"));
 }
 
 JointId jointId(const World::Impl& w, const Joint& joint) {
-    return {static_cast<int32_t>(&joint - store(w).joints.data()), joint.generation};
+    return {static_cast<int32_t>(&joint - store(w).joints.slots().data()), joint.generation};
 }
 
 // --- Solver stages ---
@@ -171,7 +121,7 @@ void prepareJoint(PreparedJoint& j, const World::Impl& w, const Joint& joint, co
 template <class Wide, class Scalar>
 void forJointUnits(World::Impl& w, int color, int begin, int end, Wide wide, Scalar scalar) {
     JointStore& s = store(w);
-    std::vector<BodyState>& states = w.states;
+    std::vector<BodyState>& states = w.scratch.states;
     const int blocks = s.blockStart[color + 1] - s.blockStart[color];
     for (int unit = begin; unit < std::min(end, blocks); ++unit) {
         RevoluteBlock& block = s.revoluteBlocks[s.blockStart[color] + unit];
@@ -186,7 +136,7 @@ void forJointUnits(World::Impl& w, int color, int begin, int end, Wide wide, Sca
     for (int unit = std::max(begin, blocks); unit < end; ++unit) {
         PreparedJoint& j = s.prepared[s.scalarOrder[s.scalarStart[color] + unit - blocks]];
         JointPair p = pairOf(j.indexA == 0 ? fixed : states[j.indexA], j.indexB == 0 ? fixed : states[j.indexB],
-                             w.stepRotation, j);
+                             w.scratch.stepRotation, j);
         scalar(j, p);
     }
 }
@@ -230,7 +180,7 @@ void prepareJoints(World::Impl& w, const StepContext& ctx) {
     };
     // prepareJoint writes every field, so last step's elements are reused as they are.
     const int count = w.workers.parallelSelect(
-        static_cast<int>(s.joints.size()), awake,
+        s.joints.capacity(), awake,
         [&](int total) {
             s.awake.resize(total);
             s.prepared.resize(total);
@@ -241,7 +191,7 @@ void prepareJoints(World::Impl& w, const StepContext& ctx) {
             prepareJoint(s.prepared[k], w, s.joints[index], ctx);
         });
 
-    s.coloring.reset(static_cast<int>(w.states.size()));
+    s.coloring.reset(static_cast<int>(w.scratch.states.size()));
     std::array<int, overflow + 1> laneCount{}, scalarCount{};
     for (int k = 0; k < count; ++k) {
         const PreparedJoint& j = s.prepared[k];
@@ -249,7 +199,7 @@ void prepareJoints(World::Impl& w, const StepContext& ctx) {
         ++(inLanes(s.colors[k], j) ? laneCount[s.colors[k]] : scalarCount[s.colors[k]]);
     }
     // Joints of revolute trees leave the colours: they are solved directly (joint_tree.hpp).
-    findRevoluteTrees(s.trees, s.prepared, static_cast<int>(w.states.size()));
+    findRevoluteTrees(s.trees, s.prepared, static_cast<int>(w.scratch.states.size()));
     for (int k : s.trees.joints) --(inLanes(s.colors[k], s.prepared[k]) ? laneCount[s.colors[k]] : scalarCount[s.colors[k]]);
 
     for (int color = 0; color <= overflow; ++color) {
@@ -313,7 +263,7 @@ void projectJoints(World::Impl& w) { projectRevoluteTrees(w, store(w).trees, sto
 void storeJointImpulses(World::Impl& w, const StepContext&) {
     JointStore& s = store(w);
     w.workers.parallelFor(static_cast<int>(s.revoluteBlocks.size()), 64, [&](int begin, int end, int) {
-        for (int block = begin; block < end; ++block) unpackRevoluteImpulses(s.revoluteBlocks[block], s.joints);
+        for (int block = begin; block < end; ++block) unpackRevoluteImpulses(s.revoluteBlocks[block], s.joints.slots());
     });
     for (int position : s.scalarOrder) s.joints[s.awake[position]].data = s.prepared[position].data;
     for (int position : s.trees.joints) s.joints[s.awake[position]].data = s.prepared[position].data;
@@ -323,7 +273,7 @@ bool jointAllowsCollision(const World::Impl& w, int bodyA, int bodyB) {
     if (w.bodies[bodyA].jointCount == 0 || w.bodies[bodyB].jointCount == 0) return true;
     const JointStore& s = store(w);
     if (w.bodies[bodyB].jointCount < w.bodies[bodyA].jointCount) std::swap(bodyA, bodyB);
-    for (int key = headOf(s, bodyA); key >= 0; key = s.joints[key >> 1].edges[key & 1].next) {
+    for (int key = s.bodyLists.head(bodyA); key >= 0; key = EdgeList::next(s.joints, key)) {
         const Joint& j = s.joints[key >> 1];
         const int other = (key & 1) ? j.bodyA : j.bodyB;
         if (other == bodyB && !j.collideConnected) return false;
@@ -333,12 +283,11 @@ bool jointAllowsCollision(const World::Impl& w, int bodyA, int bodyB) {
 
 void destroyJointsOf(World::Impl& w, int body) {
     JointStore& s = store(w);
-    while (headOf(s, body) >= 0) removeJoint(w, headOf(s, body) >> 1);
+    while (s.bodyLists.head(body) >= 0) removeJoint(w, s.bodyLists.head(body) >> 1);
 }
 
 void forEachJointPair(const World::Impl& w, void (*visit)(void* context, int bodyA, int bodyB), void* context) {
-    for (const Joint& j : store(w).joints)
-        if (j.alive) visit(context, j.bodyA, j.bodyB);
+    store(w).joints.forEachLive([&](int, const Joint& j) { visit(context, j.bodyA, j.bodyB); });
 }
 
 // --- World API ---
@@ -350,15 +299,12 @@ void World::destroyJoint(JointId id) {
 }
 
 bool World::isValid(JointId id) const {
-    const JointStore& s = store(*impl_);
-    return id.index >= 0 && static_cast<size_t>(id.index) < s.joints.size() && s.joints[id.index].alive &&
-           s.joints[id.index].generation == id.generation;
+    return store(*impl_).joints.isValid(id.index, id.generation);
 }
 
 std::vector<JointId> World::joints() const {
     std::vector<JointId> ids;
-    for (const Joint& j : store(*impl_).joints)
-        if (j.alive) ids.push_back(jointId(*impl_, j));
+    store(*impl_).joints.forEachLive([&](int i, const Joint& j) { ids.push_back({i, j.generation}); });
     return ids;
 }
 
@@ -418,7 +364,7 @@ void breakJoints(World::Impl& w) {
     // The workers find the joints over their limits; a break wakes bodies, so which of them are
     // awake is asked one by one, in store order, as the joints break.
     w.workers.parallelSelect(
-        static_cast<int>(s.joints.size()), overLimit, [&](int total) { s.breaking.resize(total); },
+        s.joints.capacity(), overLimit, [&](int total) { s.breaking.resize(total); },
         [&](int k, int index) { s.breaking[k] = index; });
     for (int index : s.breaking) {
         const Joint& j = s.joints[index];

@@ -45,7 +45,7 @@ RevoluteBlock packRevoluteBlock(const std::array<const PreparedJoint*, 4>& lanes
     return block;
 }
 
-void unpackRevoluteImpulses(const RevoluteBlock& block, std::vector<Joint>& joints) {
+void unpackRevoluteImpulses(const RevoluteBlock& block, std::span<Joint> joints) {
     float x[4], y[4];
     block.rows.linearImpulse.x.store(x);
     block.rows.linearImpulse.y.store(y);

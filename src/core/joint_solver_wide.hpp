@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <span>
 
 #include "core/body_lanes.hpp"
 #include "core/joint_rows.hpp"
@@ -59,6 +60,6 @@ struct RevoluteBlock {
 // have no mass (it then moves nothing).
 RevoluteBlock packRevoluteBlock(const std::array<const PreparedJoint*, 4>& lanes, const std::array<int, 4>& joints);
 // Each lane's accumulated point impulse back to its joint.
-void unpackRevoluteImpulses(const RevoluteBlock& block, std::vector<Joint>& joints);
+void unpackRevoluteImpulses(const RevoluteBlock& block, std::span<Joint> joints);
 
 }  // namespace perpdot

@@ -1,4 +1,4 @@
-// The joint store: one contiguous std::vector<Joint> with a free list and generations, and the
+// The joint store: a Pool<Joint> (pool.hpp: one contiguous vector, a free list, generations), and the
 // per-type entry points that joint.cpp dispatches to by switch (no virtual calls in the solve).
 //
 // A Joint is plain data (trivially copyable): the user's definition, the per-step solver
@@ -11,9 +11,11 @@
 #include <type_traits>
 #include <vector>
 
+#include "core/edge_list.hpp"
 #include "core/graph_color.hpp"
 #include "core/joint.hpp"
 #include "core/joint_tree.hpp"
+#include "core/pool.hpp"
 #include "core/softness.hpp"
 #include "core/step_context.hpp"
 
@@ -142,17 +144,13 @@ union JointData {
     JointData() : revolute{} {}
 };
 
-struct JointEdge {
-    int prev = -1, next = -1;  // edge keys (joint*2 + side) in the body's joint list
-};
-
 struct Joint {
     uint32_t generation = 0;
     bool alive = false;
     bool collideConnected = false;
     JointType type = JointType::Revolute;
     int bodyA = -1, bodyB = -1;
-    JointEdge edges[2];        // in bodyA's list (side 0) and bodyB's (side 1)
+    Edge edges[2];             // in bodyA's list (side 0) and bodyB's (side 1): JointStore::bodyLists
     Vec2 localAnchorA, localAnchorB;  // in each body's origin frame
     float referenceAngle = 0;  // θB − θA at zero joint angle (motor joint: angularOffset)
     // Break limits (World::setJointBreakLimits): reaction force N and torque N·m; infinity never breaks.
@@ -187,9 +185,8 @@ inline JointPair pairOf(std::vector<BodyState>& states, const std::vector<float>
 struct RevoluteBlock;  // four revolute joints in SIMD lanes (joint_solver_wide.hpp)
 
 struct JointStore {
-    std::vector<Joint> joints;
-    std::vector<int> freeList;
-    std::vector<int> bodyHead;           // by body index: first edge key of its joint list, -1 if none
+    Pool<Joint> joints;
+    EdgeList bodyLists;                  // each body's joints
     // The step's awake joints, prepared in store order: prepared[k] is joints[awake[k]].
     std::vector<int> awake;
     std::vector<PreparedJoint> prepared;

@@ -152,7 +152,7 @@ void findRevoluteTrees(RevoluteTrees& t, const std::vector<PreparedJoint>& prepa
 
 void warmStartRevoluteTrees(World::Impl& w, RevoluteTrees& t, std::vector<PreparedJoint>& prepared) {
     for (int k : t.joints) {
-        JointPair p = pairOf(w.states, w.stepRotation, prepared[k]);
+        JointPair p = pairOf(w.scratch.states, w.scratch.stepRotation, prepared[k]);
         warmStartRevolute(prepared[k], p);
     }
 }
@@ -170,7 +170,7 @@ int assemble(World::Impl& w, RevoluteTrees& t, const std::vector<PreparedJoint>&
     t.rB.resize(joints);
     for (int i = 0; i < joints; ++i) {
         const PreparedJoint& j = prepared[t.joints[first + i]];
-        const JointPair p = pairOf(w.states, w.stepRotation, j);
+        const JointPair p = pairOf(w.scratch.states, w.scratch.stepRotation, j);
         const JointFrame f = currentFrame(j, p);
         t.rA[i] = f.rA;
         t.rB[i] = f.rB;
@@ -202,10 +202,10 @@ Vec2 lambdaOf(const std::vector<double>& x, int i) { return {static_cast<float>(
 // Moves a body's solver state by a position impulse P at arm r: Δc = P/m, Δθ = perpDot(r, P)/I.
 void displace(World::Impl& w, int slot, float invMass, float invInertia, Vec2 r, Vec2 P) {
     if (slot == 0) return;
-    BodyState& s = w.states[slot];
+    BodyState& s = w.scratch.states[slot];
     const float dAngle = invInertia * perpDot(r, P);
     s.dp += invMass * P;
-    w.stepRotation[slot] += dAngle;
+    w.scratch.stepRotation[slot] += dAngle;
     s.dq = integrateRotation(s.dq, dAngle);
 }
 
@@ -222,7 +222,7 @@ void solveRevoluteTrees(World::Impl& w, RevoluteTrees& t, std::vector<PreparedJo
         if (!choleskyFactor(t.K, n)) {
             for (int i = 0; i < joints; ++i) {
                 PreparedJoint& j = prepared[t.joints[first + i]];
-                JointPair p = pairOf(w.states, w.stepRotation, j);
+                JointPair p = pairOf(w.scratch.states, w.scratch.stepRotation, j);
                 solveRevolute(j, p, ctx, useBias);
             }
             continue;
@@ -240,7 +240,7 @@ void solveRevoluteTrees(World::Impl& w, RevoluteTrees& t, std::vector<PreparedJo
         }
         for (int i = 0; i < joints; ++i) {
             const PreparedJoint& j = prepared[t.joints[first + i]];
-            JointPair p = pairOf(w.states, w.stepRotation, j);
+            JointPair p = pairOf(w.scratch.states, w.scratch.stepRotation, j);
             applyPoint(p, t.rA[i], t.rB[i], lambdaOf(t.x, i));
         }
     }

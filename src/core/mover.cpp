@@ -235,13 +235,13 @@ public:
     // The impulse dynamic bodies put on the capsule's body in the last step, over the mover's mass.
     Vec2 pushedVelocity() const {
         Vec2 impulse;
-        for (int edge = w_.bodies[body_].contactHead; edge >= 0;) {
-            const Contact& c = w_.contacts[edge >> 1];
-            const float side = (edge & 1) ? 1.0f : -1.0f;  // normal runs from A to B
-            if (c.touching && w_.bodies[(edge & 1) ? c.bodyA : c.bodyB].type == BodyType::Dynamic)
+        const ContactCache& cache = w_.contactCache;
+        cache.bodyLists.forEach(cache.contacts, body_, [&](int contact, int onB) {
+            const Contact& c = cache.contacts[contact];
+            const float side = onB ? 1.0f : -1.0f;  // normal runs from A to B
+            if (c.touching && w_.bodies[onB ? c.bodyA : c.bodyB].type == BodyType::Dynamic)
                 for (int p = 0; p < c.pointCount; ++p) impulse += (side * c.points[p].normalImpulse) * c.normal;
-            edge = c.edges[edge & 1].next;
-        }
+        });
         return (1.0f / def_.mass) * impulse;
     }
 

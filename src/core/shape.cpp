@@ -91,28 +91,11 @@ ShapeData& World::Impl::shape(ShapeId id) {
     return const_cast<ShapeData&>(static_cast<const Impl*>(this)->shape(id));
 }
 
-const ShapeData& World::Impl::shape(ShapeId id) const {
-    if (id.index < 0 || static_cast<size_t>(id.index) >= shapes.size() || !shapes[id.index].alive ||
-        shapes[id.index].generation != id.generation)
-        throw Error("stale or invalid ShapeId (index " + std::to_string(id.index) + ", generation " +
-                    std::to_string(id.generation) + ")");
-    return shapes[id.index];
-}
+const ShapeData& World::Impl::shape(ShapeId id) const { return shapes.checked(id.index, id.generation, "ShapeId"); }
 
 int World::Impl::addShape(BodyId bodyId, const ShapeDef& def) {
-    int index;
-    if (!freeShapes.empty()) {
-        index = freeShapes.back();
-        freeShapes.pop_back();
-    } else {
-        index = static_cast<int>(shapes.size());
-        shapes.emplace_back();
-    }
+    const int index = shapes.create();
     ShapeData& s = shapes[index];
-    const uint32_t generation = s.generation;
-    s = ShapeData{};
-    s.generation = generation;
-    s.alive = true;
     s.body = bodyId.index;
     s.density = def.density;
     s.friction = def.friction;
@@ -122,11 +105,11 @@ int World::Impl::addShape(BodyId bodyId, const ShapeDef& def) {
     s.sensor = def.sensor;
     s.enableContactEvents = def.enableContactEvents;
     s.enableHitEvents = def.enableHitEvents;
-    anyHitEvents = anyHitEvents || def.enableHitEvents;
+    shapes.anyHitEvents = shapes.anyHitEvents || def.enableHitEvents;
     s.enableSensorEvents = def.enableSensorEvents;
     s.enablePreSolveEvents = def.enablePreSolveEvents;
     s.filter = def.filter;
-    noteFilter(def.filter);
+    shapes.noteFilter(def.filter);
     s.userData = def.userData;
     bodies[bodyId.index].shapes.push_back(index);
     return index;
@@ -196,22 +179,17 @@ void World::destroyShape(ShapeId id) {
     w.checkUnlocked("destroyShape");
     ShapeData& s = w.shape(id);
     const int bodyIndex = s.body;
-    w.destroyContactsOf(bodyIndex, id.index);
+    destroyContactsOf(w, bodyIndex, id.index);
     w.destroyProxies(id.index);
     w.collision.clearGeometry(id.index);
     std::vector<int>& owned = w.bodies[bodyIndex].shapes;
     owned.erase(std::find(owned.begin(), owned.end(), id.index));
-    s.alive = false;
-    ++s.generation;
-    w.freeShapes.push_back(id.index);
+    w.shapes.destroy(id.index);
     w.updateMass(bodyIndex);
     w.wake(bodyIndex);
 }
 
-bool World::isValid(ShapeId id) const {
-    return id.index >= 0 && static_cast<size_t>(id.index) < impl_->shapes.size() && impl_->shapes[id.index].alive &&
-           impl_->shapes[id.index].generation == id.generation;
-}
+bool World::isValid(ShapeId id) const { return impl_->shapes.isValid(id.index, id.generation); }
 
 std::vector<ShapeId> World::shapes(BodyId body) const {
     std::vector<ShapeId> ids;

@@ -32,12 +32,12 @@ void unite(std::vector<int>& parent, int a, int b) {
 
 void World::Impl::updateSleep(float h) {
     if (!def.enableSleep) return;
-    const size_t n = bodies.size();
-    islandParent.resize(n);
+    const size_t n = bodies.capacity();
+    scratch.islandParent.resize(n);
     bool anySleepy = false;
-    for (int i : awakeBodies) {
+    for (int i : scratch.awakeBodies) {
         Body& b = bodies[i];
-        islandParent[i] = i;
+        scratch.islandParent[i] = i;
         if (!b.allowSleep || b.w * b.w > angularSleepTolerance * angularSleepTolerance ||
             dot(b.v, b.v) > linearSleepTolerance * linearSleepTolerance) {
             b.sleepTime = 0.0f;
@@ -49,38 +49,39 @@ void World::Impl::updateSleep(float h) {
     if (!anySleepy) return;
 
     auto joinable = [&](int body) { return bodies[body].type == BodyType::Dynamic && bodies[body].awake; };
-    for (const Contact& c : contacts)
-        if (c.alive && c.touching && joinable(c.bodyA) && joinable(c.bodyB)) unite(islandParent, c.bodyA, c.bodyB);
+    contactCache.contacts.forEachLive([&](int, const Contact& c) {
+        if (c.touching && joinable(c.bodyA) && joinable(c.bodyB)) unite(scratch.islandParent, c.bodyA, c.bodyB);
+    });
     forEachJointPair(
         *this,
         [](void* context, int a, int b) {
             World::Impl& w = *static_cast<World::Impl*>(context);
             auto ok = [&](int i) { return w.bodies[i].type == BodyType::Dynamic && w.bodies[i].awake; };
-            if (ok(a) && ok(b)) unite(w.islandParent, a, b);
+            if (ok(a) && ok(b)) unite(w.scratch.islandParent, a, b);
         },
         this);
 
     // The island sleeps when its least sleepy body has been still long enough. islandMinSleep and
     // islandHead reuse the parent array's index space.
-    islandMinSleep.assign(n, std::numeric_limits<float>::max());
-    islandHead.assign(n, -1);
-    for (int i : awakeBodies) {
-        const int root = findRoot(islandParent, i);
-        islandMinSleep[root] = std::min(islandMinSleep[root], bodies[i].sleepTime);
+    scratch.islandMinSleep.assign(n, std::numeric_limits<float>::max());
+    scratch.islandHead.assign(n, -1);
+    for (int i : scratch.awakeBodies) {
+        const int root = findRoot(scratch.islandParent, i);
+        scratch.islandMinSleep[root] = std::min(scratch.islandMinSleep[root], bodies[i].sleepTime);
     }
-    for (int i : awakeBodies) {
-        const int root = findRoot(islandParent, i);
-        if (islandMinSleep[root] < timeToSleep) continue;
+    for (int i : scratch.awakeBodies) {
+        const int root = findRoot(scratch.islandParent, i);
+        if (scratch.islandMinSleep[root] < timeToSleep) continue;
         Body& b = bodies[i];
         b.awake = false;
         b.v = {};
         b.w = 0.0f;
         // Thread the island into a ring so that waking any member wakes all.
-        if (islandHead[root] < 0) {
-            islandHead[root] = i;
+        if (scratch.islandHead[root] < 0) {
+            scratch.islandHead[root] = i;
             b.islandNext = i;
         } else {
-            Body& head = bodies[islandHead[root]];
+            Body& head = bodies[scratch.islandHead[root]];
             b.islandNext = head.islandNext;
             head.islandNext = i;
         }

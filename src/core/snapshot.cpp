@@ -47,17 +47,17 @@ bool sameBits(const Transform& a, const Transform& b) {
 // futureOnly: a transform that is exactly the one the pose derives (every body a step or a
 // continuous pass has moved) is written as zeros — a zero rotation is no transform — and derived
 // again on reading, so a compact snapshot does not pay for the pose twice.
-void writeBody(ByteWriter& out, const World::Impl& w, const Body& body, bool futureOnly) {
-    Body b = body;
+void writeBody(ByteWriter& out, const World::Impl& w, int index, bool futureOnly) {
+    Body b = w.bodies[index];
     if (futureOnly && sameBits(b.xf, b.derivedTransform())) b.xf = {{0.0f, 0.0f}, {0.0f, 0.0f}};
     writeFields(out, b);
     out.u32(static_cast<uint32_t>(b.shapes.size()));
     for (int s : b.shapes) out.i32(s);
     // The contact list as the sequence of its edge keys (contact*2 + side), head first.
-    int edges = 0;
-    for (int e = b.contactHead; e >= 0; e = w.contacts[e >> 1].edges[e & 1].next) ++edges;
-    out.u32(static_cast<uint32_t>(edges));
-    for (int e = b.contactHead; e >= 0; e = w.contacts[e >> 1].edges[e & 1].next) out.i32(e);
+    const ContactCache& cache = w.contactCache;
+    const std::vector<int> edges = cache.bodyLists.keys(cache.contacts, index);
+    out.u32(static_cast<uint32_t>(edges.size()));
+    for (int e : edges) out.i32(e);
 }
 
 // Reads a live body; its shape list and contact edges are checked against the other pools later.
@@ -243,23 +243,20 @@ std::vector<int> readFreeList(ByteReader& in, const std::vector<bool>& alive, co
 
 // Relinks body `index`'s contact list in the saved order, checking that every edge belongs to it.
 void linkEdges(ByteReader& in, World::Impl& w, int index, const std::vector<int>& edges, std::vector<bool>& seen) {
-    int prev = -1;
+    ContactCache& cache = w.contactCache;
     for (int e : edges) {
-        const Contact& c = w.contacts[e >> 1];
+        const Contact& c = cache.contacts[e >> 1];
         if (!c.alive || seen[e] || ((e & 1) ? c.bodyB : c.bodyA) != index) in.fail("contact list is inconsistent");
         seen[e] = true;
-        w.contacts[e >> 1].edges[e & 1] = {prev, -1};
-        if (prev >= 0) w.contacts[prev >> 1].edges[prev & 1].next = e;
-        else w.bodies[index].contactHead = e;
-        prev = e;
     }
+    cache.bodyLists.restore(cache.contacts, index, edges);
 }
 
 // Island rings (bodies that fell asleep together) must be proper cycles, or wake() would not end:
 // the links of linked bodies must form a permutation of them.
 void checkIslandRings(ByteReader& in, const World::Impl& w) {
-    std::vector<bool> targeted(w.bodies.size(), false);
-    for (const Body& b : w.bodies) {
+    std::vector<bool> targeted(w.bodies.capacity(), false);
+    for (const Body& b : w.bodies.slots()) {
         if (b.islandNext < 0) continue;
         const Body& next = w.bodies[b.islandNext];
         if (!b.alive || !next.alive || next.islandNext < 0 || targeted[b.islandNext]) in.fail("island ring is broken");
@@ -295,30 +292,30 @@ std::vector<uint8_t> writeSnapshot(const World::Impl& w, bool futureOnly) {
     out.u32(formatVersion);
     writeFields(out, w.def);
     out.u32(static_cast<uint32_t>(w.frozenBodies));
-    out.boolean(w.anyHitEvents);
+    out.boolean(w.shapes.anyHitEvents);
 
-    out.u32(static_cast<uint32_t>(w.bodies.size()));
-    for (const Body& b : w.bodies) {
-        out.u32(b.generation);
-        out.boolean(b.alive);
-        if (b.alive) writeBody(out, w, b, futureOnly);
+    out.u32(static_cast<uint32_t>(w.bodies.capacity()));
+    for (int i = 0; i < w.bodies.capacity(); ++i) {
+        out.u32(w.bodies[i].generation);
+        out.boolean(w.bodies[i].alive);
+        if (w.bodies[i].alive) writeBody(out, w, i, futureOnly);
     }
-    writeFreeList(out, w.freeBodies);
+    writeFreeList(out, w.bodies.freeList());
 
-    out.u32(static_cast<uint32_t>(w.shapes.size()));
-    for (const ShapeData& s : w.shapes) {
+    out.u32(static_cast<uint32_t>(w.shapes.capacity()));
+    for (const ShapeData& s : w.shapes.slots()) {
         out.u32(s.generation);
         out.boolean(s.alive);
         if (s.alive) writeShape(out, w, s);
     }
-    writeFreeList(out, w.freeShapes);
+    writeFreeList(out, w.shapes.freeList());
 
-    out.u32(static_cast<uint32_t>(w.contacts.size()));
-    for (const Contact& c : w.contacts) {
+    out.u32(static_cast<uint32_t>(w.contactCache.contacts.capacity()));
+    for (const Contact& c : w.contactCache.contacts.slots()) {
         out.boolean(c.alive);
         if (c.alive) writeContact(out, c, futureOnly && (w.bodies[c.bodyA].awake || w.bodies[c.bodyB].awake));
     }
-    writeFreeList(out, w.freeContacts);
+    writeFreeList(out, w.contactCache.contacts.freeList());
     writeJoints(out, w);
 
     out.u32(static_cast<uint32_t>(w.movedProxies.size()));
@@ -344,11 +341,11 @@ void World::restore(std::span<const uint8_t> bytes) {
     auto fresh = std::make_unique<Impl>(readDef(in));  // one worker: the snapshot holds no threads
     Impl& w = *fresh;
     w.frozenBodies = in.integer(0, 0x7FFFFFFF, "frozen body count");
-    w.anyHitEvents = in.boolean();
+    w.shapes.anyHitEvents = in.boolean();
 
     // Bodies, with their contact lists kept aside until the contacts are read.
     const int bodyCount = in.count(5, "body");
-    w.bodies.resize(bodyCount);
+    w.bodies.restoreSlots(bodyCount);
     std::vector<std::vector<int>> edgesOf(bodyCount);
     std::vector<bool> bodyAlive(bodyCount);
     // Shape and contact counts are not known yet: indices are bounded by the input size, then checked.
@@ -359,10 +356,10 @@ void World::restore(std::span<const uint8_t> bytes) {
         b.alive = bodyAlive[i] = in.boolean();
         if (b.alive) readBody(in, b, edgesOf[i], bodyCount, indexLimit, 2 * indexLimit);
     }
-    w.freeBodies = readFreeList(in, bodyAlive, "free body");
+    w.bodies.restoreFreeList(readFreeList(in, bodyAlive, "free body"));
 
     const int shapeCount = in.count(5, "shape");
-    w.shapes.resize(shapeCount);
+    w.shapes.restoreSlots(shapeCount);
     std::vector<bool> shapeAlive(shapeCount), shapeListed(shapeCount, false);
     std::vector<std::vector<AABB>> savedProxies(shapeCount);
     for (int i = 0; i < shapeCount; ++i) {
@@ -370,12 +367,12 @@ void World::restore(std::span<const uint8_t> bytes) {
         s.generation = in.u32();
         s.alive = shapeAlive[i] = in.boolean();
         if (!s.alive) continue;
-        const bool holds = i < static_cast<int>(impl_->shapes.size()) && impl_->shapes[i].alive;
+        const bool holds = i < impl_->shapes.capacity() && impl_->shapes[i].alive;
         readShape(in, s, savedProxies[i], bodyCount, holds ? &impl_->shapes[i] : nullptr);
-        w.noteFilter(s.filter);
+        w.shapes.noteFilter(s.filter);
         if (!bodyAlive[s.body]) in.fail("shape " + std::to_string(i) + " belongs to a dead body");
     }
-    w.freeShapes = readFreeList(in, shapeAlive, "free shape");
+    w.shapes.restoreFreeList(readFreeList(in, shapeAlive, "free shape"));
     for (int i = 0; i < bodyCount; ++i)
         for (int s : w.bodies[i].shapes)
             if (s >= shapeCount || !shapeAlive[s] || w.shapes[s].body != i || shapeListed[s]) in.fail("body shape list is inconsistent");
@@ -384,10 +381,10 @@ void World::restore(std::span<const uint8_t> bytes) {
         if (shapeAlive[i] && !shapeListed[i]) in.fail("shape " + std::to_string(i) + " is missing from its body");
 
     const int contactCount = in.count(1, "contact");
-    w.contacts.resize(contactCount);
+    w.contactCache.contacts.restoreSlots(contactCount);
     std::vector<bool> contactAlive(contactCount);
     for (int i = 0; i < contactCount; ++i) {
-        Contact& c = w.contacts[i];
+        Contact& c = w.contactCache.contacts[i];
         c.alive = contactAlive[i] = in.boolean();
         if (!c.alive) continue;
         readContact(in, c, shapeCount);
@@ -404,7 +401,7 @@ void World::restore(std::span<const uint8_t> bytes) {
         c.bodyA = sa.body;
         c.bodyB = sb.body;
     }
-    w.freeContacts = readFreeList(in, contactAlive, "free contact");
+    w.contactCache.contacts.restoreFreeList(readFreeList(in, contactAlive, "free contact"));
     std::vector<bool> edgeSeen(2 * static_cast<size_t>(contactCount), false);
     for (int i = 0; i < bodyCount; ++i) {
         for (int e : edgesOf[i])
@@ -442,16 +439,16 @@ void World::restore(std::span<const uint8_t> bytes) {
     }
     for (const collide::ChildKey& key : moved) w.movedProxies.push_back(w.shapes[key.shape].proxies[key.child]);
     std::unordered_set<int> movedSet(w.movedProxies.begin(), w.movedProxies.end());
-    for (const ShapeData& s : w.shapes)
+    for (const ShapeData& s : w.shapes.slots())
         for (int proxy : s.proxies)
             if (!movedSet.contains(proxy)) w.collision.clearMoved(proxy);
     for (int i = 0; i < contactCount; ++i) {
-        Contact& c = w.contacts[i];
+        Contact& c = w.contactCache.contacts[i];
         if (!c.alive) continue;
         c.proxyA = w.shapes[c.a.shape].proxies[c.a.child];
         c.proxyB = w.shapes[c.b.shape].proxies[c.b.child];
         c.pairKey = proxyPairKey(c.proxyA, c.proxyB);
-        if (!w.pairs.insert(c.pairKey)) in.fail("two contacts for one pair");
+        if (!w.contactCache.pairs.insert(c.pairKey)) in.fail("two contacts for one pair");
     }
 
     fresh->preSolve = std::move(impl_->preSolve);  // a setting of this World, not of the state

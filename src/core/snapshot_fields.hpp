@@ -56,8 +56,8 @@ constexpr auto fields(const WorldDef*) {
                       field("box2dSkin", &D::box2dSkin).since(4)};
 }
 
-// Not listed: generation and alive (written by the pool), userData, shapes and contactHead
-// (written as lists), solverIndex (per step).
+// Not listed: generation and alive (written by the pool), userData, shapes (written as a list,
+// like the body's contact list, which World::Impl::contactLists holds), solverIndex (per step).
 static_assert(reviewedLayout<Body, 152>);
 constexpr auto fields(const Body*) {
     return std::tuple{field("type", &Body::type),

@@ -19,7 +19,7 @@ constexpr int contactsPerItem = 128;
 void SolverStages::build(const World::Impl& w) {
     using Work = SolverStage::Work;
     stages_.clear();
-    const int bodies = static_cast<int>(w.states.size()) - 1;
+    const int bodies = static_cast<int>(w.scratch.states.size()) - 1;
     auto add = [&](Work work, RowPass pass, int color, int units, int unitsPerItem) {
         if (units > 0) stages_.push_back({work, pass, color, units, unitsPerItem});
     };
@@ -28,8 +28,8 @@ void SolverStages::build(const World::Impl& w) {
             add(Work::Joints, pass, color, jointUnitCount(w, color), jointUnitsPerItem);
         add(Work::SerialJoints, pass, 0, serialJointCount(w) > 0 ? 1 : 0, 1);
         for (int color = 0; color < GraphColoring::overflow; ++color)
-            add(Work::Contacts, pass, color, contactBlockCount(w, color), contactsPerItem / w.contactLanes);
-        add(Work::SerialContacts, pass, 0, w.overflowConstraints.empty() ? 0 : 1, 1);
+            add(Work::Contacts, pass, color, contactBlockCount(w, color), contactsPerItem / w.scratch.contactLanes);
+        add(Work::SerialContacts, pass, 0, w.scratch.overflowConstraints.empty() ? 0 : 1, 1);
     };
     add(Work::SubstepForces, RowPass::WarmStart, 0, bodies, bodiesPerItem);
     rows(RowPass::WarmStart);

@@ -1,7 +1,8 @@
 // The stages of World::step (step.cpp), in the order it runs them, each a function of the world
 // and the step's context: the units the speed issue's threads will run. The contact and joint
 // stages are defined beside their rows (contact_solver*.cpp, joint*.cpp), the body stages in
-// integrate.cpp; pairs, narrowphase, continuous and sleep are World::Impl members.
+// integrate.cpp; pairs and narrowphase are the contact cache's (contact_cache.hpp), continuous and
+// sleep are World::Impl members.
 #pragma once
 
 #include "core/joint.hpp"

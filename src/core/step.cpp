@@ -40,8 +40,8 @@ void World::step(float timeStep) {
     } lock(w.locked);
     w.beginEvents();
 
-    w.updatePairs();     // pairs: proxies that left their fat AABB meet new partners
-    w.updateContacts();  // narrowphase: each contact keeps its manifold or takes a new one
+    updatePairs(w);     // pairs: proxies that left their fat AABB meet new partners
+    updateContacts(w);  // narrowphase: each contact keeps its manifold or takes a new one
 
     StepContext ctx = makeStepContext(w, timeStep);
     integrateVelocities(w, ctx);
@@ -49,8 +49,8 @@ void World::step(float timeStep) {
     prepareContacts(w, ctx);
     // Per substep: its forces, warm start, solve with soft bias, x += hs v, relax without bias
     // (solver_stages.hpp: the rows colour by colour, on the workers).
-    w.solverStages.build(w);
-    w.solverStages.run(w, ctx);
+    w.scratch.solverStages.build(w);
+    w.scratch.solverStages.run(w, ctx);
     projectJoints(w);  // project: the anchors of revolute trees meet again
     storeContactImpulses(w);   // store: impulses for the next step's warm start, from the lanes
     applyRestitution(w, ctx);  // restitution: Hecker's bounce, once per step

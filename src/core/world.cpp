@@ -24,14 +24,15 @@ void World::setSubsteps(int substeps) {
 
 int World::contactCount() const {
     int count = 0;
-    for (const Contact& c : impl_->contacts) count += c.alive && c.touching;
+    impl_->contactCache.contacts.forEachLive([&](int, const Contact& c) { count += c.touching; });
     return count;
 }
 
 std::vector<ContactData> World::contacts() const {
     std::vector<ContactData> out;
-    for (const Contact& c : impl_->contacts)
-        if (c.alive && c.touching) out.push_back(impl_->contactData(c));
+    impl_->contactCache.contacts.forEachLive([&](int, const Contact& c) {
+        if (c.touching) out.push_back(impl_->contactData(c));
+    });
     return out;
 }
 

@@ -6,12 +6,12 @@ namespace perpdot {
 WorldStats World::stats() const {
     const Impl& w = *impl_;
     WorldStats s;
-    s.bodySlots = static_cast<int>(w.bodies.size());
-    s.shapeSlots = static_cast<int>(w.shapes.size());
-    s.contactSlots = static_cast<int>(w.contacts.size());
-    s.bodies = s.bodySlots - static_cast<int>(w.freeBodies.size());
-    s.shapes = s.shapeSlots - static_cast<int>(w.freeShapes.size());
-    s.contacts = s.contactSlots - static_cast<int>(w.freeContacts.size());
+    s.bodySlots = w.bodies.capacity();
+    s.shapeSlots = w.shapes.capacity();
+    s.contactSlots = w.contactCache.contacts.capacity();
+    s.bodies = w.bodies.size();
+    s.shapes = w.shapes.size();
+    s.contacts = w.contactCache.contacts.size();
     s.frozenBodies = w.frozenBodies;
     return s;
 }

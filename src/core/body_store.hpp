@@ -1,0 +1,43 @@
+// A body as the world stores it: its pose and velocity, mass properties, settings and sleep
+// state, its shapes, and its links into the step. The body store is a Pool<Body> (pool.hpp),
+// World::Impl::bodies; a BodyId is (index, generation) in it.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "perpdot/world.hpp"
+
+namespace perpdot {
+
+struct Body {
+    uint32_t generation = 0;
+    bool alive = false;
+    BodyType type = BodyType::Static;
+    Transform xf;          // origin frame
+    float angle = 0;       // accumulated θ; xf.q = Rot(θ)
+    Vec2 localCenter;      // centre of mass, body frame
+    Vec2 center;           // centre of mass, world
+    Vec2 v;                // velocity of the centre of mass
+    float w = 0;           // angular velocity ω
+    Vec2 force;            // accumulated this step
+    float torque = 0;
+    float mass = 0, invMass = 0;
+    float inertia = 0, invInertia = 0;  // scalar I about the centre of mass
+    float linearDamping = 0, angularDamping = 0, gravityScale = 1;
+    bool fixedRotation = false, bullet = false, allowSleep = true, awake = true;
+    float sleepTime = 0;
+    void* userData = nullptr;
+    std::vector<int> shapes;
+    int solverIndex = 0;   // slot in StepScratch::states during a step; 0 = static
+    int jointCount = 0;    // joints attached (maintained by the joint store)
+    int islandNext = -1;   // next body of the island it fell asleep with
+
+    // The origin frame of the pose (θ, c): q = Rot(θ), x = c − R(θ)·localCenter.
+    Transform derivedTransform() const {
+        const Rot q = Rot::fromAngle(angle);
+        return {center - rotate(q, localCenter), q};
+    }
+};
+
+}  // namespace perpdot

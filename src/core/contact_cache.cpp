@@ -1,0 +1,269 @@
+// The persistent contact cache: new pairs from moved proxies, manifolds from the narrowphase,
+// and warm-start impulses carried from one step to the next by Box2D's feature ids.
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+
+#include "core/contact_cache.hpp"
+#include "core/manifold_reuse.hpp"
+#include "core/world_impl.hpp"
+
+namespace perpdot {
+
+namespace {
+
+// Box2D's mixing rules, so cross-checks compare like with like.
+float mixFriction(float a, float b) { return std::sqrt(a * b); }
+float mixRestitution(float a, float b) { return std::max(a, b); }
+
+// Box2D v3's rules: rolling resistance is the larger coefficient times the larger rounding
+// radius (a lever arm), and the surfaces' tangent speeds add.
+// Flat surfaces meet at vertices, which are points of the bodies: their manifold may be kept
+// (manifold_reuse.hpp). A round surface's contact point rolls over it as the body turns.
+bool isFlat(const ShapeData& s) { return roundingRadius(s) == 0.0f; }
+
+float mixRollingResistance(const ShapeData& a, const ShapeData& b) {
+    const float resistance = std::max(a.rollingResistance, b.rollingResistance);
+    return resistance > 0.0f ? resistance * std::max(roundingRadius(a), roundingRadius(b)) : 0.0f;
+}
+
+// A new manifold for `c`: its points inherit the accumulated impulses of the old points with the
+// same feature id, and the bodies' pose is remembered for keeping it (manifold_reuse.hpp).
+void takeManifold(Contact& c, const collide::Manifold& m, const Body& ba, const Body& bb, bool keepable) {
+    ContactPointState next[2];
+    for (int i = 0; i < m.pointCount; ++i) {
+        ContactPointState& p = next[i];
+        p.point = m.points[i].point;
+        p.separation = m.points[i].separation;
+        p.id = m.points[i].id;
+        p.anchorA = p.point - ba.center;
+        p.anchorB = p.point - bb.center;
+        for (int j = 0; j < c.pointCount; ++j) {
+            if (c.points[j].id == p.id) {
+                p.normalImpulse = c.points[j].normalImpulse;
+                p.tangentImpulse = c.points[j].tangentImpulse;
+                break;
+            }
+        }
+    }
+    c.normal = m.normal;
+    c.pointCount = m.pointCount;
+    c.points[0] = next[0];
+    c.points[1] = next[1];
+    rememberManifoldPose(c, ba, bb, keepable);
+}
+
+// Whether two overlapping proxies may have a contact (bodies, sensors, shape types, filters,
+// joints); reads only, so the pair-finding workers ask it.
+bool pairWanted(const World::Impl& w, int proxyA, int proxyB) {
+    const ShapeData& sa = w.shapes[w.collision.proxyKey(proxyA).shape];
+    const ShapeData& sb = w.shapes[w.collision.proxyKey(proxyB).shape];
+    if (sa.body == sb.body) return false;
+    if (w.bodies[sa.body].type != BodyType::Dynamic && w.bodies[sb.body].type != BodyType::Dynamic) return false;
+    // A sensor sees shapes that are not sensors and want to be seen.
+    if (sa.sensor && sb.sensor) return false;
+    if ((sa.sensor && !sb.enableSensorEvents) || (sb.sensor && !sa.enableSensorEvents)) return false;
+    return collide::CollisionSystem::canCollide(sa.type, sb.type) && shouldCollide(sa.filter, sb.filter) &&
+           jointAllowsCollision(w, sa.body, sb.body);
+}
+
+// A contact for a wanted pair, unless it has one.
+void addPair(World::Impl& w, int proxyA, int proxyB) {
+    ContactCache& cache = w.contactCache;
+    const uint64_t key = proxyPairKey(proxyA, proxyB);
+    if (cache.pairs.contains(key)) return;
+    collide::ChildKey keyA = w.collision.proxyKey(proxyA), keyB = w.collision.proxyKey(proxyB);
+    const ShapeData* sa = &w.shapes[keyA.shape];
+    const ShapeData* sb = &w.shapes[keyB.shape];
+
+    if (collide::CollisionSystem::mustSwap(sa->type, sb->type)) {
+        std::swap(keyA, keyB);
+        std::swap(proxyA, proxyB);
+        std::swap(sa, sb);
+    }
+    const int index = cache.contacts.create();
+    Contact& c = cache.contacts[index];
+    c.pairKey = key;
+    c.proxyA = proxyA;
+    c.proxyB = proxyB;
+    c.a = keyA;
+    c.b = keyB;
+    c.bodyA = sa->body;
+    c.bodyB = sb->body;
+    c.sensor = sa->sensor || sb->sensor;
+    cache.bodyLists.link(cache.contacts, index, 0, c.bodyA);
+    cache.bodyLists.link(cache.contacts, index, 1, c.bodyB);
+    cache.pairs.insert(key);
+}
+
+// The narrowphase of one contact, with the bodies' poses alone: whether its fat AABBs still
+// overlap (else it is to be destroyed), a sensor's overlap, or its kept manifold or a new one.
+// Events, the pre-solve callback and waking are left to updateContacts.
+Narrowphase collideContact(World::Impl& w, int index) {
+    Contact& c = w.contactCache.contacts[index];
+    const Body& ba = w.bodies[c.bodyA];
+    const Body& bb = w.bodies[c.bodyB];
+    const collide::CollisionSystem& collision = w.collision;
+    if (!overlaps(collision.fatAABB(c.proxyA), collision.fatAABB(c.proxyB))) return Narrowphase::Apart;
+    if (c.sensor) return collision.testOverlap(c.a, ba.xf, c.b, bb.xf) ? Narrowphase::Overlapping : Narrowphase::Separate;
+    const ShapeData& sa = w.shapes[c.a.shape];
+    const ShapeData& sb = w.shapes[c.b.shape];
+    c.friction = mixFriction(sa.friction, sb.friction);
+    c.restitution = mixRestitution(sa.restitution, sb.restitution);
+    c.rollingResistance = mixRollingResistance(sa, sb);
+    c.tangentSpeed = sa.tangentSpeed + sb.tangentSpeed;
+    const bool wasTouching = c.touching;
+    const ReuseLimits limits{.distance = w.def.contactReuseDistance,
+                             .reach = c.pointCount > 0 ? 0.0f  // only used without points
+                                                       : std::max(sa.maxExtent + length(ba.localCenter), sb.maxExtent + length(bb.localCenter)),
+                             .box2dMargin = collide::box2dSkin(sa.type) + collide::box2dSkin(sb.type),
+                             .skinOffset = w.def.box2dSkin ? 0.0f : collide::skinOffset(sa.type) + collide::skinOffset(sb.type)};
+    if (!reuseManifold(c, ba, bb, limits))
+        takeManifold(c, collision.collide(c.a, ba.xf, c.b, bb.xf, w.def.box2dSkin), ba, bb, isFlat(sa) && isFlat(sb));
+    c.touching = c.pointCount > 0;
+    return wasTouching ? Narrowphase::WasTouching : Narrowphase::WasNotTouching;
+}
+
+// Whether the one-by-one pass of updateContacts has nothing to do for a contact the workers
+// collided: no begin or end event, no pre-solve call, no sleeper to wake. Awake flags only turn
+// on in that pass, so a body awake (or static) now needs no waking there.
+bool isQuiet(const World::Impl& w, const Contact& c, Narrowphase result) {
+    if (result != Narrowphase::WasTouching && result != Narrowphase::WasNotTouching) return false;
+    if (c.touching != (result == Narrowphase::WasTouching)) return false;
+    if (!c.touching) return true;
+    if (w.preSolve && (w.shapes[c.a.shape].enablePreSolveEvents || w.shapes[c.b.shape].enablePreSolveEvents)) return false;
+    const Body& ba = w.bodies[c.bodyA];
+    const Body& bb = w.bodies[c.bodyB];
+    return (ba.awake || ba.type == BodyType::Static) && (bb.awake || bb.type == BodyType::Static);
+}
+
+}  // namespace
+
+void updatePairs(World::Impl& w) {
+    ContactCache& cache = w.contactCache;
+    collide::CollisionSystem& collision = w.collision;
+    // Every proxy that moved out of its fat AABB (or is new) looks for overlapping proxies, unless
+    // its filter rejects every shape (pairWanted would refuse all it finds).
+    // The workers query the tree side by side, each into its own list.
+    cache.newPairsOf.resize(static_cast<size_t>(w.workers.count()));
+    for (std::vector<NewPair>& found : cache.newPairsOf) found.clear();
+    w.workers.parallelFor(static_cast<int>(w.movedProxies.size()), 16, [&](int begin, int end, int worker) {
+        std::vector<NewPair>& found = cache.newPairsOf[static_cast<size_t>(worker)];
+        for (int k = begin; k < end; ++k) {
+            const int proxy = w.movedProxies[k];
+            if (w.shapes.pairsWithNothing(w.shapes[collision.proxyKey(proxy).shape].filter)) continue;
+            collision.query(collision.fatAABB(proxy), [&](int other) {
+                // When both moved, only the pair's lower proxy reports it. Pairs that have a contact
+                // are most of what a large moving proxy finds: they are dropped here, before the sort.
+                if (other == proxy || (other < proxy && collision.wasMoved(other))) return true;
+                if (cache.pairs.contains(proxyPairKey(proxy, other)) || !pairWanted(w, proxy, other)) return true;
+                NewPair p{collision.proxyKey(proxy), collision.proxyKey(other), proxy, other};
+                if (std::tie(p.b.shape, p.b.child) < std::tie(p.a.shape, p.a.child)) {
+                    std::swap(p.a, p.b);
+                    std::swap(p.proxyA, p.proxyB);
+                }
+                found.push_back(p);
+                return true;
+            });
+        }
+    });
+    std::vector<NewPair>& newPairs = cache.newPairs;
+    newPairs.clear();
+    for (const std::vector<NewPair>& found : cache.newPairsOf) newPairs.insert(newPairs.end(), found.begin(), found.end());
+    for (int proxy : w.movedProxies) collision.clearMoved(proxy);
+    w.movedProxies.clear();
+    // The tree's internal shape and the workers' split decide the order pairs are found in.
+    // Contacts are created in the order of their child keys instead, so that contact order (and
+    // the solver's) depends on the world's state alone: a world restored from a snapshot, with a
+    // rebuilt tree, or stepped by any number of workers, steps bit for bit alike.
+    std::sort(newPairs.begin(), newPairs.end(), [](const NewPair& x, const NewPair& y) {
+        return std::tie(x.a.shape, x.a.child, x.b.shape, x.b.child) < std::tie(y.a.shape, y.a.child, y.b.shape, y.b.child);
+    });
+    for (const NewPair& p : newPairs) addPair(w, p.proxyA, p.proxyB);
+}
+
+void destroyContact(World::Impl& w, int index) {
+    ContactCache& cache = w.contactCache;
+    Contact& c = cache.contacts[index];
+    if (c.touching || c.overlapping) w.reportTouch(c, false);
+    cache.pairs.erase(c.pairKey);
+    cache.bodyLists.unlink(cache.contacts, index, 0, c.bodyA);
+    cache.bodyLists.unlink(cache.contacts, index, 1, c.bodyB);
+    cache.contacts.destroy(index);
+}
+
+void destroyContactsOf(World::Impl& w, int bodyIndex, int shapeIndex) {
+    const ContactCache& cache = w.contactCache;
+    cache.bodyLists.forEach(cache.contacts, bodyIndex, [&](int index, int) {
+        const Contact& c = cache.contacts[index];
+        if (shapeIndex < 0 || c.a.shape == shapeIndex || c.b.shape == shapeIndex) {
+            // The other body loses a support: wake it.
+            const int other = c.bodyA == bodyIndex ? c.bodyB : c.bodyA;
+            if (c.touching) w.wake(other);
+            destroyContact(w, index);
+        }
+    });
+}
+
+// Narrowphase for every contact with an awake body: the workers run collideContact on those
+// whose bodies were awake as the step began; then, in pool order, contacts are destroyed, events
+// raised and sleepers woken — and a contact whose body was woken by an earlier one in that order
+// takes its narrowphase there, as a one-by-one pass would. Quiet contacts skip that pass.
+void updateContacts(World::Impl& w) {
+    ContactCache& cache = w.contactCache;
+    const int count = cache.contacts.capacity();
+    cache.narrowphase.resize(static_cast<size_t>(count));
+    w.workers.parallelFor(count, 64, [&](int begin, int end, int) {
+        for (int index = begin; index < end; ++index) {
+            Contact& c = cache.contacts[index];
+            const bool due = c.alive && (w.bodies[c.bodyA].awake || w.bodies[c.bodyB].awake);
+            Narrowphase result = due ? collideContact(w, index) : Narrowphase::Skipped;
+            if (isQuiet(w, c, result)) {
+                if (!c.touching) c.rollingImpulse = 0.0f;
+                result = Narrowphase::Quiet;
+            }
+            cache.narrowphase[index] = result;
+        }
+    });
+    for (int index = 0; index < count; ++index) {
+        Narrowphase result = cache.narrowphase[index];
+        if (result == Narrowphase::Quiet) continue;
+        Contact& c = cache.contacts[index];
+        if (!c.alive) continue;
+        Body& ba = w.bodies[c.bodyA];
+        Body& bb = w.bodies[c.bodyB];
+        if (result == Narrowphase::Skipped) {
+            if (!ba.awake && !bb.awake) continue;
+            result = collideContact(w, index);
+        }
+        if (result == Narrowphase::Apart) {
+            destroyContact(w, index);
+            continue;
+        }
+        if (c.sensor) {
+            const bool overlapping = result == Narrowphase::Overlapping;
+            if (overlapping != c.overlapping) {
+                c.overlapping = overlapping;
+                w.reportTouch(c, overlapping);
+            }
+            continue;
+        }
+        const ShapeData& sa = w.shapes[c.a.shape];
+        const ShapeData& sb = w.shapes[c.b.shape];
+        if (c.touching && w.preSolve && (sa.enablePreSolveEvents || sb.enablePreSolveEvents) &&
+            !w.preSolve(w.shapeId(c.a.shape), w.shapeId(c.b.shape), w.contactData(c))) {
+            c.pointCount = 0;  // disabled for this step, and its manifold is not kept
+            c.touching = false;
+            c.reuseValid = false;
+        }
+        if (!c.touching) c.rollingImpulse = 0.0f;
+        if (c.touching != (result == Narrowphase::WasTouching)) w.reportTouch(c, c.touching);
+        // An awake body touching a sleeping one wakes the sleeper's island.
+        if (c.touching) {
+            if (!ba.awake && ba.type != BodyType::Static && bb.awake) w.wake(c.bodyA);
+            if (!bb.awake && bb.type != BodyType::Static && ba.awake) w.wake(c.bodyB);
+        }
+    }
+}
+
+}  // namespace perpdot

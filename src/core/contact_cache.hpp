@@ -1,0 +1,85 @@
+// The persistent contact cache (contact_cache.cpp): a contact for each broadphase pair of shape
+// children that may touch, with its manifold and the accumulated impulses that warm-start the next
+// step, found by updatePairs and kept up to date by updateContacts.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "collide/collision.hpp"
+#include "collide/pair_set.hpp"
+#include "core/edge_list.hpp"
+#include "core/pool.hpp"
+#include "perpdot/world.hpp"
+
+namespace perpdot {
+
+struct ContactPointState {
+    Vec2 point;             // world, at the last narrowphase
+    Vec2 anchorA, anchorB;  // from each body's centre of mass to the point
+    float separation = 0;
+    float normalImpulse = 0, tangentImpulse = 0, maxNormalImpulse = 0;
+    uint32_t id = 0;
+    float baseSeparation = 0;  // at the last narrowphase, for a kept manifold (manifold_reuse.hpp)
+};
+
+struct Contact {
+    bool alive = false;
+    bool touching = false;     // has manifold points and takes part in the solve (never for sensors)
+    bool sensor = false;       // a sensor and a visitor: overlap test only, no constraint
+    bool overlapping = false;  // sensor contacts: the shapes overlap
+    uint64_t pairKey = 0;
+    int proxyA = -1, proxyB = -1;
+    collide::ChildKey a, b;
+    int bodyA = -1, bodyB = -1;
+    float friction = 0, restitution = 0;
+    float rollingResistance = 0, tangentSpeed = 0;
+    float rollingImpulse = 0;  // warm start of the rolling-resistance row
+    Vec2 normal;
+    int pointCount = 0;
+    ContactPointState points[2];
+    // The pose at the last narrowphase (manifold_reuse.hpp): B's centre in A's frame, both angles.
+    bool reuseValid = false;
+    Vec2 reuseOffset;
+    float reuseAngleA = 0, reuseAngleB = 0;
+    Edge edges[2];  // in bodyA's list (side 0) and bodyB's (side 1): ContactCache::bodyLists
+};
+
+// Identity of a broadphase pair in ContactCache::pairs (never 0: the two proxies differ).
+inline uint64_t proxyPairKey(int proxyA, int proxyB) {
+    const auto lo = static_cast<uint32_t>(std::min(proxyA, proxyB));
+    const auto hi = static_cast<uint32_t>(std::max(proxyA, proxyB));
+    return (static_cast<uint64_t>(lo) << 32) | hi;
+}
+
+// A pair found by the broadphase this step, child keys in order (a < b).
+struct NewPair {
+    collide::ChildKey a, b;
+    int proxyA = -1, proxyB = -1;
+};
+
+// What the narrowphase of a contact found: not run (both bodies asleep), the fat AABBs apart, a
+// sensor's overlap, or a contact's manifold updated and whether it touched before.
+// Quiet: collided by the workers, and nothing is left for updateContacts' one-by-one pass.
+enum class Narrowphase : uint8_t { Skipped, Apart, Overlapping, Separate, WasTouching, WasNotTouching, Quiet };
+
+struct ContactCache {
+    Pool<Contact> contacts;
+    EdgeList bodyLists;      // each body's contacts
+    collide::PairSet pairs;  // broadphase pairs that have a contact
+    std::vector<NewPair> newPairs;                 // updatePairs scratch: the pairs found,
+    std::vector<std::vector<NewPair>> newPairsOf;  // by each worker
+    std::vector<Narrowphase> narrowphase;          // updateContacts scratch, by contact
+};
+
+// Stages of the step (step.cpp): new contacts for the pairs of proxies that moved (in the order
+// of their child keys), then the narrowphase of every contact with an awake body, with begin and
+// end events, the pre-solve callback and waking.
+void updatePairs(World::Impl& world);
+void updateContacts(World::Impl& world);
+
+void destroyContact(World::Impl& world, int contact);  // with its end event
+void destroyContactsOf(World::Impl& world, int body, int shape);  // shape = -1: all of the body's contacts
+
+}  // namespace perpdot

@@ -1,0 +1,116 @@
+// A pool of items in one contiguous std::vector, addressed by index: destroyed slots go on a free
+// list and the last one freed is reused first. Items carry `alive` and, when they are named by
+// ids, a `generation` that destroy() advances, so an id of a destroyed item is recognised as stale.
+//
+// The free list's order decides which slot the next item takes, so snapshots save it as it is
+// (snapshot.cpp) and restore it with restoreFreeList.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "perpdot/error.hpp"
+
+namespace perpdot {
+
+template <class T>
+class Pool {
+public:
+    static constexpr bool hasGeneration = requires(T item) { item.generation; };
+
+    T& operator[](int index) { return items_[static_cast<size_t>(index)]; }
+    const T& operator[](int index) const { return items_[static_cast<size_t>(index)]; }
+
+    int capacity() const { return static_cast<int>(items_.size()); }  // slots, live or free
+    int size() const { return capacity() - static_cast<int>(free_.size()); }  // live items
+
+    // Every slot, live or free, in index order.
+    std::span<T> slots() { return items_; }
+    std::span<const T> slots() const { return items_; }
+    const std::vector<int>& freeList() const { return free_; }
+
+    // fn(index, item) for each live item in index order.
+    template <class Fn>
+    void forEachLive(Fn fn) {
+        forEachLiveIn(slots(), fn);
+    }
+    template <class Fn>
+    void forEachLive(Fn fn) const {
+        forEachLiveIn(slots(), fn);
+    }
+
+    bool isValid(int index, uint32_t generation) const
+        requires hasGeneration
+    {
+        return index >= 0 && index < capacity() && items_[index].alive && items_[index].generation == generation;
+    }
+
+    // The live item of id (index, generation); `what` names the id type in the Error for a stale or invalid one.
+    const T& checked(int index, uint32_t generation, const char* what) const
+        requires hasGeneration
+    {
+        if (!isValid(index, generation))
+            throw Error(std::string("stale or invalid ") + what + " (index " + std::to_string(index) + ", generation " +
+                        std::to_string(generation) + ")");
+        return items_[index];
+    }
+    T& checked(int index, uint32_t generation, const char* what)
+        requires hasGeneration
+    {
+        return const_cast<T&>(std::as_const(*this).checked(index, generation, what));
+    }
+
+    // A value-initialised live item in the last freed slot, or in a new one; it keeps the slot's generation.
+    int create() {
+        int index;
+        if (!free_.empty()) {
+            index = free_.back();
+            free_.pop_back();
+        } else {
+            index = capacity();
+            items_.emplace_back();
+        }
+        T& item = items_[index];
+        if constexpr (hasGeneration) {
+            const uint32_t generation = item.generation;
+            item = T{};
+            item.generation = generation;
+        } else {
+            item = T{};
+        }
+        item.alive = true;
+        return index;
+    }
+
+    // Frees the slot; the item keeps its data until the slot is reused.
+    void destroy(int index) {
+        T& item = items_[index];
+        item.alive = false;
+        if constexpr (hasGeneration) ++item.generation;
+        free_.push_back(index);
+    }
+
+    // A snapshot's slots, all free and value-initialised until read into, then its free list
+    // (checked by the reader against the live slots).
+    void restoreSlots(int count) {
+        items_.assign(static_cast<size_t>(count), T{});
+        free_.clear();
+    }
+    void restoreFreeList(std::vector<int> free) { free_ = std::move(free); }
+
+private:
+    // Over a copy of the span, so that fn's writes (through a char, say) cannot make it reload the vector.
+    template <class Item, class Fn>
+    static void forEachLiveIn(std::span<Item> items, Fn& fn) {
+        for (size_t i = 0; i < items.size(); ++i)
+            if (items[i].alive) fn(static_cast<int>(i), items[i]);
+    }
+
+    std::vector<T> items_;
+    std::vector<int> free_;
+};
+
+}  // namespace perpdot

@@ -1,0 +1,81 @@
+// The step's working arrays (step scratch): filled by the stages of World::step (stages.hpp) and
+// read only within a step, kept from one step to the next so that they are rebuilt without
+// reallocating. A snapshot holds none of them.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "collide/collision.hpp"
+#include "core/contact_solver_wide.hpp"
+#include "core/graph_color.hpp"
+#include "core/solver_stages.hpp"
+#include "core/step_context.hpp"
+
+namespace perpdot {
+
+// A contact's rows for this step (ContactRows<float>, contact_solver_wide.hpp) and where they
+// came from: the bodies' solver slots and the contact.
+struct ContactConstraint : ContactRows<float> {
+    int indexA = 0, indexB = 0;  // solver slots
+    int contact = -1;
+    int pointCount = 0;
+};
+
+// A body's path over the rest of a step, for continuous collision between moving bodies
+// (continuous_impacts.cpp): centre of mass and angle go linearly from (c0, a0) at time t0 to
+// (c1, a1) at the step's end; times are fractions of the step.
+struct Mover {
+    int body = -1;
+    float t0 = 0;
+    Vec2 c0, c1;
+    float a0 = 0, a1 = 0;
+    Vec2 v;      // velocity along the path
+    float w = 0;
+    Vec2 stepStart;  // centre at the step's start: the broadphase displacement
+    AABB swept;      // of its shapes over the whole step (fast movers)
+    bool fast = false;      // found fast by isFast (else: met by a fast mover)
+    bool sweepStatic = false;  // its path still has to be swept against static shapes
+    bool moved = false;     // its path differs from what finalizeBodies wrote to the body
+    float staticTime = 1;   // time of impact with static shapes (valid when !sweepStatic)
+};
+
+// Two movers of which at least one is a bullet, with their next time of impact.
+struct MoverPair {
+    int a = -1, b = -1;  // movers, a < b
+    bool dirty = true;   // a path changed: the time of impact is to be recomputed
+    float time = 1;
+    collide::ChildKey keyA, keyB;  // the children that meet first
+};
+
+struct StepScratch {
+    // Solver arrays.
+    std::vector<BodyState> states;
+    std::vector<int> awakeBodies;       // body index of states[i + 1]
+    std::vector<uint8_t> touchingBodies;  // by body index: has a touching contact (integrateVelocities)
+    std::vector<float> stepRotation;    // Δθ of states[i], summed over substeps
+    std::vector<uint8_t> bodyMotion;    // finalizeBodies scratch, by awake body: its Motion (integrate.cpp)
+    std::vector<SubstepForces> substepForces;  // of states[i]
+    std::vector<ContactConstraint> constraints;
+    std::vector<int> bouncingConstraints;        // the constraints with restitution, for its pass
+    std::vector<std::array<int, 2>> constraintSlots;  // by constraint: its bodies' solver slots, for colouring
+    GraphColoring contactColoring;               // colours of `constraints` (graph_color.hpp)
+    int contactLanes = chooseContactLanes();     // constraints per block: 4, or 8 with AVX2
+    std::vector<ContactBlock> contactBlocks;     // four constraints of one colour each, in colour order,
+    std::vector<ContactBlock8> contactBlocks8;   // or eight (contactLanes = 8)
+    ColorStarts contactBlockStart{};             // colour c is contactBlocks[start[c] .. start[c + 1])
+    std::vector<int> contactColors;              // prepareContactBlocks scratch: colour of each constraint,
+    std::vector<int> contactOrder;               // and the constraints sorted by colour
+    std::vector<int> overflowConstraints;        // constraints no colour could take: solved one by one
+    SolverStages solverStages;                   // the substeps' stages for the workers
+    std::vector<int> islandParent;      // union-find scratch for sleeping, by body index
+    std::vector<float> islandMinSleep;
+    std::vector<int> islandHead;
+    // Continuous collision between moving bodies (continuous_impacts.cpp).
+    std::vector<Mover> movers;          // fast bodies and what they may hit,
+    std::vector<MoverPair> moverPairs;  // the pairs among them that include a bullet,
+    std::vector<int> moverOfBody;       // and each body's mover (-1: none)
+};
+
+}  // namespace perpdot
