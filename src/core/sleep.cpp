@@ -2,6 +2,7 @@
 // whose every body has been slower than the tolerances for timeToSleep falls asleep as a whole.
 #include <algorithm>
 #include <limits>
+#include <numeric>
 
 #include "core/world_impl.hpp"
 
@@ -33,11 +34,9 @@ void unite(std::vector<int>& parent, int a, int b) {
 void World::Impl::updateSleep(float h) {
     if (!def.enableSleep) return;
     const size_t n = bodies.capacity();
-    scratch.islandParent.resize(n);
     bool anySleepy = false;
     for (int i : scratch.awakeBodies) {
         Body& b = bodies[i];
-        scratch.islandParent[i] = i;
         if (!b.allowSleep || b.w * b.w > angularSleepTolerance * angularSleepTolerance ||
             dot(b.v, b.v) > linearSleepTolerance * linearSleepTolerance) {
             b.sleepTime = 0.0f;
@@ -47,6 +46,11 @@ void World::Impl::updateSleep(float h) {
         }
     }
     if (!anySleepy) return;
+
+    // Every body starts as its own island, those woken after the step's integration (by a broken
+    // joint) too: they are awake but not among awakeBodies, and no value of an earlier step is read.
+    scratch.islandParent.resize(n);
+    std::iota(scratch.islandParent.begin(), scratch.islandParent.end(), 0);
 
     auto joinable = [&](int body) { return bodies[body].type == BodyType::Dynamic && bodies[body].awake; };
     contactCache.contacts.forEachLive([&](int, const Contact& c) {

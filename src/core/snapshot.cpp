@@ -458,6 +458,12 @@ void World::restore(std::span<const uint8_t> bytes) {
     fresh->def.finishTask = impl_->def.finishTask;
     fresh->def.userTaskContext = impl_->def.userTaskContext;
     fresh->workers = std::move(impl_->workers);
+    // The step's working arrays hold nothing between steps but their capacity: keeping this
+    // world's, a rollback's next step reallocates nothing.
+    fresh->scratch = std::move(impl_->scratch);
+    fresh->contactCache.newPairs = std::move(impl_->contactCache.newPairs);
+    fresh->contactCache.newPairsOf = std::move(impl_->contactCache.newPairsOf);
+    fresh->contactCache.narrowphase = std::move(impl_->contactCache.narrowphase);
     impl_ = std::move(fresh);
 }
 
