@@ -102,6 +102,7 @@ void prepareContacts(World::Impl& w, const StepContext& ctx) {
     w.workers.parallelSelect(
         static_cast<int>(w.constraints.size()), [&](int k) { return w.constraints[k].restitution != 0.0f; },
         [&](int total) { w.bouncingConstraints.resize(total); }, [&](int slot, int k) { w.bouncingConstraints[slot] = k; });
+    findContactGroups(w, ctx);
     prepareContactBlocks(w);
 }
 

@@ -71,9 +71,10 @@ void prepareContactBlocks(World::Impl& w) {
     const int count = static_cast<int>(w.constraints.size());
     w.contactColoring.reset(static_cast<int>(w.states.size()));
     w.contactColors.resize(w.constraints.size());
+    const std::vector<uint8_t>& direct = w.contactGroups.direct;  // solved by their groups instead
     for (int index = 0; index < count; ++index) {
         const auto [slotA, slotB] = w.constraintSlots[index];
-        w.contactColors[index] = w.contactColoring.assign(slotA, slotB);
+        w.contactColors[index] = direct[index] ? overflow : w.contactColoring.assign(slotA, slotB);
     }
     const ColorStarts start = sortByColor(w.contactColors, w.contactOrder);
 
@@ -105,7 +106,9 @@ void prepareContactBlocks(World::Impl& w) {
             packContactRows(lanes, block.rows);
         }
     });
-    w.overflowConstraints.assign(w.contactOrder.begin() + start[overflow], w.contactOrder.end());
+    w.overflowConstraints.clear();
+    for (int position = start[overflow]; position < count; ++position)
+        if (!direct[w.contactOrder[position]]) w.overflowConstraints.push_back(w.contactOrder[position]);
 }
 
 int contactBlockCount(const World::Impl& w, int color) {

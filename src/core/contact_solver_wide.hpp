@@ -70,22 +70,47 @@ void warmStartContact(const ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b)
     applyAngularImpulse(c, a, b, c.rollingImpulse);
 }
 
-// One pass over a constraint's rows: non-penetration, then friction, then rolling resistance.
+// Current separation of a point without a new narrowphase: s = base + (ΔpB + rB' − ΔpA − rA')·n,
+// with r' the anchor turned with its body where the surface is flat.
+template <class F>
+F currentSeparation(const ContactRows<F>& c, const ContactPointRows<F>& cp, const BodyLanes<F>& a, const BodyLanes<F>& b) {
+    const Vec2T<F> rA = cp.anchorA, rB = cp.anchorB;
+    const Vec2T<F> turnedA = rA + c.turnsA * (rotate(a.dq, rA) - rA), turnedB = rB + c.turnsB * (rotate(b.dq, rB) - rB);
+    return cp.baseSeparation + dot(b.dp - a.dp + turnedB - turnedA, c.normal);
+}
+
+// The tangent rows, after the normal ones: Coulomb friction along t = perp(n), |λt| ≤ μ λn, then
+// rolling resistance, |λr| ≤ rollingResistance·Σλn. A conveyor's surfaces move clockwise around
+// their shapes, which is −tangentSpeed along perp(n): the friction row drives v_rel·t to it.
+template <class F>
+void solveTangentRows(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b) {
+    const Vec2T<F> t = perp(c.normal);
+    F totalNormalImpulse = 0.0f;
+    for (ContactPointRows<F>& cp : c.points) {
+        const Vec2T<F> rA = cp.anchorA, rB = cp.anchorB;
+        const F vt = dot(relativeVelocity(a, b, rA, rB), t) + c.tangentSpeed;
+        const F maxFriction = c.friction * cp.normalImpulse;
+        const F newImpulse = simd::clamp(cp.tangentImpulse - cp.tangentMass * vt, -maxFriction, maxFriction);
+        const F impulse = newImpulse - cp.tangentImpulse;
+        cp.tangentImpulse = newImpulse;
+        totalNormalImpulse += cp.normalImpulse;
+        applyImpulse(c, a, b, rA, rB, impulse * t);
+    }
+    const F maxLambda = c.rollingResistance * totalNormalImpulse;
+    const F lambda = c.rollingImpulse;
+    c.rollingImpulse = simd::clamp(lambda - c.rollingMass * (b.w - a.w), -maxLambda, maxLambda);
+    applyAngularImpulse(c, a, b, c.rollingImpulse - lambda);
+}
+
+// One pass over a constraint's rows: non-penetration (λn ≥ 0), then the tangent rows.
 template <class F>
 void solveContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, const StepContext& ctx, bool useBias) {
     using simd::max;
     using simd::select;
     const Vec2T<F> n = c.normal;
-    const Vec2T<F> dp = b.dp - a.dp;
-
-    // Non-penetration: λn ≥ 0.
-    F totalNormalImpulse = 0.0f;
     for (ContactPointRows<F>& cp : c.points) {
-        // Current separation without a new narrowphase: s = base + (ΔpB + rB' - ΔpA - rA')·n, with
-        // r' the anchor turned with its body where the surface is flat.
         const Vec2T<F> rA = cp.anchorA, rB = cp.anchorB;
-        const Vec2T<F> turnedA = rA + c.turnsA * (rotate(a.dq, rA) - rA), turnedB = rB + c.turnsB * (rotate(b.dq, rB) - rB);
-        const F s = cp.baseSeparation + dot(dp + turnedB - turnedA, n);
+        const F s = currentSeparation(c, cp, a, b);
         // Speculative (s > 0): bias = s/hs, a rigid row that may close the gap this substep, no more.
         const simd::MaskOf<F> speculative = s > F(0.0f);
         F bias = select(speculative, s * F(ctx.invHs), F(0.0f));
@@ -103,28 +128,9 @@ void solveContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, const Ste
         impulse = newImpulse - cp.normalImpulse;
         cp.normalImpulse = newImpulse;
         cp.maxNormalImpulse = max(cp.maxNormalImpulse, impulse);
-        totalNormalImpulse += newImpulse;
         applyImpulse(c, a, b, rA, rB, impulse * n);
     }
-
-    // Coulomb friction along t = perp(n): |λt| ≤ μ λn. A conveyor's surfaces move clockwise
-    // around their shapes, which is −tangentSpeed along perp(n): the row drives v_rel·t to it.
-    const Vec2T<F> t = perp(n);
-    for (ContactPointRows<F>& cp : c.points) {
-        const Vec2T<F> rA = cp.anchorA, rB = cp.anchorB;
-        const F vt = dot(relativeVelocity(a, b, rA, rB), t) + c.tangentSpeed;
-        const F maxFriction = c.friction * cp.normalImpulse;
-        const F newImpulse = simd::clamp(cp.tangentImpulse - cp.tangentMass * vt, -maxFriction, maxFriction);
-        const F impulse = newImpulse - cp.tangentImpulse;
-        cp.tangentImpulse = newImpulse;
-        applyImpulse(c, a, b, rA, rB, impulse * t);
-    }
-
-    // Rolling resistance: an angular row on ωB − ωA, |λr| ≤ rollingResistance·Σλn.
-    const F maxLambda = c.rollingResistance * totalNormalImpulse;
-    const F lambda = c.rollingImpulse;
-    c.rollingImpulse = simd::clamp(lambda - c.rollingMass * (b.w - a.w), -maxLambda, maxLambda);
-    applyAngularImpulse(c, a, b, c.rollingImpulse - lambda);
+    solveTangentRows(c, a, b);
 }
 
 // Four constraints of one graph colour (no two share a dynamic body) as the lanes of one row set.

@@ -1,0 +1,247 @@
+#include "core/contact_groups.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "core/cholesky.hpp"
+#include "core/union_find.hpp"
+#include "core/world_impl.hpp"
+
+namespace perpdot {
+namespace {
+
+// Dropping rows whose impulse would turn negative, at most this many times a pass; then clamped.
+constexpr int maxPivots = 4;
+
+// One side of a normal row: J's entries for the body in solver slot `slot` (lin·v + ang·ω), with
+// the body's inverse mass and inertia. A body that cannot move has zero inverse mass and inertia.
+struct RowSide {
+    int slot;
+    Vec2 lin;
+    float ang, invMass, invInertia;
+};
+
+// −n, −perpDot(rA, n) for A; n, perpDot(rB, n) for B.
+std::array<RowSide, 2> sidesOf(const ContactConstraint& c, const ContactPointRows<float>& cp) {
+    const Vec2 n = c.normal;
+    return {RowSide{c.indexA, -n, -perpDot(cp.anchorA, n), c.invMassA, c.invIA},
+            RowSide{c.indexB, n, perpDot(cp.anchorB, n), c.invMassB, c.invIB}};
+}
+
+bool moves(int slot, float invMass, float invInertia) { return slot != 0 && (invMass != 0.0f || invInertia != 0.0f); }
+
+// The slot whose union-find root names the constraint's group; -1 if neither body moves.
+int groupSlot(const ContactConstraint& c) {
+    return moves(c.indexA, c.invMassA, c.invIA) ? c.indexA : moves(c.indexB, c.invMassB, c.invIB) ? c.indexB : -1;
+}
+
+// K_rs = Σ over the bodies rows r and s share: lin_r·lin_s / m + ang_r ang_s / I.
+double coupling(const std::array<RowSide, 2>& r, const std::array<RowSide, 2>& s) {
+    double k = 0.0;
+    for (const RowSide& p : r)
+        for (const RowSide& q : s)
+            if (p.slot == q.slot && p.slot != 0)
+                k += static_cast<double>(p.invMass) * dot(p.lin, q.lin) + static_cast<double>(p.invInertia) * p.ang * q.ang;
+    return k;
+}
+
+// Rows of group `group` assembled into K and factored into L; false if K is singular.
+bool assemble(World::Impl& w, ContactGroups& g, int group) {
+    const int first = g.rowStart[group], n = g.rowStart[group + 1] - first;
+    double* K = &g.K[g.matrixStart[group]];
+    double* L = &g.L[g.matrixStart[group]];
+    auto sides = [&](int row) {
+        const auto [k, i] = g.rows[first + row];
+        const ContactConstraint& c = w.constraints[k];
+        return sidesOf(c, c.points[i]);
+    };
+    for (int r = 0; r < n; ++r) {
+        const std::array<RowSide, 2> sr = sides(r);
+        for (int s = 0; s <= r; ++s) K[r * n + s] = K[s * n + r] = coupling(sr, sides(s));
+    }
+    std::copy(K, K + static_cast<size_t>(n) * n, L);
+    return choleskyFactor(L, n);
+}
+
+}  // namespace
+
+void findContactGroups(World::Impl& w, const StepContext& ctx) {
+    ContactGroups& g = w.contactGroups;
+    const int slots = static_cast<int>(w.states.size());
+    const int count = static_cast<int>(w.constraints.size());
+    g.direct.assign(static_cast<size_t>(count), 0);
+    g.constraints.clear();
+    g.start.assign(1, 0);
+    g.rows.clear();
+    g.rowStart.assign(1, 0);
+    g.matrixStart.assign(1, 0);
+    // Loads are measured in g: λn K_ii / hs ≥ loadTrigger·g, i.e. λn ≥ loadTrigger·g·hs·normalMass.
+    const float loadImpulse = ContactGroups::loadTrigger * length(w.def.gravity) * ctx.hs;
+    if (!(loadImpulse > 0.0f)) return;
+
+    g.root.resize(static_cast<size_t>(slots));
+    std::iota(g.root.begin(), g.root.end(), 0);
+    for (const ContactConstraint& c : w.constraints)
+        if (moves(c.indexA, c.invMassA, c.invIA) && moves(c.indexB, c.invMassB, c.invIB)) unite(g.root, c.indexA, c.indexB);
+    g.rowCount.assign(static_cast<size_t>(slots), 0);
+    g.loaded.assign(static_cast<size_t>(slots), 0);
+    bool anyLoaded = false;
+    for (const ContactConstraint& c : w.constraints) {
+        const int slot = groupSlot(c);
+        if (slot < 0) continue;
+        const int root = findRoot(g.root, slot);
+        g.rowCount[root] += c.pointCount;
+        for (int i = 0; i < c.pointCount; ++i)
+            if (c.points[i].normalImpulse >= loadImpulse * c.points[i].normalMass && c.points[i].normalMass > 0.0f)
+                g.loaded[root] = 1, anyLoaded = true;
+    }
+    if (!anyLoaded) return;
+
+    // Groups in the order of their first constraint; the constraints of each in constraint order.
+    g.groupOf.assign(static_cast<size_t>(slots), -1);
+    int groups = 0;
+    for (const ContactConstraint& c : w.constraints) {
+        const int slot = groupSlot(c);
+        if (slot < 0) continue;
+        const int root = findRoot(g.root, slot);
+        if (g.loaded[root] && g.rowCount[root] <= ContactGroups::maxRows && g.groupOf[root] < 0) g.groupOf[root] = groups++;
+    }
+    g.start.assign(static_cast<size_t>(groups) + 1, 0);
+    for (const ContactConstraint& c : w.constraints) {
+        const int slot = groupSlot(c);
+        if (slot >= 0 && g.groupOf[g.root[slot]] >= 0) ++g.start[g.groupOf[g.root[slot]] + 1];
+    }
+    std::partial_sum(g.start.begin(), g.start.end(), g.start.begin());
+    g.constraints.resize(static_cast<size_t>(g.start.back()));
+    g.rowCount.assign(static_cast<size_t>(groups), 0);  // now: constraints placed per group
+    for (int k = 0; k < count; ++k) {
+        const int slot = groupSlot(w.constraints[k]);
+        if (slot < 0 || g.groupOf[g.root[slot]] < 0) continue;
+        const int group = g.groupOf[g.root[slot]];
+        g.constraints[g.start[group] + g.rowCount[group]++] = k;
+    }
+
+    // Each group's rows, K and factor; a group whose K does not factor stays with the sequential rows.
+    int kept = 0;
+    for (int group = 0; group < groups; ++group) {
+        const int rowsBefore = static_cast<int>(g.rows.size());
+        for (int s = g.start[group]; s < g.start[group + 1]; ++s)
+            for (int i = 0; i < w.constraints[g.constraints[s]].pointCount; ++i) g.rows.push_back({g.constraints[s], i});
+        const int n = static_cast<int>(g.rows.size()) - rowsBefore;
+        g.rowStart.push_back(static_cast<int>(g.rows.size()));
+        g.matrixStart.push_back(g.matrixStart.back() + static_cast<size_t>(n) * n);
+        g.K.resize(g.matrixStart.back());
+        g.L.resize(g.matrixStart.back());
+        if (!assemble(w, g, kept)) {
+            g.rows.resize(static_cast<size_t>(rowsBefore));
+            g.rowStart.pop_back();
+            g.matrixStart.pop_back();
+            continue;
+        }
+        // Keep the group: its constraints move down to follow the groups kept before it.
+        const int size = g.start[group + 1] - g.start[group];
+        std::copy(g.constraints.begin() + g.start[group], g.constraints.begin() + g.start[group + 1],
+                  g.constraints.begin() + g.start[kept]);
+        g.start[kept + 1] = g.start[kept] + size;
+        for (int s = g.start[kept]; s < g.start[kept + 1]; ++s) g.direct[g.constraints[s]] = 1;
+        ++kept;
+    }
+    g.start.resize(static_cast<size_t>(kept) + 1);
+    g.constraints.resize(static_cast<size_t>(g.start.back()));
+    for (std::vector<double>* v : {&g.lambda, &g.y, &g.x, &g.rhs}) v->resize(ContactGroups::maxRows);
+    g.activeK.resize(static_cast<size_t>(ContactGroups::maxRows) * ContactGroups::maxRows);
+    g.active.resize(ContactGroups::maxRows);
+}
+
+namespace {
+
+// x = Δλ = K⁻¹ y with λ + Δλ ≥ 0: the rows whose impulse would turn negative drop out (Δλ = −λ)
+// and the others are solved again, K_AA Δλ_A = y_A + K_AI λ_I.
+void solveActive(ContactGroups& g, int n, const double* K, const double* L) {
+    std::copy(g.y.begin(), g.y.begin() + n, g.x.begin());
+    choleskySolve(L, n, g.x.data());
+    std::fill(g.active.begin(), g.active.begin() + n, 1);
+    for (int pivot = 0; pivot < maxPivots; ++pivot) {
+        bool dropped = false;
+        for (int r = 0; r < n; ++r)
+            if (g.active[r] && g.lambda[r] + g.x[r] < 0.0) g.active[r] = 0, dropped = true;
+        if (!dropped) return;
+        int m = 0;
+        for (int r = 0; r < n; ++r) {
+            if (!g.active[r]) continue;
+            g.rhs[m] = g.y[r];
+            int column = 0;
+            for (int s = 0; s < n; ++s) {
+                if (g.active[s])
+                    g.activeK[m * n + column++] = K[r * n + s];
+                else
+                    g.rhs[m] += K[r * n + s] * g.lambda[s];
+            }
+            ++m;
+        }
+        // activeK holds the m x m system at stride n: pack it to stride m for the factor.
+        for (int r = 1; r < m; ++r) std::copy_n(&g.activeK[r * n], m, &g.activeK[r * m]);
+        if (!choleskyFactor(g.activeK.data(), m)) return;  // the apply clamps what is left
+        choleskySolve(g.activeK.data(), m, g.rhs.data());
+        for (int r = 0, i = 0; r < n; ++r) g.x[r] = g.active[r] ? g.rhs[i++] : -g.lambda[r];
+    }
+}
+
+// One pass of a group's normal rows as one system, the targets from the velocities before any
+// impulse of the pass: v_rel·n → −s/hs for a speculative row (rigid, it may close the gap); with
+// bias, the soft step K Δλ = −massScale·(v + biasRate·C) − impulseScale·K λ; without, v → 0.
+void solveGroupNormals(World::Impl& w, ContactGroups& g, int group, const StepContext& ctx, bool useBias) {
+    const int first = g.rowStart[group], n = g.rowStart[group + 1] - first;
+    const double* K = &g.K[g.matrixStart[group]];
+    const double* L = &g.L[g.matrixStart[group]];
+    const Softness& soft = ctx.contactSoftness;  // one softness for all rows: the rest state C = K F / ω²
+    for (int r = 0; r < n; ++r) g.lambda[r] = w.constraints[g.rows[first + r][0]].points[g.rows[first + r][1]].normalImpulse;
+    for (int r = 0; r < n; ++r) {
+        const auto [k, i] = g.rows[first + r];
+        const ContactConstraint& c = w.constraints[k];
+        const ContactPointRows<float>& cp = c.points[i];
+        const BodyState &a = w.states[c.indexA], &b = w.states[c.indexB];
+        const float s = currentSeparation(c, cp, a, b);
+        const float vn = dot(relativeVelocity(a, b, cp.anchorA, cp.anchorB), c.normal);
+        if (s > 0.0f) {
+            g.y[r] = -(vn + s * ctx.invHs);
+        } else if (useBias) {
+            double kLambda = 0.0;  // (K λ)_r, λ from before the pass
+            for (int q = 0; q < n; ++q) kLambda += K[r * n + q] * g.lambda[q];
+            const float push = std::max(soft.biasRate * std::min(s + ctx.pushSlop, 0.0f), -ctx.maxBiasVelocity);
+            g.y[r] = -soft.massScale * (vn + push) - soft.impulseScale * kLambda;
+        } else {
+            g.y[r] = -vn;
+        }
+    }
+    solveActive(g, n, K, L);
+    for (int r = 0; r < n; ++r) {
+        const auto [k, i] = g.rows[first + r];
+        ContactConstraint& c = w.constraints[k];
+        ContactPointRows<float>& cp = c.points[i];
+        const float newImpulse = std::max(cp.normalImpulse + static_cast<float>(g.x[r]), 0.0f);
+        const float impulse = newImpulse - cp.normalImpulse;
+        cp.normalImpulse = newImpulse;
+        cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, impulse);
+        applyImpulse(c, w.states[c.indexA], w.states[c.indexB], cp.anchorA, cp.anchorB, impulse * c.normal);
+    }
+}
+
+}  // namespace
+
+void contactGroupRows(World::Impl& w, const StepContext& ctx, RowPass pass) {
+    ContactGroups& g = w.contactGroups;
+    for (int group = 0; group + 1 < static_cast<int>(g.start.size()); ++group) {
+        if (pass != RowPass::WarmStart) solveGroupNormals(w, g, group, ctx, pass == RowPass::Solve);
+        for (int s = g.start[group]; s < g.start[group + 1]; ++s) {
+            ContactConstraint& c = w.constraints[g.constraints[s]];
+            if (pass == RowPass::WarmStart)
+                warmStartContact(c, w.states[c.indexA], w.states[c.indexB]);
+            else
+                solveTangentRows(c, w.states[c.indexA], w.states[c.indexB]);
+        }
+    }
+}
+
+}  // namespace perpdot
