@@ -11,8 +11,10 @@
 namespace perpdot {
 namespace {
 
-// Dropping rows whose impulse would turn negative, at most this many times a pass; then clamped.
-constexpr int maxPivots = 4;
+// Principal pivots of a pass at most (solveComplementarity); what is left is clamped.
+constexpr int maxPivots = 8;
+// A dropped row approaching faster than its target by less than this (m/s) counts as separating.
+constexpr double separationTolerance = 1e-6;
 
 // One side of a normal row: J's entries for the body in solver slot `slot` (lin·v + ang·ω), with
 // the body's inverse mass and inertia. A body that cannot move has zero inverse mass and inertia.
@@ -156,17 +158,27 @@ void findContactGroups(World::Impl& w, const StepContext& ctx) {
 
 namespace {
 
-// x = Δλ = K⁻¹ y with λ + Δλ ≥ 0: the rows whose impulse would turn negative drop out (Δλ = −λ)
-// and the others are solved again, K_AA Δλ_A = y_A + K_AI λ_I.
-void solveActive(ContactGroups& g, int n, const double* K, const double* L) {
+// x = Δλ, the solution of the linear complementarity problem of the normal rows: K Δλ − y = w
+// with λ + Δλ ≥ 0, w ≥ 0 and (λ + Δλ)·w = 0 (a row either pushes or is left separating faster
+// than its target). Block principal pivoting (Júdice and Pires): start with every row pushing,
+// solve K_AA Δλ_A = y_A + K_AI λ_I for the pushing rows A (the others drop to λ = 0), then flip
+// every row that breaks its condition and solve again.
+void solveComplementarity(ContactGroups& g, int n, const double* K, const double* L) {
     std::copy(g.y.begin(), g.y.begin() + n, g.x.begin());
     choleskySolve(L, n, g.x.data());
     std::fill(g.active.begin(), g.active.begin() + n, 1);
     for (int pivot = 0; pivot < maxPivots; ++pivot) {
-        bool dropped = false;
-        for (int r = 0; r < n; ++r)
-            if (g.active[r] && g.lambda[r] + g.x[r] < 0.0) g.active[r] = 0, dropped = true;
-        if (!dropped) return;
+        bool flipped = false;
+        for (int r = 0; r < n; ++r) {
+            if (g.active[r]) {
+                if (g.lambda[r] + g.x[r] < 0.0) g.active[r] = 0, flipped = true;
+                continue;
+            }
+            double w = -g.y[r];
+            for (int s = 0; s < n; ++s) w += K[r * n + s] * g.x[s];
+            if (w < -separationTolerance) g.active[r] = 1, flipped = true;
+        }
+        if (!flipped) return;
         int m = 0;
         for (int r = 0; r < n; ++r) {
             if (!g.active[r]) continue;
@@ -180,7 +192,7 @@ void solveActive(ContactGroups& g, int n, const double* K, const double* L) {
             }
             ++m;
         }
-        // activeK holds the m x m system at stride n: pack it to stride m for the factor.
+        // activeK holds the m x m system at stride n: packed to stride m for the factor.
         for (int r = 1; r < m; ++r) std::copy_n(&g.activeK[r * n], m, &g.activeK[r * m]);
         if (!choleskyFactor(g.activeK.data(), m)) return;  // the apply clamps what is left
         choleskySolve(g.activeK.data(), m, g.rhs.data());
@@ -215,7 +227,7 @@ void solveGroupNormals(World::Impl& w, ContactGroups& g, int group, const StepCo
             g.y[r] = -vn;
         }
     }
-    solveActive(g, n, K, L);
+    solveComplementarity(g, n, K, L);
     for (int r = 0; r < n; ++r) {
         const auto [k, i] = g.rows[first + r];
         ContactConstraint& c = w.constraints[k];
