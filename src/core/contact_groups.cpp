@@ -11,8 +11,13 @@
 namespace perpdot {
 namespace {
 
-// Principal pivots of a pass at most (solveComplementarity); what is left is clamped.
+// Principal pivots of a pass at most (solveComplementarity); a pass that needs more is solved
+// row by row instead.
 constexpr int maxPivots = 8;
+// K's diagonal is raised by this fraction: more rows than the bodies have freedoms (a box on two
+// tiles: four rows, three freedoms) make K singular, and rows pushing against each other would
+// take any impulse. The rest state gains compliance·F K_ii / ω², a thousandth of the sequential sink.
+constexpr double compliance = 1e-3;
 // A dropped row approaching faster than its target by less than this (m/s) counts as separating.
 constexpr double separationTolerance = 1e-6;
 
@@ -61,6 +66,7 @@ bool assemble(World::Impl& w, ContactGroups& g, int group) {
     for (int r = 0; r < n; ++r) {
         const std::array<RowSide, 2> sr = sides(r);
         for (int s = 0; s <= r; ++s) K[r * n + s] = K[s * n + r] = coupling(sr, sides(s));
+        K[r * n + r] *= 1.0 + compliance;
     }
     std::copy(K, K + static_cast<size_t>(n) * n, L);
     return choleskyFactor(L, n);
@@ -163,7 +169,7 @@ namespace {
 // than its target). Block principal pivoting (Júdice and Pires): start with every row pushing,
 // solve K_AA Δλ_A = y_A + K_AI λ_I for the pushing rows A (the others drop to λ = 0), then flip
 // every row that breaks its condition and solve again.
-void solveComplementarity(ContactGroups& g, int n, const double* K, const double* L) {
+bool solveComplementarity(ContactGroups& g, int n, const double* K, const double* L) {
     std::copy(g.y.begin(), g.y.begin() + n, g.x.begin());
     choleskySolve(L, n, g.x.data());
     std::fill(g.active.begin(), g.active.begin() + n, 1);
@@ -178,7 +184,7 @@ void solveComplementarity(ContactGroups& g, int n, const double* K, const double
             for (int s = 0; s < n; ++s) w += K[r * n + s] * g.x[s];
             if (w < -separationTolerance) g.active[r] = 1, flipped = true;
         }
-        if (!flipped) return;
+        if (!flipped) return true;
         int m = 0;
         for (int r = 0; r < n; ++r) {
             if (!g.active[r]) continue;
@@ -194,16 +200,18 @@ void solveComplementarity(ContactGroups& g, int n, const double* K, const double
         }
         // activeK holds the m x m system at stride n: packed to stride m for the factor.
         for (int r = 1; r < m; ++r) std::copy_n(&g.activeK[r * n], m, &g.activeK[r * m]);
-        if (!choleskyFactor(g.activeK.data(), m)) return;  // the apply clamps what is left
+        if (!choleskyFactor(g.activeK.data(), m)) return false;
         choleskySolve(g.activeK.data(), m, g.rhs.data());
         for (int r = 0, i = 0; r < n; ++r) g.x[r] = g.active[r] ? g.rhs[i++] : -g.lambda[r];
     }
+    return false;
 }
 
 // One pass of a group's normal rows as one system, the targets from the velocities before any
 // impulse of the pass: v_rel·n → −s/hs for a speculative row (rigid, it may close the gap); with
 // bias, the soft step K Δλ = −massScale·(v + biasRate·C) − impulseScale·K λ; without, v → 0.
-void solveGroupNormals(World::Impl& w, ContactGroups& g, int group, const StepContext& ctx, bool useBias) {
+// False, and nothing applied, when its complementarity problem did not settle.
+bool solveGroupNormals(World::Impl& w, ContactGroups& g, int group, const StepContext& ctx, bool useBias) {
     const int first = g.rowStart[group], n = g.rowStart[group + 1] - first;
     const double* K = &g.K[g.matrixStart[group]];
     const double* L = &g.L[g.matrixStart[group]];
@@ -227,7 +235,7 @@ void solveGroupNormals(World::Impl& w, ContactGroups& g, int group, const StepCo
             g.y[r] = -vn;
         }
     }
-    solveComplementarity(g, n, K, L);
+    if (!solveComplementarity(g, n, K, L)) return false;
     for (int r = 0; r < n; ++r) {
         const auto [k, i] = g.rows[first + r];
         ContactConstraint& c = w.constraints[k];
@@ -238,6 +246,7 @@ void solveGroupNormals(World::Impl& w, ContactGroups& g, int group, const StepCo
         cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, impulse);
         applyImpulse(c, w.states[c.indexA], w.states[c.indexB], cp.anchorA, cp.anchorB, impulse * c.normal);
     }
+    return true;
 }
 
 }  // namespace
@@ -245,13 +254,17 @@ void solveGroupNormals(World::Impl& w, ContactGroups& g, int group, const StepCo
 void contactGroupRows(World::Impl& w, const StepContext& ctx, RowPass pass) {
     ContactGroups& g = w.contactGroups;
     for (int group = 0; group + 1 < static_cast<int>(g.start.size()); ++group) {
-        if (pass != RowPass::WarmStart) solveGroupNormals(w, g, group, ctx, pass == RowPass::Solve);
+        const bool useBias = pass == RowPass::Solve;
+        const bool solved = pass != RowPass::WarmStart && solveGroupNormals(w, g, group, ctx, useBias);
         for (int s = g.start[group]; s < g.start[group + 1]; ++s) {
             ContactConstraint& c = w.constraints[g.constraints[s]];
+            BodyState &a = w.states[c.indexA], &b = w.states[c.indexB];
             if (pass == RowPass::WarmStart)
-                warmStartContact(c, w.states[c.indexA], w.states[c.indexB]);
+                warmStartContact(c, a, b);
+            else if (solved)
+                solveTangentRows(c, a, b);
             else
-                solveTangentRows(c, w.states[c.indexA], w.states[c.indexB]);
+                solveContact(c, a, b, ctx, useBias);
         }
     }
 }
