@@ -106,15 +106,23 @@ void findContactGroups(World::Impl& w, const StepContext& ctx) {
     }
     if (!anyLoaded) return;
 
-    // Groups in the order of their first constraint; the constraints of each in constraint order.
+    // Groups in the order of their first constraint while the step's rows last; the constraints of
+    // each in constraint order. Storage for the most rows is taken once, then reused.
     g.groupOf.assign(static_cast<size_t>(slots), -1);
-    int groups = 0;
+    int groups = 0, rowsLeft = ContactGroups::maxTotalRows;
     for (const ContactConstraint& c : w.constraints) {
         const int slot = groupSlot(c);
         if (slot < 0) continue;
-        const int root = findRoot(g.root, slot);
-        if (g.loaded[root] && g.rowCount[root] <= ContactGroups::maxRows && g.groupOf[root] < 0) g.groupOf[root] = groups++;
+        const int root = findRoot(g.root, slot), n = g.rowCount[root];
+        if (!g.loaded[root] || n > std::min(ContactGroups::maxRows, rowsLeft) || g.groupOf[root] >= 0) continue;
+        g.groupOf[root] = groups++;
+        rowsLeft -= n;
     }
+    if (groups == 0) return;
+    for (std::vector<int>* v : {&g.constraints, &g.start, &g.rowStart}) v->reserve(ContactGroups::maxTotalRows + 1);
+    g.matrixStart.reserve(ContactGroups::maxTotalRows + 1);
+    g.rows.reserve(ContactGroups::maxTotalRows);
+    for (std::vector<double>* v : {&g.K, &g.L}) v->reserve(static_cast<size_t>(ContactGroups::maxRows) * ContactGroups::maxTotalRows);
     g.start.assign(static_cast<size_t>(groups) + 1, 0);
     for (const ContactConstraint& c : w.constraints) {
         const int slot = groupSlot(c);

@@ -10,7 +10,8 @@
 //
 // A group is the touching contacts joined through moving bodies; it is solved directly when it has
 // at most maxRows normal rows and one of them carried, last step, a load that would sink it one
-// at a time more than loadTrigger times the direct solve's g/ω². Its normal rows then take the
+// at a time more than loadTrigger times the direct solve's g/ω² (and while the step's maxTotalRows
+// last, groups in constraint order). Its normal rows then take the
 // block solve (λn ≥ 0 by dropping rows whose impulse would turn negative and solving again); its
 // friction and rolling rows stay sequential.
 #pragma once
@@ -26,6 +27,7 @@ namespace perpdot {
 
 struct ContactGroups {
     static constexpr int maxRows = 128;      // K is n x n: about n³/6 multiply-adds to factor, once a step
+    static constexpr int maxTotalRows = 1024;  // all groups of a step: bounds their work and storage
     static constexpr float loadTrigger = 8;  // in g: λn K_ii / hs of the most loaded row
     std::vector<int> constraints;            // indices into World::Impl::constraints, group by group
     std::vector<int> start;                  // group g is constraints[start[g] .. start[g + 1])
