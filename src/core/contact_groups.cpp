@@ -11,6 +11,8 @@
 namespace perpdot {
 namespace {
 
+enum SlotKind : uint8_t { Fixed, Free, Jointed };
+
 // Principal pivots of a pass at most (solveComplementarity); a pass that needs more is solved
 // row by row instead.
 constexpr int maxPivots = 8;
@@ -34,13 +36,6 @@ std::array<RowSide, 2> sidesOf(const ContactConstraint& c, const ContactPointRow
     const Vec2 n = c.normal;
     return {RowSide{c.indexA, -n, -perpDot(cp.anchorA, n), c.invMassA, c.invIA},
             RowSide{c.indexB, n, perpDot(cp.anchorB, n), c.invMassB, c.invIB}};
-}
-
-bool moves(int slot, float invMass, float invInertia) { return slot != 0 && (invMass != 0.0f || invInertia != 0.0f); }
-
-// The slot whose union-find root names the constraint's group; -1 if neither body moves.
-int groupSlot(const ContactConstraint& c) {
-    return moves(c.indexA, c.invMassA, c.invIA) ? c.indexA : moves(c.indexB, c.invMassB, c.invIB) ? c.indexB : -1;
 }
 
 // K_rs = Σ over the bodies rows r and s share: lin_r·lin_s / m + ang_r ang_s / I.
@@ -86,35 +81,50 @@ void findContactGroups(World::Impl& w, const StepContext& ctx) {
     g.matrixStart.assign(1, 0);
     // Loads are measured in g: λn K_ii / hs ≥ loadTrigger·g, i.e. λn ≥ loadTrigger·g·hs·normalMass.
     const float loadImpulse = ContactGroups::loadTrigger * length(w.def.gravity) * ctx.hs;
-    if (!(loadImpulse > 0.0f)) return;
+    auto loaded = [&](const ContactConstraint& c) {
+        for (int i = 0; i < c.pointCount; ++i)
+            if (c.points[i].normalImpulse >= loadImpulse * c.points[i].normalMass && c.points[i].normalMass > 0.0f) return true;
+        return false;
+    };
+    if (!(loadImpulse > 0.0f) || std::none_of(w.constraints.begin(), w.constraints.end(), loaded)) return;
 
+    // Each solver slot's kind: Fixed (the static slot, kinematic bodies: they join nothing),
+    // Free (dynamic), Jointed (dynamic with joints: its joint rows stay sequential between the
+    // group's passes, so its group is not solved directly).
+    g.kind.resize(static_cast<size_t>(slots));
+    g.kind[0] = Fixed;
+    for (int k = 1; k < slots; ++k) {
+        const Body& b = w.bodies[w.awakeBodies[k - 1]];
+        g.kind[k] = b.type != BodyType::Dynamic ? Fixed : b.jointCount > 0 ? Jointed : Free;
+    }
     g.root.resize(static_cast<size_t>(slots));
     std::iota(g.root.begin(), g.root.end(), 0);
-    for (const ContactConstraint& c : w.constraints)
-        if (moves(c.indexA, c.invMassA, c.invIA) && moves(c.indexB, c.invMassB, c.invIB)) unite(g.root, c.indexA, c.indexB);
+    for (const auto [a, b] : w.constraintSlots)
+        if (g.kind[a] != Fixed && g.kind[b] != Fixed) unite(g.root, a, b);
+    // unite keeps the smaller slot as the root, so every parent precedes its child: one sweep in
+    // slot order points every slot at its root.
+    for (int k = 0; k < slots; ++k) g.root[k] = g.root[g.root[k]];
+    // Per root: rows, and whether the group is loaded (1), not (0) or jointed (2: never direct).
     g.rowCount.assign(static_cast<size_t>(slots), 0);
     g.loaded.assign(static_cast<size_t>(slots), 0);
-    bool anyLoaded = false;
-    for (const ContactConstraint& c : w.constraints) {
-        const int slot = groupSlot(c);
-        if (slot < 0) continue;
-        const int root = findRoot(g.root, slot);
+    for (int k = 0; k < count; ++k) {
+        const auto [a, b] = w.constraintSlots[k];
+        const int root = g.root[g.kind[a] != Fixed ? a : b];
+        const ContactConstraint& c = w.constraints[k];
         g.rowCount[root] += c.pointCount;
-        for (int i = 0; i < c.pointCount; ++i)
-            if (c.points[i].normalImpulse >= loadImpulse * c.points[i].normalMass && c.points[i].normalMass > 0.0f)
-                g.loaded[root] = 1, anyLoaded = true;
+        if (g.kind[a] == Jointed || g.kind[b] == Jointed)
+            g.loaded[root] = 2;
+        else if (g.loaded[root] == 0 && loaded(c))
+            g.loaded[root] = 1;
     }
-    if (!anyLoaded) return;
 
     // Groups in the order of their first constraint while the step's rows last; the constraints of
     // each in constraint order. Storage for the most rows is taken once, then reused.
     g.groupOf.assign(static_cast<size_t>(slots), -1);
     int groups = 0, rowsLeft = ContactGroups::maxTotalRows;
-    for (const ContactConstraint& c : w.constraints) {
-        const int slot = groupSlot(c);
-        if (slot < 0) continue;
-        const int root = findRoot(g.root, slot), n = g.rowCount[root];
-        if (!g.loaded[root] || n > std::min(ContactGroups::maxRows, rowsLeft) || g.groupOf[root] >= 0) continue;
+    for (const auto [a, b] : w.constraintSlots) {
+        const int root = g.root[g.kind[a] != Fixed ? a : b], n = g.rowCount[root];
+        if (g.loaded[root] != 1 || n > std::min(ContactGroups::maxRows, rowsLeft) || g.groupOf[root] >= 0) continue;
         g.groupOf[root] = groups++;
         rowsLeft -= n;
     }
@@ -124,19 +134,17 @@ void findContactGroups(World::Impl& w, const StepContext& ctx) {
     g.rows.reserve(ContactGroups::maxTotalRows);
     for (std::vector<double>* v : {&g.K, &g.L}) v->reserve(static_cast<size_t>(ContactGroups::maxRows) * ContactGroups::maxTotalRows);
     g.start.assign(static_cast<size_t>(groups) + 1, 0);
-    for (const ContactConstraint& c : w.constraints) {
-        const int slot = groupSlot(c);
-        if (slot >= 0 && g.groupOf[g.root[slot]] >= 0) ++g.start[g.groupOf[g.root[slot]] + 1];
-    }
+    auto groupOf = [&](int k) {
+        const auto [a, b] = w.constraintSlots[k];
+        return g.groupOf[g.root[g.kind[a] != Fixed ? a : b]];
+    };
+    for (int k = 0; k < count; ++k)
+        if (groupOf(k) >= 0) ++g.start[groupOf(k) + 1];
     std::partial_sum(g.start.begin(), g.start.end(), g.start.begin());
     g.constraints.resize(static_cast<size_t>(g.start.back()));
     g.rowCount.assign(static_cast<size_t>(groups), 0);  // now: constraints placed per group
-    for (int k = 0; k < count; ++k) {
-        const int slot = groupSlot(w.constraints[k]);
-        if (slot < 0 || g.groupOf[g.root[slot]] < 0) continue;
-        const int group = g.groupOf[g.root[slot]];
-        g.constraints[g.start[group] + g.rowCount[group]++] = k;
-    }
+    for (int k = 0; k < count; ++k)
+        if (const int group = groupOf(k); group >= 0) g.constraints[g.start[group] + g.rowCount[group]++] = k;
 
     // Each group's rows, K and factor; a group whose K does not factor stays with the sequential rows.
     int kept = 0;
@@ -270,7 +278,7 @@ void contactGroupRows(World::Impl& w, const StepContext& ctx, RowPass pass) {
             if (pass == RowPass::WarmStart)
                 warmStartContact(c, a, b);
             else if (solved)
-                solveTangentRows(c, a, b);
+                solveContact<float, false>(c, a, b, ctx, useBias);  // its tangent rows
             else
                 solveContact(c, a, b, ctx, useBias);
         }

@@ -79,13 +79,44 @@ F currentSeparation(const ContactRows<F>& c, const ContactPointRows<F>& cp, cons
     return cp.baseSeparation + dot(b.dp - a.dp + turnedB - turnedA, c.normal);
 }
 
-// The tangent rows, after the normal ones: Coulomb friction along t = perp(n), |λt| ≤ μ λn, then
-// rolling resistance, |λr| ≤ rollingResistance·Σλn. A conveyor's surfaces move clockwise around
-// their shapes, which is −tangentSpeed along perp(n): the friction row drives v_rel·t to it.
-template <class F>
-void solveTangentRows(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b) {
-    const Vec2T<F> t = perp(c.normal);
+// One pass over a constraint's rows: non-penetration (λn ≥ 0) unless `normalRows` is false (a
+// contact group solved them, contact_groups.hpp), then Coulomb friction along t = perp(n),
+// |λt| ≤ μ λn, then rolling resistance, |λr| ≤ rollingResistance·Σλn.
+template <class F, bool normalRows = true>
+void solveContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, const StepContext& ctx, bool useBias) {
+    using simd::max;
+    using simd::select;
+    const Vec2T<F> n = c.normal;
     F totalNormalImpulse = 0.0f;
+    for (ContactPointRows<F>& cp : c.points) {
+        if constexpr (normalRows) {
+            const Vec2T<F> rA = cp.anchorA, rB = cp.anchorB;
+            const F s = currentSeparation(c, cp, a, b);
+            // Speculative (s > 0): bias = s/hs, a rigid row that may close the gap this substep, no more.
+            const simd::MaskOf<F> speculative = s > F(0.0f);
+            F bias = select(speculative, s * F(ctx.invHs), F(0.0f));
+            F massScale = 1.0f, impulseScale = 0.0f;
+            if (useBias) {
+                // Soft push-out of the overlap, at most maxBiasVelocity.
+                const F push = max(c.biasRate * simd::min(s + F(ctx.pushSlop), F(0.0f)), F(-ctx.maxBiasVelocity));
+                bias = select(speculative, bias, push);
+                massScale = select(speculative, massScale, c.massScale);
+                impulseScale = select(speculative, impulseScale, c.impulseScale);
+            }
+            const F vn = dot(relativeVelocity(a, b, rA, rB), n);
+            F impulse = -cp.normalMass * massScale * (vn + bias) - impulseScale * cp.normalImpulse;
+            const F newImpulse = max(cp.normalImpulse + impulse, F(0.0f));
+            impulse = newImpulse - cp.normalImpulse;
+            cp.normalImpulse = newImpulse;
+            cp.maxNormalImpulse = max(cp.maxNormalImpulse, impulse);
+            applyImpulse(c, a, b, rA, rB, impulse * n);
+        }
+        totalNormalImpulse += cp.normalImpulse;
+    }
+
+    // A conveyor's surfaces move clockwise around their shapes, which is −tangentSpeed along
+    // perp(n): the friction row drives v_rel·t to it.
+    const Vec2T<F> t = perp(n);
     for (ContactPointRows<F>& cp : c.points) {
         const Vec2T<F> rA = cp.anchorA, rB = cp.anchorB;
         const F vt = dot(relativeVelocity(a, b, rA, rB), t) + c.tangentSpeed;
@@ -93,44 +124,12 @@ void solveTangentRows(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b) {
         const F newImpulse = simd::clamp(cp.tangentImpulse - cp.tangentMass * vt, -maxFriction, maxFriction);
         const F impulse = newImpulse - cp.tangentImpulse;
         cp.tangentImpulse = newImpulse;
-        totalNormalImpulse += cp.normalImpulse;
         applyImpulse(c, a, b, rA, rB, impulse * t);
     }
     const F maxLambda = c.rollingResistance * totalNormalImpulse;
     const F lambda = c.rollingImpulse;
     c.rollingImpulse = simd::clamp(lambda - c.rollingMass * (b.w - a.w), -maxLambda, maxLambda);
     applyAngularImpulse(c, a, b, c.rollingImpulse - lambda);
-}
-
-// One pass over a constraint's rows: non-penetration (λn ≥ 0), then the tangent rows.
-template <class F>
-void solveContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, const StepContext& ctx, bool useBias) {
-    using simd::max;
-    using simd::select;
-    const Vec2T<F> n = c.normal;
-    for (ContactPointRows<F>& cp : c.points) {
-        const Vec2T<F> rA = cp.anchorA, rB = cp.anchorB;
-        const F s = currentSeparation(c, cp, a, b);
-        // Speculative (s > 0): bias = s/hs, a rigid row that may close the gap this substep, no more.
-        const simd::MaskOf<F> speculative = s > F(0.0f);
-        F bias = select(speculative, s * F(ctx.invHs), F(0.0f));
-        F massScale = 1.0f, impulseScale = 0.0f;
-        if (useBias) {
-            // Soft push-out of the overlap, at most maxBiasVelocity.
-            const F push = max(c.biasRate * simd::min(s + F(ctx.pushSlop), F(0.0f)), F(-ctx.maxBiasVelocity));
-            bias = select(speculative, bias, push);
-            massScale = select(speculative, massScale, c.massScale);
-            impulseScale = select(speculative, impulseScale, c.impulseScale);
-        }
-        const F vn = dot(relativeVelocity(a, b, rA, rB), n);
-        F impulse = -cp.normalMass * massScale * (vn + bias) - impulseScale * cp.normalImpulse;
-        const F newImpulse = max(cp.normalImpulse + impulse, F(0.0f));
-        impulse = newImpulse - cp.normalImpulse;
-        cp.normalImpulse = newImpulse;
-        cp.maxNormalImpulse = max(cp.maxNormalImpulse, impulse);
-        applyImpulse(c, a, b, rA, rB, impulse * n);
-    }
-    solveTangentRows(c, a, b);
 }
 
 // Four constraints of one graph colour (no two share a dynamic body) as the lanes of one row set.
