@@ -109,9 +109,11 @@ void solveContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, const Ste
             impulse = newImpulse - cp.normalImpulse;
             cp.normalImpulse = newImpulse;
             cp.maxNormalImpulse = max(cp.maxNormalImpulse, impulse);
+            totalNormalImpulse += newImpulse;
             applyImpulse(c, a, b, rA, rB, impulse * n);
+        } else {
+            totalNormalImpulse += cp.normalImpulse;
         }
-        totalNormalImpulse += cp.normalImpulse;
     }
 
     // A conveyor's surfaces move clockwise around their shapes, which is −tangentSpeed along
