@@ -17,16 +17,10 @@ using test::dt;
 
 constexpr float restGap = 0.001f;  // 0.5 mm of Box2D's skin kept by each polygon
 
-WorldDef noSleep() {
-    WorldDef def;
-    def.enableSleep = false;
-    return def;
-}
-
 // A 1 m box of density 1000 resting off centre (0.45 m: its centre of mass still over the light
 // box) on a 1 m box of density 1, 10 s.
 TEST(ContactGroups, HeavyBoxOffCentreOnALightOneStands) {
-    World world(noSleep());
+    World world({.enableSleep = false});
     test::addGround(world);
     const BodyId light = test::addBox(world, {0.0f, 0.5f}, 0.5f, 0.5f);
     const BodyId heavy = test::addBox(world, {0.45f, 1.5f}, 0.5f, 0.5f, test::material(1000.0f));
@@ -40,7 +34,7 @@ TEST(ContactGroups, HeavyBoxOffCentreOnALightOneStands) {
 // Four ground rows and three freedoms: the light box straddles two static tiles, and K is singular
 // but for its compliance. The 300 : 1 load must neither sink nor launch anything.
 TEST(ContactGroups, HeavyLoadOnABoxStraddlingTwoTilesStands) {
-    World world(noSleep());
+    World world({.enableSleep = false});
     const BodyId tiles = world.createBody(test::bodyAt({0.0f, 0.0f}, BodyType::Static));
     world.createShape(tiles, {}, makeBox(0.5f, 0.5f, {-0.5f, -0.5f}, 0.0f));
     world.createShape(tiles, {}, makeBox(0.5f, 0.5f, {0.5f, -0.5f}, 0.0f));
@@ -59,7 +53,7 @@ TEST(ContactGroups, HeavyLoadOnABoxStraddlingTwoTilesStands) {
 // Ten boxes: every interface rests at its rest gap, the column 1 cm taller than built (rows solved
 // one by one, its lowest interface alone sank 2.5 mm).
 TEST(ContactGroups, ColumnRestsOnItsRestGaps) {
-    World world(noSleep());
+    World world({.enableSleep = false});
     test::addGround(world);
     BodyId top;
     for (int i = 0; i < 10; ++i) top = test::addBox(world, {0.0f, 0.5f + static_cast<float>(i)}, 0.5f, 0.5f);
