@@ -66,6 +66,7 @@ void passContacts(World::Impl& w, const StepContext& ctx, RowPass pass, int begi
 
 // Colour the constraints in order, then lay them out colour by colour (Box2D v3's solve order:
 // it keeps stacks as stiff as the plain constraint order does), four to a block; overflow last.
+// The constraints of contact groups solved directly (contact_groups.hpp) take no colour.
 void prepareContactBlocks(World::Impl& w) {
     constexpr int overflow = GraphColoring::overflow;
     const int count = static_cast<int>(w.constraints.size());
