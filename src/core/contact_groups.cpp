@@ -215,7 +215,8 @@ bool solveComplementarity(ContactGroups& g, int n, const double* K, const double
             ++m;
         }
         // activeK holds the m x m system at stride n: packed to stride m for the factor.
-        for (int r = 1; r < m; ++r) std::copy_n(&g.activeK[r * n], m, &g.activeK[r * m]);
+        if (m < n)
+            for (int r = 1; r < m; ++r) std::copy_n(&g.activeK[r * n], m, &g.activeK[r * m]);
         if (!choleskyFactor(g.activeK.data(), m)) return false;
         choleskySolve(g.activeK.data(), m, g.rhs.data());
         for (int r = 0, i = 0; r < n; ++r) g.x[r] = g.active[r] ? g.rhs[i++] : -g.lambda[r];
