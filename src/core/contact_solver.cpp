@@ -103,6 +103,7 @@ void prepareContacts(World::Impl& w, const StepContext& ctx) {
     w.workers.parallelSelect(
         static_cast<int>(s.constraints.size()), [&](int k) { return s.constraints[k].restitution != 0.0f; },
         [&](int total) { s.bouncingConstraints.resize(total); }, [&](int slot, int k) { s.bouncingConstraints[slot] = k; });
+    findContactGroups(w, ctx);
     prepareContactBlocks(w);
 }
 

@@ -115,16 +115,18 @@ void layOutBlocks(World::Impl& w, const ColorStarts& start, std::vector<Block>& 
 
 // Colour the constraints in order, then lay them out colour by colour (Box2D v3's solve order:
 // it keeps stacks as stiff as the plain constraint order does), four or eight to a block; overflow
-// last. The lane width changes no result: a colour's constraints share no moving body.
+// last. The lane width changes no result: a colour's constraints share no moving body. The
+// constraints of contact groups solved directly (contact_groups.hpp) take no colour.
 void prepareContactBlocks(World::Impl& w) {
     StepScratch& s = w.scratch;
     constexpr int overflow = GraphColoring::overflow;
     const int count = static_cast<int>(s.constraints.size());
     s.contactColoring.reset(static_cast<int>(s.states.size()));
     s.contactColors.resize(s.constraints.size());
+    const std::vector<uint8_t>& direct = s.contactGroups.direct;  // solved by their groups instead
     for (int index = 0; index < count; ++index) {
         const auto [slotA, slotB] = s.constraintSlots[index];
-        s.contactColors[index] = s.contactColoring.assign(slotA, slotB);
+        s.contactColors[index] = direct[index] ? overflow : s.contactColoring.assign(slotA, slotB);
     }
     const ColorStarts start = sortByColor(w.scratch.contactColors, w.scratch.contactOrder);
 #ifdef PERPDOT_AVX2
@@ -137,7 +139,9 @@ void prepareContactBlocks(World::Impl& w) {
         layOutBlocks(w, start, w.scratch.contactBlocks, [](const ContactRows<float>* const (&lanes)[4], ContactBlock& block) {
             packContactRows(lanes, block.rows);
         });
-    w.scratch.overflowConstraints.assign(w.scratch.contactOrder.begin() + start[overflow], w.scratch.contactOrder.end());
+    s.overflowConstraints.clear();
+    for (int position = start[overflow]; position < count; ++position)
+        if (!direct[s.contactOrder[position]]) s.overflowConstraints.push_back(s.contactOrder[position]);
 }
 
 int contactBlockCount(const World::Impl& w, int color) {
@@ -191,16 +195,18 @@ void storeBlocks(World::Impl& w, const std::vector<Block>& blocks) {
 
 }  // namespace
 
-// The impulses for the next step's warm start: the blocks' from their lanes, the overflow
-// constraints' from their rows (a contact has one constraint: the workers write apart).
+// The impulses for the next step's warm start: the blocks' from their lanes, those of the overflow
+// constraints and of the contact groups solved directly from their rows (a contact has one
+// constraint: the workers write apart).
 void storeContactImpulses(World::Impl& w) {
+    StepScratch& s = w.scratch;
 #ifdef PERPDOT_AVX2
-    if (w.scratch.contactLanes == 8) storeBlocks(w, w.scratch.contactBlocks8);
+    if (s.contactLanes == 8) storeBlocks(w, s.contactBlocks8);
     else
 #endif
-        storeBlocks(w, w.scratch.contactBlocks);
-    for (int index : w.scratch.overflowConstraints) {
-        const ContactConstraint& c = w.scratch.constraints[index];
+        storeBlocks(w, s.contactBlocks);
+    auto storeRows = [&](int index) {
+        const ContactConstraint& c = s.constraints[index];
         Contact& contact = w.contactCache.contacts[c.contact];
         contact.rollingImpulse = c.rollingImpulse;
         for (int i = 0; i < c.pointCount; ++i) {
@@ -208,7 +214,9 @@ void storeContactImpulses(World::Impl& w) {
             contact.points[i].tangentImpulse = c.points[i].tangentImpulse;
             contact.points[i].maxNormalImpulse = c.points[i].maxNormalImpulse;
         }
-    }
+    };
+    for (int index : s.overflowConstraints) storeRows(index);
+    for (int index : s.contactGroups.constraints) storeRows(index);
 }
 
 }  // namespace perpdot

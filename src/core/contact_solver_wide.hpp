@@ -71,47 +71,56 @@ void warmStartContact(const ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b)
     applyAngularImpulse(c, a, b, c.rollingImpulse);
 }
 
-// One pass over a constraint's rows: non-penetration, then friction, then rolling resistance.
-// useBias: the solve pass (soft push-out), else the relax pass; a template argument, so that each
-// pass compiles to its own loop with only the values it uses.
-template <bool useBias, class F>
+// Current separation of a point without a new narrowphase: s = base + (ΔpB + rB' − ΔpA − rA')·n,
+// with r' the anchor turned with its body where the surface is flat.
+template <class F>
+F currentSeparation(const ContactRows<F>& c, const ContactPointRows<F>& cp, const BodyLanes<F>& a, const BodyLanes<F>& b) {
+    const Vec2T<F> rA = cp.anchorA, rB = cp.anchorB;
+    const Vec2T<F> turnedA = rA + c.turnsA * (rotate(a.dq, rA) - rA), turnedB = rB + c.turnsB * (rotate(b.dq, rB) - rB);
+    return cp.baseSeparation + dot(b.dp - a.dp + turnedB - turnedA, c.normal);
+}
+
+// One pass over a constraint's rows: non-penetration (λn ≥ 0) unless `normalRows` is false (a
+// contact group solved them, contact_groups.hpp), then Coulomb friction along t = perp(n),
+// |λt| ≤ μ λn, then rolling resistance, |λr| ≤ rollingResistance·Σλn. useBias: the solve pass
+// (soft push-out), else the relax pass; template arguments, so that each pass compiles to its own
+// loop with only the values it uses.
+template <bool useBias, bool normalRows = true, class F>
 void solveContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, const StepContext& ctx) {
     using simd::max;
     using simd::select;
     const Vec2T<F> n = c.normal;
-    const Vec2T<F> dp = b.dp - a.dp;
-
-    // Non-penetration: λn ≥ 0.
     F totalNormalImpulse = 0.0f;
     for (ContactPointRows<F>& cp : c.points) {
-        // Current separation without a new narrowphase: s = base + (ΔpB + rB' - ΔpA - rA')·n, with
-        // r' the anchor turned with its body where the surface is flat.
-        const Vec2T<F> rA = cp.anchorA, rB = cp.anchorB;
-        const Vec2T<F> turnedA = rA + c.turnsA * (rotate(a.dq, rA) - rA), turnedB = rB + c.turnsB * (rotate(b.dq, rB) - rB);
-        const F s = cp.baseSeparation + dot(dp + turnedB - turnedA, n);
-        // Speculative (s > 0): bias = s/hs, a rigid row that may close the gap this substep, no more.
-        const simd::MaskOf<F> speculative = s > F(0.0f);
-        F bias = select(speculative, s * F(ctx.invHs), F(0.0f));
-        F massScale = 1.0f, impulseScale = 0.0f;
-        if constexpr (useBias) {
-            // Soft push-out of the overlap, at most maxBiasVelocity.
-            const F push = max(c.biasRate * simd::min(s + F(ctx.pushSlop), F(0.0f)), F(-ctx.maxBiasVelocity));
-            bias = select(speculative, bias, push);
-            massScale = select(speculative, massScale, c.massScale);
-            impulseScale = select(speculative, impulseScale, c.impulseScale);
+        if constexpr (normalRows) {
+            const Vec2T<F> rA = cp.anchorA, rB = cp.anchorB;
+            const F s = currentSeparation(c, cp, a, b);
+            // Speculative (s > 0): bias = s/hs, a rigid row that may close the gap this substep, no more.
+            const simd::MaskOf<F> speculative = s > F(0.0f);
+            F bias = select(speculative, s * F(ctx.invHs), F(0.0f));
+            F massScale = 1.0f, impulseScale = 0.0f;
+            if constexpr (useBias) {
+                // Soft push-out of the overlap, at most maxBiasVelocity.
+                const F push = max(c.biasRate * simd::min(s + F(ctx.pushSlop), F(0.0f)), F(-ctx.maxBiasVelocity));
+                bias = select(speculative, bias, push);
+                massScale = select(speculative, massScale, c.massScale);
+                impulseScale = select(speculative, impulseScale, c.impulseScale);
+            }
+            const F vn = dot(relativeVelocity(a, b, rA, rB), n);
+            F impulse = -cp.normalMass * massScale * (vn + bias) - impulseScale * cp.normalImpulse;
+            const F newImpulse = max(cp.normalImpulse + impulse, F(0.0f));
+            impulse = newImpulse - cp.normalImpulse;
+            cp.normalImpulse = newImpulse;
+            cp.maxNormalImpulse = max(cp.maxNormalImpulse, impulse);
+            totalNormalImpulse += newImpulse;
+            applyImpulse(c, a, b, rA, rB, impulse * n);
+        } else {
+            totalNormalImpulse += cp.normalImpulse;
         }
-        const F vn = dot(relativeVelocity(a, b, rA, rB), n);
-        F impulse = -cp.normalMass * massScale * (vn + bias) - impulseScale * cp.normalImpulse;
-        const F newImpulse = max(cp.normalImpulse + impulse, F(0.0f));
-        impulse = newImpulse - cp.normalImpulse;
-        cp.normalImpulse = newImpulse;
-        cp.maxNormalImpulse = max(cp.maxNormalImpulse, impulse);
-        totalNormalImpulse += newImpulse;
-        applyImpulse(c, a, b, rA, rB, impulse * n);
     }
 
-    // Coulomb friction along t = perp(n): |λt| ≤ μ λn. A conveyor's surfaces move clockwise
-    // around their shapes, which is −tangentSpeed along perp(n): the row drives v_rel·t to it.
+    // A conveyor's surfaces move clockwise around their shapes, which is −tangentSpeed along
+    // perp(n): the friction row drives v_rel·t to it.
     const Vec2T<F> t = perp(n);
     for (ContactPointRows<F>& cp : c.points) {
         const Vec2T<F> rA = cp.anchorA, rB = cp.anchorB;
@@ -122,8 +131,6 @@ void solveContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, const Ste
         cp.tangentImpulse = newImpulse;
         applyImpulse(c, a, b, rA, rB, impulse * t);
     }
-
-    // Rolling resistance: an angular row on ωB − ωA, |λr| ≤ rollingResistance·Σλn.
     const F maxLambda = c.rollingResistance * totalNormalImpulse;
     const F lambda = c.rollingImpulse;
     c.rollingImpulse = simd::clamp(lambda - c.rollingMass * (b.w - a.w), -maxLambda, maxLambda);

@@ -5,51 +5,18 @@
 #include <numeric>
 #include <utility>
 
+#include "core/cholesky.hpp"
 #include "core/joint_rows.hpp"
 #include "core/joint_solver_wide.hpp"
+#include "core/union_find.hpp"
 #include "core/world_impl.hpp"
 
 namespace perpdot {
 namespace {
 
-int findRoot(std::vector<int>& root, int i) {
-    while (root[i] != i) i = root[i] = root[root[i]];
-    return i;
-}
-
 // A side that cannot move (static, asleep, kinematic) couples nothing: it anchors the tree.
 bool movesA(const PreparedJoint& j) { return j.mass.mA != 0.0f || j.mass.iA != 0.0f; }
 bool movesB(const PreparedJoint& j) { return j.mass.mB != 0.0f || j.mass.iB != 0.0f; }
-
-// In-place Cholesky K = L Lᵀ of the n x n row-major K (lower triangle written); false if K is not
-// positive definite.
-bool choleskyFactor(std::vector<double>& K, int n) {
-    for (int c = 0; c < n; ++c) {
-        double d = K[c * n + c];
-        for (int k = 0; k < c; ++k) d -= K[c * n + k] * K[c * n + k];
-        if (!(d > 0.0)) return false;
-        const double l = std::sqrt(d);
-        K[c * n + c] = l;
-        for (int r = c + 1; r < n; ++r) {
-            double s = K[r * n + c];
-            for (int k = 0; k < c; ++k) s -= K[r * n + k] * K[c * n + k];
-            K[r * n + c] = s / l;
-        }
-    }
-    return true;
-}
-
-// x ← K⁻¹ x from the factor: L y = x, then Lᵀ x = y.
-void choleskySolve(const std::vector<double>& L, int n, std::vector<double>& x) {
-    for (int r = 0; r < n; ++r) {
-        for (int k = 0; k < r; ++k) x[r] -= L[r * n + k] * x[k];
-        x[r] /= L[r * n + r];
-    }
-    for (int r = n - 1; r >= 0; --r) {
-        for (int k = r + 1; k < n; ++k) x[r] -= L[k * n + r] * x[k];
-        x[r] /= L[r * n + r];
-    }
-}
 
 // The moving body a joint's side stands for, with its inverse mass and inertia and the arm from
 // its centre of mass to the anchor; sign +1 for B (B's anchor velocity counts positive), −1 for A.
@@ -219,7 +186,7 @@ void solveRevoluteTrees(World::Impl& w, RevoluteTrees& t, std::vector<PreparedJo
         const int n = assemble(w, t, prepared, tree, [&](const JointPair& p, const JointFrame& f) {
             return relativeVelocity(p, f.rA, f.rB) + soft.biasRate * f.d;  // v_rel + biasRate·C
         });
-        if (!choleskyFactor(t.K, n)) {
+        if (!choleskyFactor(t.K.data(), n)) {
             for (int i = 0; i < joints; ++i) {
                 PreparedJoint& j = prepared[t.joints[first + i]];
                 JointPair p = pairOf(w.scratch.states, w.scratch.stepRotation, j);
@@ -227,7 +194,7 @@ void solveRevoluteTrees(World::Impl& w, RevoluteTrees& t, std::vector<PreparedJo
             }
             continue;
         }
-        choleskySolve(t.K, n, t.x);
+        choleskySolve(t.K.data(), n, t.x.data());
         // Every Δλ from the velocities before any is applied: the solve already couples them.
         for (int i = 0; i < joints; ++i) {
             PreparedJoint& j = prepared[t.joints[first + i]];
@@ -252,8 +219,8 @@ void projectRevoluteTrees(World::Impl& w, RevoluteTrees& t, const std::vector<Pr
     for (size_t tree = 0; tree + 1 < t.start.size(); ++tree) {
         const int first = t.start[tree], joints = t.start[tree + 1] - first;
         const int n = assemble(w, t, prepared, tree, [](const JointPair&, const JointFrame& f) { return -f.d; });
-        if (!choleskyFactor(t.K, n)) continue;
-        choleskySolve(t.K, n, t.x);
+        if (!choleskyFactor(t.K.data(), n)) continue;
+        choleskySolve(t.K.data(), n, t.x.data());
         for (int i = 0; i < joints; ++i) {
             const PreparedJoint& j = prepared[t.joints[first + i]];
             const Vec2 P = lambdaOf(t.x, i);

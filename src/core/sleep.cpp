@@ -4,6 +4,7 @@
 #include <limits>
 #include <numeric>
 
+#include "core/union_find.hpp"
 #include "core/world_impl.hpp"
 
 namespace perpdot {
@@ -14,20 +15,6 @@ namespace {
 constexpr float linearSleepTolerance = 0.01f;             // m/s
 constexpr float angularSleepTolerance = 2.0f / 180.0f * pi;  // rad/s
 constexpr float timeToSleep = 0.5f;                       // s
-
-int findRoot(std::vector<int>& parent, int i) {
-    while (parent[i] != i) {
-        parent[i] = parent[parent[i]];
-        i = parent[i];
-    }
-    return i;
-}
-
-void unite(std::vector<int>& parent, int a, int b) {
-    a = findRoot(parent, a);
-    b = findRoot(parent, b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-}
 
 }  // namespace
 

@@ -30,6 +30,7 @@ void SolverStages::build(const World::Impl& w) {
         for (int color = 0; color < GraphColoring::overflow; ++color)
             add(Work::Contacts, pass, color, contactBlockCount(w, color), contactsPerItem / w.scratch.contactLanes);
         add(Work::SerialContacts, pass, 0, w.scratch.overflowConstraints.empty() ? 0 : 1, 1);
+        add(Work::ContactGroups, pass, 0, w.scratch.contactGroups.start.size() > 1 ? 1 : 0, 1);
     };
     add(Work::SubstepForces, RowPass::WarmStart, 0, bodies, bodiesPerItem);
     rows(RowPass::WarmStart);
@@ -46,6 +47,7 @@ void SolverStages::execute(World::Impl& w, const StepContext& ctx, const SolverS
         case Work::SerialJoints: serialJointRows(w, ctx, stage.pass); break;
         case Work::Contacts: contactRows(w, ctx, stage.pass, stage.color, begin, end); break;
         case Work::SerialContacts: serialContactRows(w, ctx, stage.pass); break;
+        case Work::ContactGroups: contactGroupRows(w, ctx, stage.pass); break;
         case Work::IntegratePositions: integratePositions(w, ctx, begin + 1, end + 1); break;
     }
 }

@@ -19,7 +19,7 @@
 namespace perpdot {
 
 struct SolverStage {
-    enum class Work : uint8_t { SubstepForces, Joints, SerialJoints, Contacts, SerialContacts, IntegratePositions };
+    enum class Work : uint8_t { SubstepForces, Joints, SerialJoints, Contacts, SerialContacts, ContactGroups, IntegratePositions };
     Work work = Work::SubstepForces;
     RowPass pass = RowPass::WarmStart;
     int color = 0;

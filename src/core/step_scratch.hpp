@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "collide/collision.hpp"
+#include "core/contact_groups.hpp"
 #include "core/contact_solver_wide.hpp"
 #include "core/graph_color.hpp"
 #include "core/solver_stages.hpp"
@@ -68,6 +69,7 @@ struct StepScratch {
     std::vector<int> contactColors;              // prepareContactBlocks scratch: colour of each constraint,
     std::vector<int> contactOrder;               // and the constraints sorted by colour
     std::vector<int> overflowConstraints;        // constraints no colour could take: solved one by one
+    ContactGroups contactGroups;                 // constraints solved a group at a time (contact_groups.hpp)
     SolverStages solverStages;                   // the substeps' stages for the workers
     std::vector<int> islandParent;      // union-find scratch for sleeping, by body index
     std::vector<float> islandMinSleep;

@@ -1,0 +1,78 @@
+// Contact groups solved directly (src/core/contact_groups.hpp): a small group with a heavily loaded
+// row rests where the contact forces' accelerations put it, C = K F / ω² — g/ω² on the ground, 0
+// between bodies — instead of sinking by its load over its own stiffness. The `perpdot stress`
+// cases check the centred heavy box and the 50-box column; these check what the suite does not.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "perpdot/world.hpp"
+#include "physics_scenes.hpp"
+
+namespace perpdot {
+namespace {
+
+using test::dt;
+
+constexpr float restGap = 0.001f;  // 0.5 mm of Box2D's skin kept by each polygon
+
+// A 1 m box of density 1000 resting off centre (0.45 m: its centre of mass still over the light
+// box) on a 1 m box of density 1, 10 s.
+TEST(ContactGroups, HeavyBoxOffCentreOnALightOneStands) {
+    World world({.enableSleep = false});
+    test::addGround(world);
+    const BodyId light = test::addBox(world, {0.0f, 0.5f}, 0.5f, 0.5f);
+    const BodyId heavy = test::addBox(world, {0.45f, 1.5f}, 0.5f, 0.5f, test::material(1000.0f));
+    test::run(world, 600);
+    EXPECT_LT(1.0f - (world.position(heavy).y - world.position(light).y), 0.005f) << "sank into the light box";
+    EXPECT_LT(std::fabs(world.angle(heavy)), 0.01f);
+    EXPECT_LT(std::fabs(world.angle(light)), 0.01f);
+    EXPECT_NEAR(world.position(heavy).x, 0.45f, 0.01f);
+}
+
+// Four ground rows and three freedoms: the light box straddles two static tiles, and K is singular
+// but for its compliance. The 300 : 1 load must neither sink nor launch anything.
+TEST(ContactGroups, HeavyLoadOnABoxStraddlingTwoTilesStands) {
+    World world({.enableSleep = false});
+    const BodyId tiles = world.createBody(test::bodyAt({0.0f, 0.0f}, BodyType::Static));
+    world.createShape(tiles, {}, makeBox(0.5f, 0.5f, {-0.5f, -0.5f}, 0.0f));
+    world.createShape(tiles, {}, makeBox(0.5f, 0.5f, {0.5f, -0.5f}, 0.0f));
+    const BodyId light = test::addBox(world, {0.0f, 0.5f}, 0.5f, 0.5f);
+    const BodyId heavy = test::addBox(world, {0.0f, 1.5f}, 0.5f, 0.5f, test::material(300.0f));
+    test::run(world, 10);  // the first step falls freely onto the contacts
+    for (int step = 10; step < 600; ++step) {
+        world.step(dt);
+        ASSERT_LT(length(world.linearVelocity(heavy)), 0.01f) << "step " << step;
+        ASSERT_LT(length(world.linearVelocity(light)), 0.01f) << "step " << step;
+    }
+    EXPECT_NEAR(world.position(light).y, 0.5f, 0.002f);
+    EXPECT_NEAR(world.position(heavy).y - world.position(light).y, 1.0f, 0.002f);
+}
+
+// Ten boxes: every interface rests at its rest gap, the column 1 cm taller than built (rows solved
+// one by one, its lowest interface alone sank 2.5 mm).
+TEST(ContactGroups, ColumnRestsOnItsRestGaps) {
+    World world({.enableSleep = false});
+    test::addGround(world);
+    BodyId top;
+    for (int i = 0; i < 10; ++i) top = test::addBox(world, {0.0f, 0.5f + static_cast<float>(i)}, 0.5f, 0.5f);
+    test::run(world, 300);
+    EXPECT_NEAR(world.position(top).y, 9.5f + 10 * restGap, 0.001f);
+}
+
+// Fallen dominoes lying on each other: a group whose rows keep changing sides of the
+// complementarity problem. It comes to rest, and the bodies fall asleep.
+TEST(ContactGroups, FallenDominoesComeToRestAndSleep) {
+    World world;
+    test::addGround(world);
+    std::vector<BodyId> dominoes;
+    for (int i = 0; i < 10; ++i) dominoes.push_back(test::addBox(world, {1.2f * static_cast<float>(i), 1.0f}, 0.1f, 1.0f));
+    world.setAngularVelocity(dominoes[0], -2.0f);
+    test::run(world, 900);
+    EXPECT_GT(std::fabs(world.angle(dominoes.back())), 1.0f) << "the last domino did not fall";
+    for (const BodyId d : dominoes) EXPECT_FALSE(world.isAwake(d));
+}
+
+}  // namespace
+}  // namespace perpdot
