@@ -157,5 +157,43 @@ TEST(Snapshot, SingleByteCorruptionsNeverCrash) {
     EXPECT_GT(refused, 0);
 }
 
+// A rollback restores into a world that already holds the snapshot's shapes, and restore skips
+// re-checking a polygon equal to the one held in its slot: such a world must refuse exactly the
+// corruptions a fresh one refuses, and accept the others with the same bytes.
+TEST(Snapshot, AWorldHoldingTheShapesRefusesWhatAFreshWorldRefuses) {
+    SceneWorld built = buildWorld(findScene("vertical_stack"));
+    for (int i = 0; i < 30; ++i) built.step();
+    const Bytes saved = built.world.snapshot();
+    World holding;
+    holding.restore(saved);
+    int refused = 0;
+    for (size_t i = 0; i < saved.size(); ++i) {
+        for (uint8_t flip : {uint8_t{0x01}, uint8_t{0x80}}) {
+            Bytes bad = saved;
+            bad[i] ^= flip;
+            World fresh;
+            bool freshRefused = false, holdingRefused = false;
+            try {
+                fresh.restore(bad);
+            } catch (const Error&) {
+                freshRefused = true;
+            }
+            try {
+                holding.restore(bad);
+            } catch (const Error&) {
+                holdingRefused = true;
+            }
+            ASSERT_EQ(holdingRefused, freshRefused) << "byte " << i;
+            if (freshRefused) {
+                ++refused;
+                continue;
+            }
+            EXPECT_EQ(holding.snapshot(), fresh.snapshot()) << "byte " << i;
+            holding.restore(saved);  // the held shapes are the original ones again
+        }
+    }
+    EXPECT_GT(refused, 0);
+}
+
 }  // namespace
 }  // namespace perpdot
