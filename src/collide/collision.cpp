@@ -13,6 +13,7 @@
 #include <box2d/b2_polygon_shape.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 #include <cstdint>
@@ -86,6 +87,7 @@ struct CollisionSystem::Impl {
 
 CollisionSystem::CollisionSystem() : impl_(std::make_unique<Impl>()) {}
 CollisionSystem::~CollisionSystem() = default;
+CollisionSystem& CollisionSystem::operator=(CollisionSystem&&) noexcept = default;
 
 void CollisionSystem::setGeometry(int shape, const Circle& circle) { impl_->slot(shape) = toB2(circle); }
 void CollisionSystem::setGeometry(int shape, const Polygon& polygon) { impl_->slot(shape) = polygonToB2(polygon); }
@@ -182,6 +184,18 @@ int CollisionSystem::restoreProxy(const AABB& fat, ChildKey key, bool isStatic) 
     const_cast<b2AABB&>(impl_->tree.GetFatAABB(proxy)) = box;
     if (const int leaf = impl_->staticLeaf[proxy]; leaf >= 0) const_cast<b2AABB&>(impl_->staticTree.GetFatAABB(leaf)) = box;
     return proxy;
+}
+
+bool CollisionSystem::proxyIs(int proxy, const AABB& fat, ChildKey key, bool isStatic) const {
+    auto same = [](float a, float b) { return std::bit_cast<uint32_t>(a) == std::bit_cast<uint32_t>(b); };
+    auto sameBox = [&](const b2AABB& box) {
+        return same(box.lowerBound.x, fat.lower.x) && same(box.lowerBound.y, fat.lower.y) &&
+               same(box.upperBound.x, fat.upper.x) && same(box.upperBound.y, fat.upper.y);
+    };
+    const ChildKey k = proxyKey(proxy);
+    const int leaf = impl_->staticLeaf[proxy];
+    return k.shape == key.shape && k.child == key.child && (leaf >= 0) == isStatic && sameBox(impl_->tree.GetFatAABB(proxy)) &&
+           (leaf < 0 || sameBox(impl_->staticTree.GetFatAABB(leaf)));
 }
 
 bool CollisionSystem::wasMoved(int proxy) const { return impl_->tree.WasMoved(proxy); }

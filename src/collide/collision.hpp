@@ -75,6 +75,7 @@ public:
     ~CollisionSystem();
     CollisionSystem(const CollisionSystem&) = delete;
     CollisionSystem& operator=(const CollisionSystem&) = delete;
+    CollisionSystem& operator=(CollisionSystem&&) noexcept;  // a restored world takes a world's trees
 
     // Geometry, stored per shape index.
     void setGeometry(int shape, const Circle& circle);
@@ -102,6 +103,9 @@ public:
     AABB fatAABB(int proxy) const;
     // A new proxy whose fat AABB is exactly `fat` (a snapshot's), marked as moved like createProxy's.
     int restoreProxy(const AABB& fat, ChildKey key, bool isStatic);
+    // Whether `proxy` is already what restoreProxy(fat, key, isStatic) would make: its key, the same
+    // fat AABB bit for bit (in the static tree too) and the same tree membership.
+    bool proxyIs(int proxy, const AABB& fat, ChildKey key, bool isStatic) const;
     bool wasMoved(int proxy) const;
     void clearMoved(int proxy);
     ChildKey proxyKey(int proxy) const;

@@ -254,6 +254,29 @@ void linkEdges(ByteReader& in, World::Impl& w, int index, const std::vector<int>
 
 // Island rings (bodies that fell asleep together) must be proper cycles, or wake() would not end:
 // the links of linked bodies must form a permutation of them.
+// Whether the restoring world's broadphase already is the one a snapshot describes — a rollback
+// restores the same shapes, and most steps move no proxy out of its fat AABB: the same shapes
+// alive with the same geometry, each child's proxy with the saved fat AABB and tree, and the same
+// proxies waiting for pairs in the same order. Reads only. Proxy ids and the tree's shape then
+// differ from a rebuilt broadphase's, which changes nothing: pairs are made in child-key order.
+bool broadphaseMatches(const World::Impl& old, const World::Impl& w, const std::vector<std::vector<AABB>>& saved,
+                       const std::vector<collide::ChildKey>& moved) {
+    if (old.shapes.capacity() != w.shapes.capacity() || old.movedProxies.size() != moved.size()) return false;
+    for (int i = 0; i < w.shapes.capacity(); ++i) {
+        const ShapeData& was = old.shapes[i];
+        const ShapeData& is = w.shapes[i];
+        if (was.alive != is.alive) return false;
+        if (!is.alive) continue;
+        if (!(was.geometry == is.geometry) || was.proxies.size() != saved[static_cast<size_t>(i)].size()) return false;
+        const bool isStatic = w.bodies[is.body].type == BodyType::Static;
+        for (int child = 0; child < static_cast<int>(was.proxies.size()); ++child)
+            if (!old.collision.proxyIs(was.proxies[child], saved[static_cast<size_t>(i)][child], {i, child}, isStatic)) return false;
+    }
+    for (size_t k = 0; k < moved.size(); ++k)
+        if (old.movedProxies[k] != old.shapes[moved[k].shape].proxies[moved[k].child]) return false;
+    return true;
+}
+
 void checkIslandRings(ByteReader& in, const World::Impl& w) {
     std::vector<bool> targeted(w.bodies.capacity(), false);
     for (const Body& b : w.bodies.slots()) {
@@ -426,11 +449,18 @@ void World::restore(std::span<const uint8_t> bytes) {
     }
     in.expectEnd();
 
-    // Everything is checked: build the geometry and the broadphase. Proxies come out of the tree
-    // with the saved fat AABBs and, like every new proxy, marked as moved.
+    // Everything is checked: build the geometry and the broadphase — or, when this world's
+    // broadphase already is the snapshot's (a rollback), keep it, and this world is not touched
+    // before the last check has passed. Built proxies come out of the tree with the saved fat
+    // AABBs and, like every new proxy, marked as moved.
+    const bool keepBroadphase = broadphaseMatches(*impl_, w, savedProxies, moved);
     for (int i = 0; i < shapeCount; ++i) {
         if (!shapeAlive[i]) continue;
         ShapeData& s = w.shapes[i];
+        if (keepBroadphase) {
+            s.proxies = impl_->shapes[i].proxies;
+            continue;
+        }
         std::visit([&](const auto& g) { w.collision.setGeometry(i, g); }, s.geometry);
         if (w.collision.childCount(i) != static_cast<int>(savedProxies[i].size())) in.fail("proxy count does not match the shape");
         for (int child = 0; child < static_cast<int>(savedProxies[i].size()); ++child)
@@ -438,10 +468,12 @@ void World::restore(std::span<const uint8_t> bytes) {
                                                          w.bodies[s.body].type == BodyType::Static));
     }
     for (const collide::ChildKey& key : moved) w.movedProxies.push_back(w.shapes[key.shape].proxies[key.child]);
-    std::unordered_set<int> movedSet(w.movedProxies.begin(), w.movedProxies.end());
-    for (const ShapeData& s : w.shapes.slots())
-        for (int proxy : s.proxies)
-            if (!movedSet.contains(proxy)) w.collision.clearMoved(proxy);
+    if (!keepBroadphase) {
+        std::unordered_set<int> movedSet(w.movedProxies.begin(), w.movedProxies.end());
+        for (const ShapeData& s : w.shapes.slots())
+            for (int proxy : s.proxies)
+                if (!movedSet.contains(proxy)) w.collision.clearMoved(proxy);
+    }
     for (int i = 0; i < contactCount; ++i) {
         Contact& c = w.contactCache.contacts[i];
         if (!c.alive) continue;
@@ -451,6 +483,7 @@ void World::restore(std::span<const uint8_t> bytes) {
         if (!w.contactCache.pairs.insert(c.pairKey)) in.fail("two contacts for one pair");
     }
 
+    if (keepBroadphase) fresh->collision = std::move(impl_->collision);
     fresh->preSolve = std::move(impl_->preSolve);  // a setting of this World, not of the state
     // The threads are the restoring machine's, not the snapshot's: the world keeps its own workers.
     fresh->def.workerCount = impl_->def.workerCount;
