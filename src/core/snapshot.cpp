@@ -252,8 +252,6 @@ void linkEdges(ByteReader& in, World::Impl& w, int index, const std::vector<int>
     cache.bodyLists.restore(cache.contacts, index, edges);
 }
 
-// Island rings (bodies that fell asleep together) must be proper cycles, or wake() would not end:
-// the links of linked bodies must form a permutation of them.
 // Whether the restoring world's broadphase already is the one a snapshot describes — a rollback
 // restores the same shapes, and most steps move no proxy out of its fat AABB: the same shapes
 // alive with the same geometry, each child's proxy with the saved fat AABB and tree, and the same
@@ -277,6 +275,8 @@ bool broadphaseMatches(const World::Impl& old, const World::Impl& w, const std::
     return true;
 }
 
+// Island rings (bodies that fell asleep together) must be proper cycles, or wake() would not end:
+// the links of linked bodies must form a permutation of them.
 void checkIslandRings(ByteReader& in, const World::Impl& w) {
     std::vector<bool> targeted(w.bodies.capacity(), false);
     for (const Body& b : w.bodies.slots()) {
