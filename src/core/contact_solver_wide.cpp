@@ -83,24 +83,24 @@ template <class Block, class Pack>
 void layOutBlocks(World::Impl& w, const ColorStarts& start, std::vector<Block>& blocks, Pack pack) {
     constexpr int overflow = GraphColoring::overflow;
     constexpr int width = Block::lanes;
-    w.scratch.contactBlockStart[0] = 0;
+    StepScratch& s = w.scratch;
+    ColorStarts& blockStart = s.contactBlockStart;
+    blockStart[0] = 0;
     for (int color = 0; color <= overflow; ++color)
-        w.scratch.contactBlockStart[color + 1] =
-            w.scratch.contactBlockStart[color] + (color < overflow ? (start[color + 1] - start[color] + width - 1) / width : 0);
-    blocks.resize(static_cast<size_t>(w.scratch.contactBlockStart[overflow]));  // reused memory: every field is rewritten
+        blockStart[color + 1] = blockStart[color] + (color < overflow ? (start[color + 1] - start[color] + width - 1) / width : 0);
+    blocks.resize(static_cast<size_t>(blockStart[overflow]));  // reused memory: every field is rewritten
     static const ContactRows<float> emptyLane;  // no mass, no impulse: leaves the bodies alone
     // Block b of colour c holds the constraints contactOrder[start[c] + width (b − blockStart[c]) ...].
     w.workers.parallelFor(static_cast<int>(blocks.size()), 128 / width, [&](int begin, int stop, int) {
-        int color = static_cast<int>(std::upper_bound(w.scratch.contactBlockStart.begin(), w.scratch.contactBlockStart.end(), begin) -
-                                     w.scratch.contactBlockStart.begin()) - 1;
+        int color = static_cast<int>(std::upper_bound(blockStart.begin(), blockStart.end(), begin) - blockStart.begin()) - 1;
         for (int b = begin; b < stop; ++b) {
-            while (b >= w.scratch.contactBlockStart[color + 1]) ++color;
+            while (b >= blockStart[color + 1]) ++color;
             Block& block = blocks[b];
             const ContactRows<float>* lanes[width];
             for (int lane = 0; lane < width; ++lane) {
-                const int position = start[color] + width * (b - w.scratch.contactBlockStart[color]) + lane;
-                const int index = position < start[color + 1] ? w.scratch.contactOrder[position] : -1;
-                const ContactConstraint* c = index < 0 ? nullptr : &w.scratch.constraints[index];
+                const int position = start[color] + width * (b - blockStart[color]) + lane;
+                const int index = position < start[color + 1] ? s.contactOrder[position] : -1;
+                const ContactConstraint* c = index < 0 ? nullptr : &s.constraints[index];
                 block.contact[lane] = c ? c->contact : -1;
                 block.bodyA[lane] = c ? c->indexA : 0;
                 block.bodyB[lane] = c ? c->indexB : 0;
@@ -128,15 +128,15 @@ void prepareContactBlocks(World::Impl& w) {
         const auto [slotA, slotB] = s.constraintSlots[index];
         s.contactColors[index] = direct[index] ? overflow : s.contactColoring.assign(slotA, slotB);
     }
-    const ColorStarts start = sortByColor(w.scratch.contactColors, w.scratch.contactOrder);
+    const ColorStarts start = sortByColor(s.contactColors, s.contactOrder);
 #ifdef PERPDOT_AVX2
-    if (w.scratch.contactLanes == 8)
-        layOutBlocks(w, start, w.scratch.contactBlocks8, [](const ContactRows<float>* const (&lanes)[8], ContactBlock8& block) {
+    if (s.contactLanes == 8)
+        layOutBlocks(w, start, s.contactBlocks8, [](const ContactRows<float>* const (&lanes)[8], ContactBlock8& block) {
             packContactRows8(lanes, block);
         });
     else
 #endif
-        layOutBlocks(w, start, w.scratch.contactBlocks, [](const ContactRows<float>* const (&lanes)[4], ContactBlock& block) {
+        layOutBlocks(w, start, s.contactBlocks, [](const ContactRows<float>* const (&lanes)[4], ContactBlock& block) {
             packContactRows(lanes, block.rows);
         });
     s.overflowConstraints.clear();
