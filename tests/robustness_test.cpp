@@ -222,6 +222,15 @@ TEST(Numerics, ShapeCoordinatesBeyondTheHugeLimitAreRefused) {
     EXPECT_THROW(world.createShape(ground, {}, Circle{{beyond, 0}, 1.0f}), Error);
     const Vec2 far[3] = {{beyond, 0}, {beyond + 1, 0}, {beyond, 1}};
     EXPECT_THROW(makePolygon(far), Error);
+    // Radii too: a fuzzed snapshot held a 1e24 m circle, whose r² overflowed in continuous
+    // collision and left NaN bodies unfrozen (tests/fuzz/findings/snapshot/huge-radius-nan.bin).
+    const BodyId disc = world.createBody({.type = BodyType::Dynamic});
+    EXPECT_NO_THROW(world.createShape(disc, {.density = 0.0f}, Circle{{0, 0}, huge}));
+    EXPECT_THROW(world.createShape(disc, {.density = 0.0f}, Circle{{0, 0}, beyond}), Error);
+    EXPECT_THROW(world.createShape(disc, {.density = 0.0f}, Capsule{{0, 0}, {1, 0}, beyond}), Error);
+    const Vec2 triangle[3] = {{0, 0}, {1, 0}, {0, 1}};
+    EXPECT_NO_THROW(makePolygon(triangle, huge));
+    EXPECT_THROW(makePolygon(triangle, beyond), Error);
 }
 
 TEST(Numerics, LinearSpeedIsClampedToTheWorldLimit) {
@@ -236,6 +245,24 @@ TEST(Numerics, LinearSpeedIsClampedToTheWorldLimit) {
     EXPECT_NEAR(world.linearVelocity(fast).y, 80.0f, 1e-3f);
     EXPECT_NEAR(world.linearVelocity(huge).x, -100.0f, 1e-3f);
     EXPECT_NEAR(world.position(fast).x, 60.0f * dt, 1e-3f);
+}
+
+TEST(Numerics, BouncesStayWithinTheSpeedLimits) {
+    // Restitution runs after the substeps' clamp: a spinning plank's tip bounces at ω r, which
+    // could hand the body more than the limit (a fuzzed snapshot reached 2e16 m/s this way).
+    World world({.maxLinearSpeed = 5.0f});
+    const BodyId ground = world.createBody({});
+    world.createShape(ground, {}, Segment{{-50, 0}, {50, 0}});
+    const BodyId plank = world.createBody({.type = BodyType::Dynamic, .position = {0, 6}, .angle = 0.3f,
+                                           .linearVelocity = {0, -4}, .angularVelocity = 20.0f});
+    world.createShape(plank, {.restitution = 1.0f}, makeBox(5.0f, 0.1f));
+    float fastest = 0.0f;
+    for (int i = 0; i < 120; ++i) {
+        world.step(dt);
+        fastest = std::max(fastest, length(world.linearVelocity(plank)));
+        ASSERT_LE(length(world.linearVelocity(plank)), 5.0f * (1.0f + 1e-5f)) << "step " << i;
+    }
+    EXPECT_GT(fastest, 4.9f);  // it did reach the limit
 }
 
 TEST(Numerics, AngularSpeedIsClampedToAnEighthOfATurnPerSubstep) {

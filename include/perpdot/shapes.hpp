@@ -19,6 +19,9 @@ inline constexpr int maxPolygonVertices = 8;
 inline constexpr float maxShapeCoordinate = 1.0e5f;
 /// Whether both coordinates lie within ±maxShapeCoordinate.
 inline bool withinShapeRange(Vec2 v) { return std::fabs(v.x) <= maxShapeCoordinate && std::fabs(v.y) <= maxShapeCoordinate; }
+/// Whether a radius lies within maxShapeCoordinate: a larger one reaches past the shape range, and
+/// its r² (mass, inertia, distances) overflows a float beyond about 1e19 m.
+inline bool withinShapeRange(float radius) { return radius <= maxShapeCoordinate; }
 
 /// Which geometry a shape holds.
 enum class ShapeType : uint8_t { Circle, Polygon, Segment, Chain, Capsule };

@@ -24,6 +24,7 @@
 
 #include "core/continuous.hpp"
 #include "core/joint.hpp"
+#include "core/speed_limits.hpp"
 
 namespace perpdot {
 
@@ -242,6 +243,12 @@ void World::Impl::resolveImpact(const MoverPair& pair, float t, float h) {
             applyImpulse(a, ba, b, bb, p, (tangential - p.tangentImpulse) * tangent);
             p.tangentImpulse = tangential;
         }
+    // The integration's speed limits hold here too (speed_limits.hpp).
+    const float maxSpin = maxAngularSpeed(static_cast<float>(def.substeps) / h);
+    for (Mover* m : {&a, &b}) {
+        m->v = clampSpeed(m->v, def.maxLinearSpeed);
+        m->w = clampAngularSpeed(m->w, maxSpin);
+    }
     // Back along the old paths to the first touch (not before either path began), then on with the
     // new velocities: c1 = c(t') + (1 - t') h v, θ1 = θ(t') + (1 - t') h ω.
     const float touch = std::max({t - backTime / h, a.t0, b.t0});

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/speed_limits.hpp"
 #include "core/stages.hpp"
 
 namespace perpdot {
@@ -81,30 +82,14 @@ void applySubstepForces(World::Impl& w, int begin, int end) {
     }
 }
 
-namespace {
-
-// v scaled down to `maxSpeed` along its own direction. v·v overflows beyond 1.8e19 m/s: the
-// direction then comes from v divided by its largest component first.
-Vec2 clampSpeed(Vec2 v, float maxSpeed) {
-    if (!(dot(v, v) > maxSpeed * maxSpeed)) return v;
-    float len = length(v);
-    if (!std::isfinite(len)) {
-        v *= 1.0f / std::max(std::fabs(v.x), std::fabs(v.y));
-        len = length(v);
-    }
-    return v * (maxSpeed / len);
-}
-
-}  // namespace
-
 // x += hs v, θ += hs ω for one substep, with speeds clamped against blow-ups.
 void integratePositions(World::Impl& w, const StepContext& ctx, int begin, int end) {
     const float maxLinearSpeed = w.def.maxLinearSpeed;
-    const float maxAngularSpeed = 0.25f * pi * ctx.invHs;
+    const float maxSpin = maxAngularSpeed(ctx.invHs);
     for (int i = begin; i < end; ++i) {
         BodyState& s = w.scratch.states[i];
         s.v = clampSpeed(s.v, maxLinearSpeed);
-        if (s.w * s.w > maxAngularSpeed * maxAngularSpeed) s.w *= maxAngularSpeed / std::fabs(s.w);
+        s.w = clampAngularSpeed(s.w, maxSpin);
         s.dp += ctx.hs * s.v;
         w.scratch.stepRotation[i] += ctx.hs * s.w;
         s.dq = integrateRotation(s.dq, ctx.hs * s.w);
@@ -119,10 +104,13 @@ void integratePositions(World::Impl& w, const StepContext& ctx, int begin, int e
 // (continuous_impacts.cpp).
 void finalizeBodies(World::Impl& w, float h) {
     enum Motion : uint8_t { Moved, MovedInside, Fast, NonFinite };  // MovedInside: its proxies stay as they are
-    // The solver's velocities and the pose (c1, a1) into the body.
-    const auto moveTo = [](Body& b, const BodyState& s, Vec2 c1, float a1) {
-        b.v = s.v;
-        b.w = s.w;
+    // The solver's velocities, within the speed limits (restitution comes after the last clamp of
+    // integratePositions), and the pose (c1, a1) into the body.
+    const float maxLinearSpeed = w.def.maxLinearSpeed;
+    const float maxSpin = maxAngularSpeed(static_cast<float>(w.def.substeps) / h);
+    const auto moveTo = [&](Body& b, const BodyState& s, Vec2 c1, float a1) {
+        b.v = clampSpeed(s.v, maxLinearSpeed);
+        b.w = clampAngularSpeed(s.w, maxSpin);
         b.center = c1;
         b.angle = a1;
         b.xf = b.derivedTransform();

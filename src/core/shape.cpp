@@ -23,6 +23,7 @@ void validateGeometry(const Circle& c) {
     if (!isFinite(c.center)) throw Error("circle center must be finite");
     if (!withinShapeRange(c.center)) throw Error("circle center is more than 100000 m from the body origin");
     if (!(std::isfinite(c.radius) && c.radius > 0.0f)) throw Error("circle radius must be finite and > 0");
+    if (!withinShapeRange(c.radius)) throw Error("circle radius is more than 100000 m");
 }
 
 void validateGeometry(const Polygon& p) {
@@ -51,6 +52,7 @@ void validateGeometry(const Capsule& c) {
     if (!isFinite(c.center1) || !isFinite(c.center2)) throw Error("capsule centers must be finite");
     if (!withinShapeRange(c.center1) || !withinShapeRange(c.center2)) throw Error("capsule center is more than 100000 m from the body origin");
     if (!(std::isfinite(c.radius) && c.radius > 0.0f)) throw Error("capsule radius must be finite and > 0");
+    if (!withinShapeRange(c.radius)) throw Error("capsule radius is more than 100000 m");
     if (distance(c.center1, c.center2) < collide::linearSlop)
         throw Error("capsule centers are closer than the linear slop (0.005 m): use a circle");
 }

@@ -28,6 +28,7 @@ Polygon makePolygon(std::span<const Vec2> points, float radius) {
     if (n < 3 || n > maxPolygonVertices)
         throw Error("polygon needs 3 to " + std::to_string(maxPolygonVertices) + " vertices, got " + std::to_string(n));
     if (!std::isfinite(radius) || radius < 0.0f) throw Error("polygon radius must be finite and >= 0");
+    if (!withinShapeRange(radius)) throw Error("polygon radius is more than 100000 m");
     Polygon poly;
     poly.count = n;
     poly.radius = radius;
