@@ -87,10 +87,13 @@ public:
             fail(std::string(what) + " count " + std::to_string(n) + " exceeds the remaining data");
         return static_cast<int>(n);
     }
-    void skip(size_t size) {
+    // The next `size` bytes as they are.
+    std::span<const uint8_t> bytes(size_t size) {
         if (bytes_.size() - pos_ < size) truncated();
         pos_ += size;
+        return bytes_.subspan(pos_ - size, size);
     }
+    void skip(size_t size) { bytes(size); }
     void expectEnd() const {
         if (pos_ != bytes_.size()) fail(std::to_string(bytes_.size() - pos_) + " bytes left over after the end");
     }
