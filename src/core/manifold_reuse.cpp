@@ -21,9 +21,14 @@ bool reuseManifold(Contact& c, const Body& a, const Body& b, const ReuseLimits& 
     if (!(std::fabs(turnA) < maxTurn && std::fabs(turnB) < maxTurn)) return false;
     // Travel of the farthest surface point relative to A: the drift of B's centre plus |r| |Δθ_rel|,
     // r the anchors of a kept manifold, or the shapes' reach when there are no points.
+    // (One square root: it is monotonic, so the root of the largest |r|² is the largest |r|.)
     float reach = c.pointCount == 0 ? limits.reach : 0.0f;
-    for (int i = 0; i < c.pointCount; ++i)
-        reach = std::max({reach, length(c.points[i].anchorA), length(c.points[i].anchorB)});
+    if (c.pointCount > 0) {
+        float reachSquared = 0.0f;
+        for (int i = 0; i < c.pointCount; ++i)
+            reachSquared = std::max({reachSquared, lengthSquared(c.points[i].anchorA), lengthSquared(c.points[i].anchorB)});
+        reach = std::sqrt(reachSquared);
+    }
     const float drift = length(relativeOffset(a, b) - c.reuseOffset) + reach * std::fabs(turnB - turnA);
     // Apart, the shapes were more than Box2D's margin apart: travelling less than half of it they
     // stay apart (and reach the speculative margin with half of it to spare).
