@@ -36,5 +36,18 @@ TEST(PairSet, MatchesAReferenceSetUnderChurn) {
         for (uint32_t b = a + 1; b <= 300; ++b) ASSERT_EQ(set.contains(pairKey(a, b)), reference.contains(pairKey(a, b)));
 }
 
+TEST(PairSet, ReserveKeepsTheKeys) {
+    // A restore reserves for its contacts; reserving on a filled set rehashes what it holds.
+    PairSet set;
+    for (uint32_t a = 1; a <= 40; ++a) set.insert(pairKey(0, a));
+    set.reserve(5000);
+    set.reserve(10);  // never shrinks
+    for (uint32_t a = 1; a <= 60; ++a) EXPECT_EQ(set.contains(pairKey(0, a)), a <= 40) << a;
+    for (uint32_t a = 1; a <= 5000; ++a) set.insert(pairKey(1, a + 1));
+    EXPECT_EQ(set.size(), 5040u);
+    EXPECT_TRUE(set.contains(pairKey(1, 5001)));
+    EXPECT_FALSE(set.insert(pairKey(0, 40)));
+}
+
 }  // namespace
 }  // namespace perpdot::collide

@@ -1,6 +1,7 @@
 // PairSet: linear probing with backward-shift deletion (pair_set.hpp).
 #include "collide/pair_set.hpp"
 
+#include <algorithm>
 #include <bit>
 
 namespace perpdot::collide {
@@ -19,7 +20,7 @@ bool PairSet::contains(uint64_t key) const { return count_ > 0 && slots_[slotOf(
 
 bool PairSet::insert(uint64_t key) {
     // At most half full, so probe runs stay short.
-    if (2 * (count_ + 1) > slots_.size()) grow();
+    if (2 * (count_ + 1) > slots_.size()) rehash(slots_.empty() ? 64 : 2 * slots_.size());
     const size_t i = slotOf(key);
     if (slots_[i] == key) return false;
     slots_[i] = key;
@@ -46,8 +47,12 @@ void PairSet::erase(uint64_t key) {
     --count_;
 }
 
-void PairSet::grow() {
-    std::vector<uint64_t> old(slots_.empty() ? 64 : 2 * slots_.size(), empty);
+void PairSet::reserve(size_t count) {
+    if (2 * count > slots_.size()) rehash(std::bit_ceil(std::max<size_t>(64, 2 * count)));
+}
+
+void PairSet::rehash(size_t slotCount) {
+    std::vector<uint64_t> old(slotCount, empty);
     old.swap(slots_);
     shift_ = 64 - std::countr_zero(slots_.size());
     count_ = 0;

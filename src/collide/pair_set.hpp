@@ -16,12 +16,13 @@ public:
     bool insert(uint64_t key);  // false if already present
     void erase(uint64_t key);   // no-op if absent
     size_t size() const { return count_; }
+    void reserve(size_t count);  // room for `count` keys without growing (a restore's contacts)
 
 private:
     static constexpr uint64_t empty = 0;  // proxyPairKey is never 0: its two ids differ
     size_t home(uint64_t key) const;
     size_t slotOf(uint64_t key) const;  // the key's slot, or the empty slot ending its probe run
-    void grow();
+    void rehash(size_t slotCount);  // a power of two
 
     std::vector<uint64_t> slots_;
     size_t count_ = 0;

@@ -474,6 +474,7 @@ void World::restore(std::span<const uint8_t> bytes) {
             for (int proxy : s.proxies)
                 if (!movedSet.contains(proxy)) w.collision.clearMoved(proxy);
     }
+    w.contactCache.pairs.reserve(static_cast<size_t>(contactCount));
     for (int i = 0; i < contactCount; ++i) {
         Contact& c = w.contactCache.contacts[i];
         if (!c.alive) continue;
