@@ -1,5 +1,5 @@
-// Contact and sensor events: raised while step() runs, buffered without allocating once the
-// buffers have grown, and read after the step through spans (Box2D v3's model).
+// Contact, sensor and hit events raised by the step into the world's EventBuffers
+// (event_buffers.hpp), and read after it through spans.
 #include <algorithm>
 
 #include "core/world_impl.hpp"
@@ -19,28 +19,17 @@ ContactData World::Impl::contactData(const Contact& c) const {
     return d;
 }
 
-// Called at the start of step(): the last step's events go; end events raised since (a shape or
-// body destroyed between steps) stay, so they are reported by this step.
-void World::Impl::beginEvents() {
-    contactBeginEvents.clear();
-    contactHitEvents.clear();
-    jointBreakEvents.clear();
-    sensorBeginEvents.clear();
-    contactEndEvents.erase(contactEndEvents.begin(), contactEndEvents.begin() + static_cast<std::ptrdiff_t>(contactEndReported));
-    sensorEndEvents.erase(sensorEndEvents.begin(), sensorEndEvents.begin() + static_cast<std::ptrdiff_t>(sensorEndReported));
-}
-
 void World::Impl::reportTouch(const Contact& c, bool begin) {
     const ShapeData& sa = shapes[c.a.shape];
     const ShapeData& sb = shapes[c.b.shape];
     const ShapeId a = shapeId(c.a.shape), b = shapeId(c.b.shape);
     if (c.sensor) {
         const ShapeId sensor = sa.sensor ? a : b, visitor = sa.sensor ? b : a;
-        if (begin) sensorBeginEvents.push_back({sensor, visitor});
-        else sensorEndEvents.push_back({sensor, visitor});
+        if (begin) events.sensorBegin.push_back({sensor, visitor});
+        else events.sensorEnd.push_back({sensor, visitor});
     } else if (sa.enableContactEvents || sb.enableContactEvents) {
-        if (begin) contactBeginEvents.push_back({a, b});
-        else contactEndEvents.push_back({a, b});
+        if (begin) events.contactBegin.push_back({a, b});
+        else events.contactEnd.push_back({a, b});
     }
 }
 
@@ -61,17 +50,17 @@ void reportHitEvents(World::Impl& w) {
                 hit = true;
             }
         }
-        if (hit) w.contactHitEvents.push_back(event);
+        if (hit) w.events.contactHit.push_back(event);
     }
 }
 
 ContactEvents World::contactEvents() const {
-    return {impl_->contactBeginEvents, impl_->contactEndEvents, impl_->contactHitEvents};
+    return {impl_->events.contactBegin, impl_->events.contactEnd, impl_->events.contactHit};
 }
 
-SensorEvents World::sensorEvents() const { return {impl_->sensorBeginEvents, impl_->sensorEndEvents}; }
+SensorEvents World::sensorEvents() const { return {impl_->events.sensorBegin, impl_->events.sensorEnd}; }
 
-JointEvents World::jointEvents() const { return {impl_->jointBreakEvents}; }
+JointEvents World::jointEvents() const { return {impl_->events.jointBreak}; }
 
 void World::setPreSolve(PreSolveFn callback) {
     impl_->checkUnlocked("setPreSolve");

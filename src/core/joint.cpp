@@ -370,7 +370,7 @@ void breakJoints(World::Impl& w) {
         const Joint& j = s.joints[index];
         if (!w.bodies[j.bodyA].awake && !w.bodies[j.bodyB].awake) continue;  // asleep: nothing changed
         const auto [force, torque] = reaction(j);
-        w.jointBreakEvents.push_back({jointId(w, j), force, torque, j.destroyOnBreak, j.userData});
+        w.events.jointBreak.push_back({jointId(w, j), force, torque, j.destroyOnBreak, j.userData});
         if (j.destroyOnBreak) removeJoint(w, index);
     }
 }

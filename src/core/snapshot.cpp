@@ -347,8 +347,8 @@ std::vector<uint8_t> writeSnapshot(const World::Impl& w, bool futureOnly) {
         out.i32(key.shape);
         out.i32(key.child);
     }
-    writePending(out, w.contactEndEvents, w.contactEndReported);
-    writePending(out, w.sensorEndEvents, w.sensorEndReported);
+    writePending(out, w.events.contactEnd, w.events.contactEndReported);
+    writePending(out, w.events.sensorEnd, w.events.sensorEndReported);
     return std::move(out.bytes);
 }
 
@@ -444,8 +444,8 @@ void World::restore(std::span<const uint8_t> bytes) {
             in.fail("moved proxy names a missing shape child");
     }
     if (in.version >= 3) {
-        w.contactEndEvents = readPending<ContactEndTouchEvent>(in);
-        w.sensorEndEvents = readPending<SensorEndTouchEvent>(in);
+        w.events.contactEnd = readPending<ContactEndTouchEvent>(in);
+        w.events.sensorEnd = readPending<SensorEndTouchEvent>(in);
     }
     in.expectEnd();
 

@@ -38,7 +38,7 @@ void World::step(float timeStep) {
         explicit Lock(bool& l) : locked(l) { locked = true; }
         ~Lock() { locked = false; }
     } lock(w.locked);
-    w.beginEvents();
+    w.events.beginStep();
 
     updatePairs(w);     // pairs: proxies that left their fat AABB meet new partners
     updateContacts(w);  // narrowphase: each contact keeps its manifold or takes a new one
@@ -60,8 +60,7 @@ void World::step(float timeStep) {
     breakJoints(w);               // joints whose reaction passed their break limits
 
     w.updateSleep(timeStep);  // sleep: islands at rest
-    w.contactEndReported = w.contactEndEvents.size();
-    w.sensorEndReported = w.sensorEndEvents.size();
+    w.events.endStep();
 }
 
 }  // namespace perpdot

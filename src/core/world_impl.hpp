@@ -10,6 +10,7 @@
 #include "collide/collision.hpp"
 #include "core/body_store.hpp"
 #include "core/contact_cache.hpp"
+#include "core/event_buffers.hpp"
 #include "core/joint.hpp"
 #include "core/shape_store.hpp"
 #include "core/step_scratch.hpp"
@@ -34,15 +35,7 @@ struct World::Impl {
     bool locked = false;  // inside step()
     int frozenBodies = 0;  // bodies frozen because their state went non-finite (stats())
 
-    // Events of the last step (events.cpp). End events raised between steps (a destroyed shape)
-    // are kept for the next step: the first `endEventsReported` entries are the stale ones.
-    std::vector<ContactBeginTouchEvent> contactBeginEvents;
-    std::vector<ContactEndTouchEvent> contactEndEvents;
-    std::vector<ContactHitEvent> contactHitEvents;
-    std::vector<JointBreakEvent> jointBreakEvents;
-    std::vector<SensorBeginTouchEvent> sensorBeginEvents;
-    std::vector<SensorEndTouchEvent> sensorEndEvents;
-    size_t contactEndReported = 0, sensorEndReported = 0;
+    EventBuffers events;  // of the last step (event_buffers.hpp, events.cpp)
     PreSolveFn preSolve;
 
     Impl(const WorldDef& d);
@@ -68,7 +61,6 @@ struct World::Impl {
     void synchronizeProxies(int body, Vec2 displacement);
     // Whether synchronizeProxies(body, displacement) would change no proxy (any thread, between tree updates).
     bool proxiesKeep(int body, Vec2 displacement) const;
-    void beginEvents();                        // forget the events reported after the last step
     void reportTouch(const Contact& c, bool begin);  // begin/end event for a contact or sensor
     ContactData contactData(const Contact& c) const;
 
