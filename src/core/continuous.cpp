@@ -54,14 +54,14 @@ SegmentPass passOfCentre(Vec2 p1, Vec2 p2, bool oneSided, Vec2 start, Vec2 end, 
 
 }  // namespace
 
-bool World::Impl::isFast(int index, Vec2 c0, float a0, Vec2 c1, float a1) const {
-    const Body& b = bodies[index];
+bool isFast(const World::Impl& w, int index, Vec2 c0, float a0, Vec2 c1, float a1) {
+    const Body& b = w.bodies[index];
     if (b.type != BodyType::Dynamic) return false;
     float minExtent = std::numeric_limits<float>::max(), maxExtent = 0.0f;
     for (int s : b.shapes) {
-        if (!sweeps(shapes[s])) continue;
-        minExtent = std::min(minExtent, shapes[s].minExtent);
-        maxExtent = std::max(maxExtent, shapes[s].maxExtent);
+        if (!sweeps(w.shapes[s])) continue;
+        minExtent = std::min(minExtent, w.shapes[s].minExtent);
+        maxExtent = std::max(maxExtent, w.shapes[s].maxExtent);
     }
     if (maxExtent == 0.0f) return false;
     // Largest distance any point travelled: |Δc| + |Δθ|·(radius about the centre of mass).
@@ -69,21 +69,21 @@ bool World::Impl::isFast(int index, Vec2 c0, float a0, Vec2 c1, float a1) const 
     return travel > safetyFactor * minExtent;
 }
 
-float World::Impl::staticImpact(int index, const collide::Sweep& sweep) const {
-    const Body& b = bodies[index];
+float staticImpact(const World::Impl& w, int index, const collide::Sweep& sweep) {
+    const Body& b = w.bodies[index];
     const Rot q0 = Rot::fromAngle(sweep.a1), q1 = Rot::fromAngle(sweep.a2);
     const Transform xf0{sweep.c1 - rotate(q0, b.localCenter), q0}, xf1{sweep.c2 - rotate(q1, b.localCenter), q1};
     float t = 1.0f;
     for (int s : b.shapes) {
-        const ShapeData& shape = shapes[s];
+        const ShapeData& shape = w.shapes[s];
         if (!sweeps(shape)) continue;
-        const AABB start = collision.computeAABB(s, 0, xf0), end = collision.computeAABB(s, 0, xf1);
-        collision.queryStatic(combine(start, end), [&](int proxy) {
-            const collide::ChildKey key = collision.proxyKey(proxy);
-            const ShapeData& other = shapes[key.shape];
-            const Body& ob = bodies[other.body];
+        const AABB start = w.collision.computeAABB(s, 0, xf0), end = w.collision.computeAABB(s, 0, xf1);
+        w.collision.queryStatic(combine(start, end), [&](int proxy) {
+            const collide::ChildKey key = w.collision.proxyKey(proxy);
+            const ShapeData& other = w.shapes[key.shape];
+            const Body& ob = w.bodies[other.body];
             if (other.sensor || !collide::CollisionSystem::canCollide(shape.type, other.type) ||
-                !shouldCollide(shape.filter, other.filter) || !jointAllowsCollision(*this, index, other.body))
+                !shouldCollide(shape.filter, other.filter) || !jointAllowsCollision(w, index, other.body))
                 return true;
             Vec2 p1, p2;
             SegmentPass pass = SegmentPass::Nears;  // what a non-segment shape is treated as
@@ -92,13 +92,13 @@ float World::Impl::staticImpact(int index, const collide::Sweep& sweep) const {
                 if (pass == SegmentPass::Misses) return true;
             }
             const collide::Sweep still{ob.localCenter, ob.center, ob.center, ob.angle, ob.angle};
-            float toi = collision.timeOfImpact({s, 0}, sweep, key, still);
+            float toi = w.collision.timeOfImpact({s, 0}, sweep, key, still);
             // The shape's core (a circle of a quarter of its extent, which turning does not change)
             // must still not pass when the shape was already touching at the start, or when the
             // centre crossed the segment but b2TimeOfImpact saw no impact: a shape turning by
             // radians in one step can defeat its separating-axis advance.
             if (toi == 0.0f || (toi >= 1.0f && pass == SegmentPass::Crosses))
-                toi = collision.coreTimeOfImpact(s, 0.25f * shape.minExtent, sweep, key, still);
+                toi = w.collision.coreTimeOfImpact(s, 0.25f * shape.minExtent, sweep, key, still);
             if (toi > 0.0f && toi < t) t = toi;
             return true;
         });
@@ -106,9 +106,9 @@ float World::Impl::staticImpact(int index, const collide::Sweep& sweep) const {
     return t;
 }
 
-void World::Impl::solveContinuous(int index, Vec2 c0, float a0) {
-    Body& b = bodies[index];
-    const float t = staticImpact(index, {b.localCenter, c0, b.center, a0, b.angle});
+void solveContinuous(World::Impl& w, int index, Vec2 c0, float a0) {
+    Body& b = w.bodies[index];
+    const float t = staticImpact(w, index, {b.localCenter, c0, b.center, a0, b.angle});
     if (t >= 1.0f) return;
     // Back to the pose at the time of impact: c = c0 + t (c1 - c0), θ = θ0 + t (θ1 - θ0).
     b.center = c0 + t * (b.center - c0);

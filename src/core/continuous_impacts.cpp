@@ -88,46 +88,44 @@ void applyImpulse(Mover& a, const Body& ba, Mover& b, const Body& bb, const Impa
     b.w += bb.invInertia * perpDot(p.rB, j);
 }
 
-}  // namespace
-
 // Movers and pairs: the fast movers are in `movers` already; the bodies their swept boxes meet
 // are added, and every pair with a bullet in it is listed once.
-void World::Impl::collectMoverPairs() {
-    std::vector<Mover>& movers = scratch.movers;
-    std::vector<MoverPair>& moverPairs = scratch.moverPairs;
-    std::vector<int>& moverOfBody = scratch.moverOfBody;
+void collectMoverPairs(World::Impl& w) {
+    std::vector<Mover>& movers = w.scratch.movers;
+    std::vector<MoverPair>& moverPairs = w.scratch.moverPairs;
+    std::vector<int>& moverOfBody = w.scratch.moverOfBody;
     moverPairs.clear();
-    moverOfBody.assign(bodies.capacity(), -1);
+    moverOfBody.assign(w.bodies.capacity(), -1);
     const int fastCount = static_cast<int>(movers.size());
     for (int i = 0; i < fastCount; ++i) {
         Mover& m = movers[i];
         moverOfBody[m.body] = i;
-        const Body& b = bodies[m.body];
+        const Body& b = w.bodies[m.body];
         const Rot q0 = Rot::fromAngle(m.a0);
         const Transform xf0{m.c0 - rotate(q0, b.localCenter), q0};
         bool first = true;
         for (int s : b.shapes)
-            for (int child = 0; child < collision.childCount(s); ++child) {
-                const AABB box = combine(collision.computeAABB(s, child, xf0), collision.computeAABB(s, child, b.xf));
+            for (int child = 0; child < w.collision.childCount(s); ++child) {
+                const AABB box = combine(w.collision.computeAABB(s, child, xf0), w.collision.computeAABB(s, child, b.xf));
                 m.swept = first ? box : combine(m.swept, box);
                 first = false;
             }
     }
     const auto addPair = [&](int a, int b) { moverPairs.push_back({.a = std::min(a, b), .b = std::max(a, b)}); };
     for (int i = 0; i < fastCount; ++i) {
-        if (bodies[movers[i].body].shapes.empty()) continue;
-        const bool bullet = bodies[movers[i].body].bullet;
+        if (w.bodies[movers[i].body].shapes.empty()) continue;
+        const bool bullet = w.bodies[movers[i].body].bullet;
         // Slower bodies: their fat boxes in the tree hold their whole (short) paths.
-        collision.query(movers[i].swept, [&](int proxy) {
-            const int other = shapes[collision.proxyKey(proxy).shape].body;
-            const Body& o = bodies[other];
+        w.collision.query(movers[i].swept, [&](int proxy) {
+            const int other = w.shapes[w.collision.proxyKey(proxy).shape].body;
+            const Body& o = w.bodies[other];
             if (other == movers[i].body || o.type == BodyType::Static || !(bullet || o.bullet)) return true;
             int m = moverOfBody[other];
             if (m >= 0 && m < fastCount) return true;  // fast against fast: below
             if (m < 0) {
-                const BodyState& s = scratch.states[o.solverIndex];  // slot 0 (asleep): no motion
+                const BodyState& s = w.scratch.states[o.solverIndex];  // slot 0 (asleep): no motion
                 const Vec2 c0 = o.center - s.dp;
-                const float a0 = o.angle - scratch.stepRotation[o.solverIndex];
+                const float a0 = o.angle - w.scratch.stepRotation[o.solverIndex];
                 m = static_cast<int>(movers.size());
                 movers.push_back({.body = other, .c0 = c0, .c1 = o.center, .a0 = a0, .a1 = o.angle, .v = o.v,
                                   .w = o.w, .stepStart = c0});
@@ -138,7 +136,7 @@ void World::Impl::collectMoverPairs() {
         });
         // Other fast bodies: their swept boxes.
         for (int j = i + 1; j < fastCount; ++j)
-            if ((bullet || bodies[movers[j].body].bullet) && overlaps(movers[i].swept, movers[j].swept)) addPair(i, j);
+            if ((bullet || w.bodies[movers[j].body].bullet) && overlaps(movers[i].swept, movers[j].swept)) addPair(i, j);
     }
     std::sort(moverPairs.begin(), moverPairs.end(), [](const MoverPair& x, const MoverPair& y) {
         return std::tie(x.a, x.b) < std::tie(y.a, y.b);
@@ -149,23 +147,23 @@ void World::Impl::collectMoverPairs() {
 }
 
 // The pair's first time of impact after step time t (1: none), and the children that meet.
-void World::Impl::pairImpact(MoverPair& pair, float t) const {
-    const std::vector<Mover>& movers = scratch.movers;
+void pairImpact(const World::Impl& w, MoverPair& pair, float t) {
+    const std::vector<Mover>& movers = w.scratch.movers;
     const Mover& a = movers[pair.a];
     const Mover& b = movers[pair.b];
-    const Body& ba = bodies[a.body];
-    const Body& bb = bodies[b.body];
+    const Body& ba = w.bodies[a.body];
+    const Body& bb = w.bodies[b.body];
     pair.time = 1.0f;
-    if (!jointAllowsCollision(*this, a.body, b.body)) return;
+    if (!jointAllowsCollision(w, a.body, b.body)) return;
     const collide::Sweep sweepA = sweepFrom(a, ba.localCenter, t), sweepB = sweepFrom(b, bb.localCenter, t);
     float first = 1.0f;
     // The swept shape `s` (of the body moving along `sweep`) against every child of `other`.
     const auto sweepShape = [&](int s, const collide::Sweep& sweep, int other, const collide::Sweep& otherSweep, bool isA) {
-        for (int child = 0; child < collision.childCount(other); ++child) {
+        for (int child = 0; child < w.collision.childCount(other); ++child) {
             const collide::ChildKey key{other, child};
-            float toi = collision.timeOfImpact({s, 0}, sweep, key, otherSweep);
+            float toi = w.collision.timeOfImpact({s, 0}, sweep, key, otherSweep);
             // Touching at the start: the shape's core must still not pass through.
-            if (toi == 0.0f) toi = collision.coreTimeOfImpact(s, coreFraction * shapes[s].minExtent, sweep, key, otherSweep);
+            if (toi == 0.0f) toi = w.collision.coreTimeOfImpact(s, coreFraction * w.shapes[s].minExtent, sweep, key, otherSweep);
             if (toi > 0.0f && toi < first) {
                 first = toi;
                 pair.keyA = isA ? collide::ChildKey{s, 0} : key;
@@ -175,8 +173,8 @@ void World::Impl::pairImpact(MoverPair& pair, float t) const {
     };
     for (int sa : ba.shapes)
         for (int sb : bb.shapes) {
-            const ShapeData& shapeA = shapes[sa];
-            const ShapeData& shapeB = shapes[sb];
+            const ShapeData& shapeA = w.shapes[sa];
+            const ShapeData& shapeB = w.shapes[sb];
             if (shapeA.sensor || shapeB.sensor || !collide::CollisionSystem::canCollide(shapeA.type, shapeB.type) ||
                 !shouldCollide(shapeA.filter, shapeB.filter))
                 continue;
@@ -188,20 +186,20 @@ void World::Impl::pairImpact(MoverPair& pair, float t) const {
 
 // The impact of the pair at step time t: Hecker's impulse at the manifold's points, the pair
 // moved back to first touch, and new paths for the rest of the step.
-void World::Impl::resolveImpact(const MoverPair& pair, float t, float h) {
-    std::vector<Mover>& movers = scratch.movers;
+void resolveImpact(World::Impl& w, const MoverPair& pair, float t, float h) {
+    std::vector<Mover>& movers = w.scratch.movers;
     Mover& a = movers[pair.a];
     Mover& b = movers[pair.b];
-    const Body& ba = bodies[a.body];
-    const Body& bb = bodies[b.body];
+    const Body& ba = w.bodies[a.body];
+    const Body& bb = w.bodies[b.body];
     const Transform xfA = frameAt(a, ba.localCenter, t), xfB = frameAt(b, bb.localCenter, t);
-    const ShapeData& shapeA = shapes[pair.keyA.shape];
-    const ShapeData& shapeB = shapes[pair.keyB.shape];
+    const ShapeData& shapeA = w.shapes[pair.keyA.shape];
+    const ShapeData& shapeB = w.shapes[pair.keyB.shape];
     const bool swap = collide::CollisionSystem::mustSwap(shapeA.type, shapeB.type);
     // Box2D's separations: the time of impact stops at Box2D's target distance in skin terms, and
     // going back by the skin overlap leaves the pair a skin apart, never inside each other.
     const collide::Manifold manifold =
-        swap ? collision.collide(pair.keyB, xfB, pair.keyA, xfA, true) : collision.collide(pair.keyA, xfA, pair.keyB, xfB, true);
+        swap ? w.collision.collide(pair.keyB, xfB, pair.keyA, xfA, true) : w.collision.collide(pair.keyA, xfA, pair.keyB, xfB, true);
     if (manifold.pointCount == 0) {  // nothing to push on: both wait at the impact (continuous.cpp's answer)
         for (Mover* m : {&a, &b}) {
             restartAt(*m, t);
@@ -224,7 +222,7 @@ void World::Impl::resolveImpact(const MoverPair& pair, float t, float h) {
         p.normalMass = effectiveMass(ba, bb, p.rA, p.rB, n);
         p.tangentMass = effectiveMass(ba, bb, p.rA, p.rB, tangent);
         const float vn = dot(relativeVelocity(a, b, p), n);
-        p.targetSpeed = vn < -def.restitutionThreshold ? -restitution * vn : 0.0f;
+        p.targetSpeed = vn < -w.def.restitutionThreshold ? -restitution * vn : 0.0f;
         // Depth over approach speed: how long ago this point's surfaces touched.
         if (manifold.points[i].separation < 0.0f && vn < 0.0f) backTime = std::max(backTime, manifold.points[i].separation / vn);
     }
@@ -244,9 +242,9 @@ void World::Impl::resolveImpact(const MoverPair& pair, float t, float h) {
             p.tangentImpulse = tangential;
         }
     // The integration's speed limits hold here too (speed_limits.hpp).
-    const float maxSpin = maxAngularSpeed(static_cast<float>(def.substeps) / h);
+    const float maxSpin = maxAngularSpeed(static_cast<float>(w.def.substeps) / h);
     for (Mover* m : {&a, &b}) {
-        m->v = clampSpeed(m->v, def.maxLinearSpeed);
+        m->v = clampSpeed(m->v, w.def.maxLinearSpeed);
         m->w = clampAngularSpeed(m->w, maxSpin);
     }
     // Back along the old paths to the first touch (not before either path began), then on with the
@@ -260,11 +258,13 @@ void World::Impl::resolveImpact(const MoverPair& pair, float t, float h) {
     }
 }
 
-void World::Impl::solveMovingImpacts(float h) {
-    collectMoverPairs();
-    std::vector<Mover>& movers = scratch.movers;
-    std::vector<MoverPair>& moverPairs = scratch.moverPairs;
-    for (Mover& m : movers) m.sweepStatic = m.fast && bodies[m.body].bullet;  // the others were swept already
+}  // namespace
+
+void solveMovingImpacts(World::Impl& w, float h) {
+    collectMoverPairs(w);
+    std::vector<Mover>& movers = w.scratch.movers;
+    std::vector<MoverPair>& moverPairs = w.scratch.moverPairs;
+    for (Mover& m : movers) m.sweepStatic = m.fast && w.bodies[m.body].bullet;  // the others were swept already
     float now = 0.0f;
     const int maxImpacts = impactsPerMover * static_cast<int>(movers.size() + moverPairs.size());
     for (int impact = 0; impact < maxImpacts; ++impact) {
@@ -273,13 +273,13 @@ void World::Impl::solveMovingImpacts(float h) {
         int firstPair = -1, firstStatic = -1;
         for (int i = 0; i < static_cast<int>(moverPairs.size()); ++i) {
             MoverPair& p = moverPairs[i];
-            if (p.dirty) pairImpact(p, now), p.dirty = false;
+            if (p.dirty) pairImpact(w, p, now), p.dirty = false;
             if (p.time < first) first = p.time, firstPair = i, firstStatic = -1;
         }
         for (int i = 0; i < static_cast<int>(movers.size()); ++i) {
             Mover& m = movers[i];
             if (m.sweepStatic) {
-                m.staticTime = stepTime(now, staticImpact(m.body, sweepFrom(m, bodies[m.body].localCenter, now)));
+                m.staticTime = stepTime(now, staticImpact(w, m.body, sweepFrom(m, w.bodies[m.body].localCenter, now)));
                 m.sweepStatic = false;
             }
             if (m.staticTime < first) first = m.staticTime, firstStatic = i, firstPair = -1;
@@ -294,7 +294,7 @@ void World::Impl::solveMovingImpacts(float h) {
             m.staticTime = 1.0f;
         } else {
             const MoverPair& p = moverPairs[firstPair];
-            resolveImpact(p, now, h);
+            resolveImpact(w, p, now, h);
             changedA = p.a, changedB = p.b;
         }
         for (MoverPair& p : moverPairs)
@@ -302,15 +302,15 @@ void World::Impl::solveMovingImpacts(float h) {
     }
     // The movers' ends into their bodies; the broadphase follows (fast bullets were not synchronised yet).
     for (const Mover& m : movers) {
-        Body& b = bodies[m.body];
+        Body& b = w.bodies[m.body];
         if (!m.moved && !(m.fast && b.bullet)) continue;
-        if (m.moved && !b.awake) wake(m.body);
+        if (m.moved && !b.awake) w.wake(m.body);
         b.center = m.c1;
         b.angle = m.a1;
         b.xf = b.derivedTransform();
         b.v = m.v;
         b.w = m.w;
-        synchronizeProxies(m.body, b.center - m.stepStart);
+        w.synchronizeProxies(m.body, b.center - m.stepStart);
     }
 }
 

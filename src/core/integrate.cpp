@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/continuous.hpp"
 #include "core/speed_limits.hpp"
 #include "core/stages.hpp"
 
@@ -128,7 +129,7 @@ void finalizeBodies(World::Impl& w, float h) {
             }
             const Vec2 c1 = b.center + s.dp;
             const float a1 = b.angle + dAngle;
-            if (w.def.enableContinuous && w.isFast(w.scratch.awakeBodies[k], b.center, b.angle, c1, a1)) {
+            if (w.def.enableContinuous && isFast(w, w.scratch.awakeBodies[k], b.center, b.angle, c1, a1)) {
                 w.scratch.bodyMotion[k] = Fast;
                 continue;
             }
@@ -163,13 +164,13 @@ void finalizeBodies(World::Impl& w, float h) {
         moveTo(b, s, c0 + s.dp, a0 + w.scratch.stepRotation[k + 1]);
         w.scratch.movers.push_back({.body = index, .c0 = c0, .a0 = a0, .v = b.v, .w = b.w, .stepStart = c0, .fast = true});
         if (!b.bullet) {
-            w.solveContinuous(index, c0, a0);
+            solveContinuous(w, index, c0, a0);
             w.synchronizeProxies(index, b.center - c0);
         }
         w.scratch.movers.back().c1 = b.center;
         w.scratch.movers.back().a1 = b.angle;
     }
-    if (anyBullet && !w.scratch.movers.empty()) w.solveMovingImpacts(h);
+    if (anyBullet && !w.scratch.movers.empty()) solveMovingImpacts(w, h);
     for (Body& b : w.bodies.slots()) {
         b.force = {};
         b.torque = 0.0f;

@@ -64,22 +64,8 @@ struct World::Impl {
     void reportTouch(const Contact& c, bool begin);  // begin/end event for a contact or sensor
     ContactData contactData(const Contact& c) const;
 
-    // Stages of the step run by step.cpp (stages.hpp; sleep.cpp, continuous*.cpp)
+    // Stages of the step run by step.cpp (stages.hpp; sleep.cpp)
     void updateSleep(float h);
-    // Continuous collision (continuous.cpp): a body is fast when its move from (centre c0, angle
-    // a0) to (c1, a1) may tunnel; solveContinuous sweeps it from its step-start pose (c0, a0) to
-    // its current one and moves it back to the earliest time of impact.
-    bool isFast(int body, Vec2 c0, float a0, Vec2 c1, float a1) const;
-    void solveContinuous(int body, Vec2 c0, float a0);
-    // The earliest time of impact in [0, 1] of the body's shapes along `sweep` with static shapes.
-    float staticImpact(int body, const collide::Sweep& sweep) const;
-    // Bullets against moving bodies (continuous_impacts.cpp): `movers` holds the fast bodies of
-    // this step (bullets not yet synchronised); finds their impacts in time order, resolves each
-    // with Hecker's collision impulse and moves the pair on for the rest of the step.
-    void solveMovingImpacts(float h);
-    void collectMoverPairs();
-    void pairImpact(MoverPair& pair, float t) const;
-    void resolveImpact(const MoverPair& pair, float t, float h);
 };
 
 // Contact solver stages (contact_solver.cpp, and contact_solver_wide.cpp for the rows solved in
