@@ -4,8 +4,8 @@
 #include <limits>
 #include <numeric>
 
+#include "core/stages.hpp"
 #include "core/union_find.hpp"
-#include "core/world_impl.hpp"
 
 namespace perpdot {
 
@@ -18,12 +18,12 @@ constexpr float timeToSleep = 0.5f;                       // s
 
 }  // namespace
 
-void World::Impl::updateSleep(float h) {
-    if (!def.enableSleep) return;
-    const size_t n = bodies.capacity();
+void updateSleep(World::Impl& w, float h) {
+    if (!w.def.enableSleep) return;
+    const size_t n = w.bodies.capacity();
     bool anySleepy = false;
-    for (int i : scratch.awakeBodies) {
-        Body& b = bodies[i];
+    for (int i : w.scratch.awakeBodies) {
+        Body& b = w.bodies[i];
         if (!b.allowSleep || b.w * b.w > angularSleepTolerance * angularSleepTolerance ||
             dot(b.v, b.v) > linearSleepTolerance * linearSleepTolerance) {
             b.sleepTime = 0.0f;
@@ -36,43 +36,43 @@ void World::Impl::updateSleep(float h) {
 
     // Every body starts as its own island, those woken after the step's integration (by a broken
     // joint) too: they are awake but not among awakeBodies, and no value of an earlier step is read.
-    scratch.islandParent.resize(n);
-    std::iota(scratch.islandParent.begin(), scratch.islandParent.end(), 0);
+    w.scratch.islandParent.resize(n);
+    std::iota(w.scratch.islandParent.begin(), w.scratch.islandParent.end(), 0);
 
-    auto joinable = [&](int body) { return bodies[body].type == BodyType::Dynamic && bodies[body].awake; };
-    contactCache.contacts.forEachLive([&](int, const Contact& c) {
-        if (c.touching && joinable(c.bodyA) && joinable(c.bodyB)) unite(scratch.islandParent, c.bodyA, c.bodyB);
+    auto joinable = [&](int body) { return w.bodies[body].type == BodyType::Dynamic && w.bodies[body].awake; };
+    w.contactCache.contacts.forEachLive([&](int, const Contact& c) {
+        if (c.touching && joinable(c.bodyA) && joinable(c.bodyB)) unite(w.scratch.islandParent, c.bodyA, c.bodyB);
     });
     forEachJointPair(
-        *this,
+        w,
         [](void* context, int a, int b) {
-            World::Impl& w = *static_cast<World::Impl*>(context);
-            auto ok = [&](int i) { return w.bodies[i].type == BodyType::Dynamic && w.bodies[i].awake; };
-            if (ok(a) && ok(b)) unite(w.scratch.islandParent, a, b);
+            World::Impl& world = *static_cast<World::Impl*>(context);
+            auto ok = [&](int i) { return world.bodies[i].type == BodyType::Dynamic && world.bodies[i].awake; };
+            if (ok(a) && ok(b)) unite(world.scratch.islandParent, a, b);
         },
-        this);
+        &w);
 
     // The island sleeps when its least sleepy body has been still long enough. islandMinSleep and
     // islandHead reuse the parent array's index space.
-    scratch.islandMinSleep.assign(n, std::numeric_limits<float>::max());
-    scratch.islandHead.assign(n, -1);
-    for (int i : scratch.awakeBodies) {
-        const int root = findRoot(scratch.islandParent, i);
-        scratch.islandMinSleep[root] = std::min(scratch.islandMinSleep[root], bodies[i].sleepTime);
+    w.scratch.islandMinSleep.assign(n, std::numeric_limits<float>::max());
+    w.scratch.islandHead.assign(n, -1);
+    for (int i : w.scratch.awakeBodies) {
+        const int root = findRoot(w.scratch.islandParent, i);
+        w.scratch.islandMinSleep[root] = std::min(w.scratch.islandMinSleep[root], w.bodies[i].sleepTime);
     }
-    for (int i : scratch.awakeBodies) {
-        const int root = findRoot(scratch.islandParent, i);
-        if (scratch.islandMinSleep[root] < timeToSleep) continue;
-        Body& b = bodies[i];
+    for (int i : w.scratch.awakeBodies) {
+        const int root = findRoot(w.scratch.islandParent, i);
+        if (w.scratch.islandMinSleep[root] < timeToSleep) continue;
+        Body& b = w.bodies[i];
         b.awake = false;
         b.v = {};
         b.w = 0.0f;
         // Thread the island into a ring so that waking any member wakes all.
-        if (scratch.islandHead[root] < 0) {
-            scratch.islandHead[root] = i;
+        if (w.scratch.islandHead[root] < 0) {
+            w.scratch.islandHead[root] = i;
             b.islandNext = i;
         } else {
-            Body& head = bodies[scratch.islandHead[root]];
+            Body& head = w.bodies[w.scratch.islandHead[root]];
             b.islandNext = head.islandNext;
             head.islandNext = i;
         }

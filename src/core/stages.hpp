@@ -1,8 +1,8 @@
 // The stages of World::step (step.cpp), in the order it runs them, each a function of the world
 // and the step's context: the units the speed issue's threads will run. The contact and joint
 // stages are defined beside their rows (contact_solver*.cpp, joint*.cpp), the body stages in
-// integrate.cpp; pairs and narrowphase are the contact cache's (contact_cache.hpp), continuous and
-// sleep are World::Impl members.
+// integrate.cpp; pairs and narrowphase are the contact cache's (contact_cache.hpp), continuous
+// collision has its own header (continuous.hpp).
 #pragma once
 
 #include "core/joint.hpp"
@@ -22,5 +22,8 @@ void applySubstepForces(World::Impl& w, int begin, int end);
 void integratePositions(World::Impl& w, const StepContext& ctx, int begin, int end);
 // Store the solver state in the bodies and sweep the fast ones (continuous collision).
 void finalizeBodies(World::Impl& w, float h);
+// Sleep: islands of touching contacts and joints whose every body was still for timeToSleep fall
+// asleep as a whole (sleep.cpp).
+void updateSleep(World::Impl& w, float h);
 
 }  // namespace perpdot

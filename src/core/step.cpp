@@ -59,7 +59,7 @@ void World::step(float timeStep) {
     finalizeBodies(w, timeStep);  // positions back into the bodies; continuous collision
     breakJoints(w);               // joints whose reaction passed their break limits
 
-    w.updateSleep(timeStep);  // sleep: islands at rest
+    updateSleep(w, timeStep);  // sleep: islands at rest
     w.events.endStep();
 }
 

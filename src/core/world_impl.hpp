@@ -63,9 +63,6 @@ struct World::Impl {
     bool proxiesKeep(int body, Vec2 displacement) const;
     void reportTouch(const Contact& c, bool begin);  // begin/end event for a contact or sensor
     ContactData contactData(const Contact& c) const;
-
-    // Stages of the step run by step.cpp (stages.hpp; sleep.cpp)
-    void updateSleep(float h);
 };
 
 // Contact solver stages (contact_solver.cpp, and contact_solver_wide.cpp for the rows solved in
