@@ -13,7 +13,7 @@
 namespace perpdot {
 
 /// Which kind of joint a JointId names.
-enum class JointType : uint8_t { Revolute, Prismatic, Distance, Weld, Wheel, Motor, Mouse, Gear, Pulley };
+enum class JointType : uint8_t { Revolute, Prismatic, Distance, Weld, Wheel, Motor, Mouse, Gear, Pulley, Filter };
 
 /// A hinge: the anchors coincide, B turns freely about them, optionally limited and motorised.
 struct RevoluteJointDef {
@@ -164,6 +164,15 @@ struct PulleyJointDef {
     bool collideConnected = false;
     /// Not used by the engine.
     void* userData = nullptr;
+};
+
+/// Keeps two bodies from colliding and does nothing else: no rows (Box2D v3's b2FilterJointDef,
+/// formerly its null joint). Being a joint, it keeps the two bodies in one island, so they sleep
+/// and wake together; destroying it lets them collide again.
+struct FilterJointDef {
+    BodyId bodyA;              ///< the first body
+    BodyId bodyB;              ///< the second body
+    void* userData = nullptr;  ///< the application's pointer
 };
 
 }  // namespace perpdot

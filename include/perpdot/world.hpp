@@ -187,6 +187,7 @@ public:
     JointId createJoint(const GearJointDef& def);
     /// A pulley (joints.hpp); throws perpdot::Error for lengths ≤ 0, ratio ≤ 0 or non-finite values.
     JointId createJoint(const PulleyJointDef& def);
+    JointId createJoint(const FilterJointDef& def);  ///< A new filter joint: A and B stop colliding.
     void destroyJoint(JointId joint);  ///< Wakes its bodies.
     bool isValid(JointId joint) const;  ///< Whether `joint` names a live joint.
     std::vector<JointId> joints() const;  ///< Live joints, in creation order.

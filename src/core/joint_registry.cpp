@@ -7,14 +7,14 @@
 namespace perpdot {
 
 extern const JointKind revoluteKind, prismaticKind, distanceKind, weldKind, wheelKind, motorKind, mouseKind, gearKind,
-    pulleyKind;
+    pulleyKind, filterKind;
 
 namespace {
 
 // In JointType's order. The assert names the last enumerator: a new type moves it there.
 constexpr std::array registry{&revoluteKind, &prismaticKind, &distanceKind, &weldKind, &wheelKind,
-                              &motorKind,    &mouseKind,     &gearKind,     &pulleyKind};
-static_assert(registry.size() == static_cast<size_t>(JointType::Pulley) + 1, "a JointType without a kind");
+                              &motorKind,    &mouseKind,     &gearKind,     &pulleyKind, &filterKind};
+static_assert(registry.size() == static_cast<size_t>(JointType::Filter) + 1, "a JointType without a kind");
 
 }  // namespace
 

@@ -1,0 +1,31 @@
+// Filter joint: no rows; its bodies do not collide (collideConnected false, which addJoint acts
+// on). Box2D v3's filter joint.
+#include <tuple>
+
+#include "core/joint_type.hpp"
+#include "core/world_impl.hpp"
+
+namespace perpdot {
+
+namespace {
+
+struct FilterJoint {};
+
+constexpr auto fields(const FilterJoint*) { return std::tuple{}; }
+
+void prepareFilter(PreparedJoint&, const StepContext&, const Body&, const Body&) {}
+void warmStartFilter(PreparedJoint&, JointPair&) {}
+void solveFilter(PreparedJoint&, JointPair&, const StepContext&, bool) {}
+JointReaction reactionFilter(const Joint&) { return {}; }
+
+}  // namespace
+
+JointId World::createJoint(const FilterJointDef& def) {
+    Joint& j = addJoint(*impl_, JointType::Filter, def.bodyA, def.bodyB, {}, {}, 0.0f, false, def.userData);
+    j.data.emplace<FilterJoint>();
+    return jointId(*impl_, j);
+}
+
+extern const JointKind filterKind = jointKind<FilterJoint>({prepareFilter, warmStartFilter, solveFilter, reactionFilter});
+
+}  // namespace perpdot
