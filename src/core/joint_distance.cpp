@@ -38,13 +38,13 @@ constexpr auto fields(const DistanceJoint*) {
 
 }  // namespace
 
-JointId World::createJoint(const DistanceJointDef& def) {
+Joint& makeJoint(World::Impl& w, const DistanceJointDef& def) {
     requireFinite(std::isfinite(def.length) && std::isfinite(def.minLength), "DistanceJointDef lengths");
     requireFinite(std::isfinite(def.hertz) && std::isfinite(def.dampingRatio), "DistanceJointDef spring");
     if (!(def.length > 0.0f)) throw Error("DistanceJointDef.length must be > 0");
     if (def.minLength < 0.0f || def.minLength > def.maxLength) throw Error("DistanceJointDef: need 0 <= minLength <= maxLength");
     if (def.hertz < 0.0f || def.dampingRatio < 0.0f) throw Error("DistanceJointDef: hertz and dampingRatio must be >= 0");
-    Joint& j = addJoint(*impl_, JointType::Distance, def.bodyA, def.bodyB, def.localAnchorA, def.localAnchorB, 0.0f,
+    Joint& j = addJoint(w, JointType::Distance, def.bodyA, def.bodyB, def.localAnchorA, def.localAnchorB, 0.0f,
                         def.collideConnected, def.userData);
     DistanceJoint& s = j.data.emplace<DistanceJoint>();
     s.length = def.length;
@@ -52,7 +52,7 @@ JointId World::createJoint(const DistanceJointDef& def) {
     s.maxLength = def.maxLength;
     s.hertz = def.hertz;
     s.dampingRatio = def.dampingRatio;
-    return jointId(*impl_, j);
+    return j;
 }
 
 void prepareDistance(PreparedJoint& j, const StepContext& ctx, const Body&, const Body&) {
@@ -88,6 +88,7 @@ JointReaction reactionDistance(const Joint& j) {
     return {(s.impulse + s.lowerImpulse - s.upperImpulse) * s.axis, 0.0f};
 }
 
+template JointId World::createJoint(const DistanceJointDef&);
 extern const JointKind distanceKind = jointKind<DistanceJoint>({prepareDistance, warmStartDistance, solveDistance, reactionDistance});
 
 }  // namespace perpdot

@@ -20,12 +20,13 @@ JointReaction reactionFilter(const Joint&) { return {}; }
 
 }  // namespace
 
-JointId World::createJoint(const FilterJointDef& def) {
-    Joint& j = addJoint(*impl_, JointType::Filter, def.bodyA, def.bodyB, {}, {}, 0.0f, false, def.userData);
+Joint& makeJoint(World::Impl& w, const FilterJointDef& def) {
+    Joint& j = addJoint(w, JointType::Filter, def.bodyA, def.bodyB, {}, {}, 0.0f, false, def.userData);
     j.data.emplace<FilterJoint>();
-    return jointId(*impl_, j);
+    return j;
 }
 
+template JointId World::createJoint(const FilterJointDef&);
 extern const JointKind filterKind = jointKind<FilterJoint>({prepareFilter, warmStartFilter, solveFilter, reactionFilter});
 
 }  // namespace perpdot

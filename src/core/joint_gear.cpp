@@ -95,24 +95,24 @@ CoupledRow gearRow(const GearJoint& g, const SideNow& a, const SideNow& b) {
 
 }  // namespace
 
-JointId World::createJoint(const GearJointDef& def) {
+Joint& makeJoint(World::Impl& w, const GearJointDef& def) {
     requireFinite(std::isfinite(def.ratio), "GearJointDef.ratio");
     if (def.ratio == 0.0f) throw Error("GearJointDef.ratio must not be 0");
-    const Joint& jointA = checkedJoint(*impl_, def.jointA);
-    const Joint& jointB = checkedJoint(*impl_, def.jointB);
-    const GearSide sideA = gearSide(*impl_, jointA, "jointA");
-    const GearSide sideB = gearSide(*impl_, jointB, "jointB");
+    const Joint& jointA = checkedJoint(w, def.jointA);
+    const Joint& jointB = checkedJoint(w, def.jointB);
+    const GearSide sideA = gearSide(w, jointA, "jointA");
+    const GearSide sideB = gearSide(w, jointB, "jointB");
     const int bodyA = jointA.bodyB, bodyB = jointB.bodyB;
     const Vec2 anchorA = jointA.localAnchorB, anchorB = jointB.localAnchorB;
     if (bodyA == bodyB) throw Error("GearJointDef: the two joints move the same body");
-    Joint& j = addJoint(*impl_, JointType::Gear, impl_->bodyId(bodyA), impl_->bodyId(bodyB), anchorA, anchorB, 0.0f,
+    Joint& j = addJoint(w, JointType::Gear, w.bodyId(bodyA), w.bodyId(bodyB), anchorA, anchorB, 0.0f,
                         def.collideConnected, def.userData);
     GearJoint& g = j.data.emplace<GearJoint>();
     g.sideA = sideA;
     g.sideB = sideB;
     g.ratio = def.ratio;
     g.constant = sideA.coordinate + def.ratio * sideB.coordinate;
-    return jointId(*impl_, j);
+    return j;
 }
 
 void prepareGear(PreparedJoint& j, const StepContext& ctx, const Body& a, const Body& b) {
@@ -145,6 +145,7 @@ JointReaction reactionGear(const Joint& j) {
     return {impulse * g.sideB.axis, 0.0f};
 }
 
+template JointId World::createJoint(const GearJointDef&);
 extern const JointKind gearKind = jointKind<GearJoint>({prepareGear, warmStartGear, solveGear, reactionGear});
 
 }  // namespace perpdot

@@ -32,20 +32,20 @@ constexpr auto fields(const MotorJoint*) {
 
 }  // namespace
 
-JointId World::createJoint(const MotorJointDef& def) {
+Joint& makeJoint(World::Impl& w, const MotorJointDef& def) {
     requireFinite(isFinite(def.linearOffset) && std::isfinite(def.angularOffset), "MotorJointDef offsets");
     requireFinite(std::isfinite(def.maxForce) && std::isfinite(def.maxTorque) && std::isfinite(def.correctionFactor),
                   "MotorJointDef limits");
     if (def.maxForce < 0.0f || def.maxTorque < 0.0f) throw Error("MotorJointDef: maxForce and maxTorque must be >= 0");
     if (def.correctionFactor < 0.0f || def.correctionFactor > 1.0f) throw Error("MotorJointDef.correctionFactor must be in [0, 1]");
     // Anchor A is the target point in A's frame, anchor B is B's origin.
-    Joint& j = addJoint(*impl_, JointType::Motor, def.bodyA, def.bodyB, def.linearOffset, {}, def.angularOffset,
+    Joint& j = addJoint(w, JointType::Motor, def.bodyA, def.bodyB, def.linearOffset, {}, def.angularOffset,
                         def.collideConnected, def.userData);
     MotorJoint& s = j.data.emplace<MotorJoint>();
     s.maxForce = def.maxForce;
     s.maxTorque = def.maxTorque;
     s.correctionFactor = def.correctionFactor;
-    return jointId(*impl_, j);
+    return j;
 }
 
 void prepareMotor(PreparedJoint& j, const StepContext& ctx, const Body&, const Body&) {
@@ -74,6 +74,7 @@ void solveMotor(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool) {
 
 JointReaction reactionMotor(const Joint& j) { return {j.data.as<MotorJoint>().linearImpulse, j.data.as<MotorJoint>().angularImpulse}; }
 
+template JointId World::createJoint(const MotorJointDef&);
 extern const JointKind motorKind = jointKind<MotorJoint>({prepareMotor, warmStartMotor, solveMotor, reactionMotor});
 
 }  // namespace perpdot

@@ -30,20 +30,20 @@ constexpr auto fields(const MouseJoint*) {
 
 }  // namespace
 
-JointId World::createJoint(const MouseJointDef& def) {
+Joint& makeJoint(World::Impl& w, const MouseJointDef& def) {
     requireFinite(isFinite(def.target), "MouseJointDef.target");
     requireFinite(std::isfinite(def.hertz) && std::isfinite(def.dampingRatio) && std::isfinite(def.maxForce),
                   "MouseJointDef spring");
     if (!(def.hertz > 0.0f) || def.dampingRatio < 0.0f || def.maxForce < 0.0f)
         throw Error("MouseJointDef: need hertz > 0, dampingRatio >= 0 and maxForce >= 0");
-    const Transform xfA = transform(def.bodyA), xfB = transform(def.bodyB);
-    Joint& j = addJoint(*impl_, JointType::Mouse, def.bodyA, def.bodyB, invTransformPoint(xfA, def.target),
+    const Transform xfA = w.body(def.bodyA).xf, xfB = w.body(def.bodyB).xf;
+    Joint& j = addJoint(w, JointType::Mouse, def.bodyA, def.bodyB, invTransformPoint(xfA, def.target),
                         invTransformPoint(xfB, def.target), 0.0f, def.collideConnected, def.userData);
     MouseJoint& s = j.data.emplace<MouseJoint>();
     s.hertz = def.hertz;
     s.dampingRatio = def.dampingRatio;
     s.maxForce = def.maxForce;
-    return jointId(*impl_, j);
+    return j;
 }
 
 void prepareMouse(PreparedJoint& j, const StepContext& ctx, const Body&, const Body&) {
@@ -66,6 +66,7 @@ void solveMouse(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool) {
 
 JointReaction reactionMouse(const Joint& j) { return {j.data.as<MouseJoint>().linearImpulse, 0.0f}; }
 
+template JointId World::createJoint(const MouseJointDef&);
 extern const JointKind mouseKind = jointKind<MouseJoint>({prepareMouse, warmStartMouse, solveMouse, reactionMouse});
 
 }  // namespace perpdot

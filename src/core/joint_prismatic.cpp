@@ -43,14 +43,14 @@ constexpr auto fields(const PrismaticJoint*) {
 
 }  // namespace
 
-JointId World::createJoint(const PrismaticJointDef& def) {
+Joint& makeJoint(World::Impl& w, const PrismaticJointDef& def) {
     requireFinite(isFinite(def.localAxisA), "PrismaticJointDef.localAxisA");
     requireFinite(std::isfinite(def.lower) && std::isfinite(def.upper), "PrismaticJointDef limits");
     requireFinite(std::isfinite(def.motorSpeed) && std::isfinite(def.maxMotorForce), "PrismaticJointDef motor");
     if (lengthSquared(def.localAxisA) == 0.0f) throw Error("PrismaticJointDef.localAxisA must not be zero");
     if (def.lower > def.upper) throw Error("PrismaticJointDef: lower must be <= upper");
     if (def.maxMotorForce < 0.0f) throw Error("PrismaticJointDef.maxMotorForce must be >= 0");
-    Joint& j = addJoint(*impl_, JointType::Prismatic, def.bodyA, def.bodyB, def.localAnchorA, def.localAnchorB,
+    Joint& j = addJoint(w, JointType::Prismatic, def.bodyA, def.bodyB, def.localAnchorA, def.localAnchorB,
                         def.referenceAngle, def.collideConnected, def.userData);
     PrismaticJoint& s = j.data.emplace<PrismaticJoint>();
     s.localAxisA = normalize(def.localAxisA);
@@ -60,7 +60,7 @@ JointId World::createJoint(const PrismaticJointDef& def) {
     s.enableMotor = def.enableMotor;
     s.motorSpeed = def.motorSpeed;
     s.maxMotorForce = def.maxMotorForce;
-    return jointId(*impl_, j);
+    return j;
 }
 
 Vec2 prismaticLocalAxis(const Joint& prismatic) { return prismatic.data.as<PrismaticJoint>().localAxisA; }
@@ -118,6 +118,7 @@ JointReaction reactionPrismatic(const Joint& j) {
     return {(s.motorImpulse + s.lowerImpulse - s.upperImpulse) * s.axisA + s.impulse.x * perp(s.axisA), s.impulse.y};
 }
 
+template JointId World::createJoint(const PrismaticJointDef&);
 extern const JointKind prismaticKind = jointKind<PrismaticJoint, &PrismaticJoint::motorSpeed>({preparePrismatic, warmStartPrismatic, solvePrismatic, reactionPrismatic});
 
 }  // namespace perpdot

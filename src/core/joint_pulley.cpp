@@ -52,20 +52,20 @@ Ropes ropes(const PreparedJoint& j, const BodyState& a, const BodyState& b) {
 
 }  // namespace
 
-JointId World::createJoint(const PulleyJointDef& def) {
+Joint& makeJoint(World::Impl& w, const PulleyJointDef& def) {
     requireFinite(isFinite(def.groundAnchorA) && isFinite(def.groundAnchorB), "PulleyJointDef ground anchors");
     requireFinite(std::isfinite(def.lengthA) && std::isfinite(def.lengthB), "PulleyJointDef lengths");
     requireFinite(std::isfinite(def.ratio), "PulleyJointDef.ratio");
     if (!(def.lengthA > 0.0f) || !(def.lengthB > 0.0f)) throw Error("PulleyJointDef: lengthA and lengthB must be > 0");
     if (!(def.ratio > 0.0f)) throw Error("PulleyJointDef.ratio must be > 0");
-    Joint& j = addJoint(*impl_, JointType::Pulley, def.bodyA, def.bodyB, def.localAnchorA, def.localAnchorB, 0.0f,
+    Joint& j = addJoint(w, JointType::Pulley, def.bodyA, def.bodyB, def.localAnchorA, def.localAnchorB, 0.0f,
                         def.collideConnected, def.userData);
     PulleyJoint& s = j.data.emplace<PulleyJoint>();
     s.groundA = def.groundAnchorA;
     s.groundB = def.groundAnchorB;
     s.ratio = def.ratio;
     s.constant = def.lengthA + def.ratio * def.lengthB;
-    return jointId(*impl_, j);
+    return j;
 }
 
 void preparePulley(PreparedJoint& j, const StepContext& ctx, const Body& a, const Body& b) {
@@ -99,6 +99,7 @@ std::pair<Vec2, Vec2> World::pulleyGroundAnchors(JointId id) const {
     return {s.groundA, s.groundB};
 }
 
+template JointId World::createJoint(const PulleyJointDef&);
 extern const JointKind pulleyKind = jointKind<PulleyJoint>({preparePulley, warmStartPulley, solvePulley, reactionPulley});
 
 }  // namespace perpdot

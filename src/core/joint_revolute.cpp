@@ -10,12 +10,12 @@
 
 namespace perpdot {
 
-JointId World::createJoint(const RevoluteJointDef& def) {
+Joint& makeJoint(World::Impl& w, const RevoluteJointDef& def) {
     requireFinite(std::isfinite(def.lowerAngle) && std::isfinite(def.upperAngle), "RevoluteJointDef limits");
     requireFinite(std::isfinite(def.motorSpeed) && std::isfinite(def.maxMotorTorque), "RevoluteJointDef motor");
     if (def.lowerAngle > def.upperAngle) throw Error("RevoluteJointDef: lowerAngle must be <= upperAngle");
     if (def.maxMotorTorque < 0.0f) throw Error("RevoluteJointDef.maxMotorTorque must be >= 0");
-    Joint& j = addJoint(*impl_, JointType::Revolute, def.bodyA, def.bodyB, def.localAnchorA, def.localAnchorB,
+    Joint& j = addJoint(w, JointType::Revolute, def.bodyA, def.bodyB, def.localAnchorA, def.localAnchorB,
                         def.referenceAngle, def.collideConnected, def.userData);
     RevoluteJoint& r = j.data.emplace<RevoluteJoint>();
     r.enableLimit = def.enableLimit;
@@ -24,7 +24,7 @@ JointId World::createJoint(const RevoluteJointDef& def) {
     r.enableMotor = def.enableMotor;
     r.motorSpeed = def.motorSpeed;
     r.maxMotorTorque = def.maxMotorTorque;
-    return jointId(*impl_, j);
+    return j;
 }
 
 void prepareRevolute(PreparedJoint& j, const StepContext& ctx, const Body&, const Body&) {
@@ -57,6 +57,7 @@ JointReaction reactionRevolute(const Joint& j) {
     return {r.linearImpulse, r.motorImpulse + r.lowerImpulse - r.upperImpulse};
 }
 
+template JointId World::createJoint(const RevoluteJointDef&);
 extern const JointKind revoluteKind = jointKind<RevoluteJoint, &RevoluteJoint::motorSpeed>({prepareRevolute, warmStartRevolute, solveRevolute, reactionRevolute});
 
 }  // namespace perpdot

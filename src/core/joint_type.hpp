@@ -1,9 +1,11 @@
 // How a joint type's file hands its type to the store. joint_<type>.cpp holds the type's data
-// struct, the struct's field list (field_list.hpp) and its stages, and ends with
+// struct, the struct's field list (field_list.hpp), `Joint& makeJoint(World::Impl&, const
+// RopeJointDef&)` and its stages, and ends with
 //
+//     template JointId World::createJoint(const RopeJointDef&);
 //     extern const JointKind ropeKind = jointKind<RopeJoint>({prepareRope, warmStartRope, solveRope, reactionRope});
 //
-// which joint_registry.cpp lists. jointKind instantiates here, beside the list, what the store and
+// the public createJoint for its definition and its kind, which joint_registry.cpp lists. jointKind instantiates here, beside the list, what the store and
 // the snapshot do with the type's data: JointData's checks that the struct fits and is trivially
 // copyable, writing and reading it through its field list, and format 1's raw layout.
 #pragma once
@@ -12,6 +14,13 @@
 #include "core/snapshot_fields.hpp"
 
 namespace perpdot {
+
+// Defined here for the explicit instantiation in each type's file: makeJoint checks the
+// definition, adds the joint (addJoint) and emplaces its data.
+template <JointDef Def>
+JointId World::createJoint(const Def& def) {
+    return jointId(*impl_, makeJoint(*impl_, def));
+}
 
 // T's kind; `motorSpeed` names T's motor speed for World::setMotorSpeed (none: no motor).
 template <class T, float T::*motorSpeed = nullptr>

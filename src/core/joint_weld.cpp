@@ -32,15 +32,15 @@ constexpr auto fields(const WeldJoint*) {
 
 }  // namespace
 
-JointId World::createJoint(const WeldJointDef& def) {
+Joint& makeJoint(World::Impl& w, const WeldJointDef& def) {
     requireFinite(std::isfinite(def.hertz) && std::isfinite(def.dampingRatio), "WeldJointDef spring");
     if (def.hertz < 0.0f || def.dampingRatio < 0.0f) throw Error("WeldJointDef: hertz and dampingRatio must be >= 0");
-    Joint& j = addJoint(*impl_, JointType::Weld, def.bodyA, def.bodyB, def.localAnchorA, def.localAnchorB,
+    Joint& j = addJoint(w, JointType::Weld, def.bodyA, def.bodyB, def.localAnchorA, def.localAnchorB,
                         def.referenceAngle, def.collideConnected, def.userData);
     WeldJoint& s = j.data.emplace<WeldJoint>();
     s.hertz = def.hertz;
     s.dampingRatio = def.dampingRatio;
-    return jointId(*impl_, j);
+    return j;
 }
 
 void prepareWeld(PreparedJoint& j, const StepContext& ctx, const Body&, const Body&) {
@@ -70,6 +70,7 @@ void solveWeld(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool useB
 
 JointReaction reactionWeld(const Joint& j) { return {j.data.as<WeldJoint>().linearImpulse, j.data.as<WeldJoint>().angularImpulse}; }
 
+template JointId World::createJoint(const WeldJointDef&);
 extern const JointKind weldKind = jointKind<WeldJoint>({prepareWeld, warmStartWeld, solveWeld, reactionWeld});
 
 }  // namespace perpdot

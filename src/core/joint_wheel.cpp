@@ -42,14 +42,14 @@ constexpr auto fields(const WheelJoint*) {
 
 }  // namespace
 
-JointId World::createJoint(const WheelJointDef& def) {
+Joint& makeJoint(World::Impl& w, const WheelJointDef& def) {
     requireFinite(isFinite(def.localAxisA), "WheelJointDef.localAxisA");
     requireFinite(std::isfinite(def.hertz) && std::isfinite(def.dampingRatio), "WheelJointDef spring");
     requireFinite(std::isfinite(def.motorSpeed) && std::isfinite(def.maxMotorTorque), "WheelJointDef motor");
     if (lengthSquared(def.localAxisA) == 0.0f) throw Error("WheelJointDef.localAxisA must not be zero");
     if (def.hertz < 0.0f || def.dampingRatio < 0.0f) throw Error("WheelJointDef: hertz and dampingRatio must be >= 0");
     if (def.maxMotorTorque < 0.0f) throw Error("WheelJointDef.maxMotorTorque must be >= 0");
-    Joint& j = addJoint(*impl_, JointType::Wheel, def.bodyA, def.bodyB, def.localAnchorA, def.localAnchorB, 0.0f,
+    Joint& j = addJoint(w, JointType::Wheel, def.bodyA, def.bodyB, def.localAnchorA, def.localAnchorB, 0.0f,
                         def.collideConnected, def.userData);
     WheelJoint& s = j.data.emplace<WheelJoint>();
     s.localAxisA = normalize(def.localAxisA);
@@ -58,7 +58,7 @@ JointId World::createJoint(const WheelJointDef& def) {
     s.enableMotor = def.enableMotor;
     s.motorSpeed = def.motorSpeed;
     s.maxMotorTorque = def.maxMotorTorque;
-    return jointId(*impl_, j);
+    return j;
 }
 
 void prepareWheel(PreparedJoint& j, const StepContext& ctx, const Body& a, const Body&) {
@@ -112,6 +112,7 @@ JointReaction reactionWheel(const Joint& j) {
     return {s.springImpulse * s.axisA + s.perpImpulse * perp(s.axisA), s.motorImpulse};
 }
 
+template JointId World::createJoint(const WheelJointDef&);
 extern const JointKind wheelKind = jointKind<WheelJoint, &WheelJoint::motorSpeed>({prepareWheel, warmStartWheel, solveWheel, reactionWheel});
 
 }  // namespace perpdot
