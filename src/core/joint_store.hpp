@@ -55,12 +55,12 @@ public:
 
     template <class T>
     T& emplace() {
-        static_assert(fits<T>, "a joint type's data must fit JointData::capacity and be trivially copyable");
+        check<T>();
         return *std::construct_at(reinterpret_cast<T*>(bytes_));
     }
     template <class T>
     T& as() {
-        static_assert(fits<T>, "a joint type's data must fit JointData::capacity and be trivially copyable");
+        check<T>();
         return *reinterpret_cast<T*>(bytes_);
     }
     template <class T>
@@ -71,7 +71,11 @@ public:
 private:
     static constexpr size_t alignment = alignof(float);
     template <class T>
-    static constexpr bool fits = sizeof(T) <= capacity && alignof(T) <= alignment && std::is_trivially_copyable_v<T>;
+    static constexpr void check() {
+        static_assert(sizeof(T) <= capacity, "a joint type's data must fit: raise JointData::capacity");
+        static_assert(alignof(T) <= alignment, "a joint type's data must not need more than float alignment");
+        static_assert(std::is_trivially_copyable_v<T>, "a joint type's data must be trivially copyable");
+    }
     alignas(alignment) std::byte bytes_[capacity]{};
 };
 
