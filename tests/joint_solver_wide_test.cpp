@@ -26,8 +26,8 @@ PreparedJoint randomJoint(Random& r, int a, int b) {
     j.anchorA = {r(-0.5f, 0.5f), r(-0.5f, 0.5f)};
     j.anchorB = {r(-0.5f, 0.5f), r(-0.5f, 0.5f)};
     j.deltaCenter = {r(-1.0f, 1.0f), r(-1.0f, 1.0f)};
-    j.data.revolute.linearImpulse = {r(-2.0f, 2.0f), r(-2.0f, 2.0f)};
-    j.data.revolute.motorImpulse = r(-0.3f, 0.3f);  // left from a motor: the warm start re-applies it
+    j.data.as<RevoluteJoint>().linearImpulse = {r(-2.0f, 2.0f), r(-2.0f, 2.0f)};
+    j.data.as<RevoluteJoint>().motorImpulse = r(-0.3f, 0.3f);  // left from a motor: the warm start re-applies it
     return j;
 }
 
@@ -78,8 +78,8 @@ TEST(JointSolverWide, FourLanesEqualFourScalarSolves) {
         std::vector<Joint> stored(4);
         unpackRevoluteImpulses(block, stored);
         for (int lane = 0; lane < 4; ++lane) {
-            const Vec2 impulse = stored[lane].data.revolute.linearImpulse;
-            const Vec2 expected = lane < count ? scalarJoints[lane].data.revolute.linearImpulse : Vec2{};
+            const Vec2 impulse = stored[lane].data.as<RevoluteJoint>().linearImpulse;
+            const Vec2 expected = lane < count ? scalarJoints[lane].data.as<RevoluteJoint>().linearImpulse : Vec2{};
             EXPECT_TRUE(sameBits(impulse.x, expected.x)) << "round " << round << " lane " << lane;
             EXPECT_TRUE(sameBits(impulse.y, expected.y)) << "round " << round << " lane " << lane;
         }

@@ -23,8 +23,7 @@ PreparedJoint hingeBetween(int a, int b, bool motor = false) {
     j.indexA = a;
     j.indexB = b;
     j.mass = {a ? 1.0f : 0.0f, a ? 1.0f : 0.0f, b ? 1.0f : 0.0f, b ? 1.0f : 0.0f};
-    j.data.revolute = {};
-    j.data.revolute.enableMotor = motor;
+    j.data.emplace<RevoluteJoint>().enableMotor = motor;
     return j;
 }
 

@@ -5,6 +5,7 @@
 /// the given frequency and damping ratio.
 #pragma once
 
+#include <concepts>
 #include <cstdint>
 
 #include "perpdot/ids.hpp"
@@ -13,10 +14,15 @@
 namespace perpdot {
 
 /// Which kind of joint a JointId names.
-enum class JointType : uint8_t { Revolute, Prismatic, Distance, Weld, Wheel, Motor, Mouse, Gear, Pulley };
+enum class JointType : uint8_t { Revolute, Prismatic, Distance, Weld, Wheel, Motor, Mouse, Gear, Pulley, Filter };
+
+/// A joint definition of this header (World::createJoint): it names its joint type.
+template <class Def>
+concept JointDef = std::same_as<decltype(Def::type), const JointType>;
 
 /// A hinge: the anchors coincide, B turns freely about them, optionally limited and motorised.
 struct RevoluteJointDef {
+    static constexpr JointType type = JointType::Revolute;  ///< the joint this defines
     BodyId bodyA;  ///< the first body
     BodyId bodyB;  ///< the second body
     Vec2 localAnchorA;  ///< anchor point, A's frame
@@ -34,6 +40,7 @@ struct RevoluteJointDef {
 
 /// A slider: B moves along an axis fixed in A and does not turn relative to A.
 struct PrismaticJointDef {
+    static constexpr JointType type = JointType::Prismatic;  ///< the joint this defines
     BodyId bodyA;  ///< the first body
     BodyId bodyB;  ///< the second body
     Vec2 localAnchorA;  ///< anchor point, A's frame
@@ -52,6 +59,7 @@ struct PrismaticJointDef {
 
 /// A rod or spring between two anchors, optionally with a minimum and maximum length.
 struct DistanceJointDef {
+    static constexpr JointType type = JointType::Distance;  ///< the joint this defines
     BodyId bodyA;  ///< the first body
     BodyId bodyB;  ///< the second body
     Vec2 localAnchorA;  ///< anchor point, A's frame
@@ -67,6 +75,7 @@ struct DistanceJointDef {
 
 /// Glues B to A: no relative motion (hertz = 0), or a linear and angular spring.
 struct WeldJointDef {
+    static constexpr JointType type = JointType::Weld;  ///< the joint this defines
     BodyId bodyA;  ///< the first body
     BodyId bodyB;  ///< the second body
     Vec2 localAnchorA;  ///< anchor point, A's frame
@@ -80,6 +89,7 @@ struct WeldJointDef {
 
 /// A wheel on a suspension: B slides along a sprung axis of A and turns freely, optionally motorised.
 struct WheelJointDef {
+    static constexpr JointType type = JointType::Wheel;  ///< the joint this defines
     BodyId bodyA;  ///< the chassis
     BodyId bodyB;  ///< the wheel
     Vec2 localAnchorA;  ///< anchor point, A's frame
@@ -96,6 +106,7 @@ struct WheelJointDef {
 
 /// Drives B towards A's frame offset by (linearOffset, angularOffset) with bounded force and torque.
 struct MotorJointDef {
+    static constexpr JointType type = JointType::Motor;  ///< the joint this defines
     BodyId bodyA;  ///< the first body
     BodyId bodyB;  ///< the second body
     Vec2 linearOffset;            ///< in A's frame
@@ -109,6 +120,7 @@ struct MotorJointDef {
 
 /// Pulls a point of bodyB towards a world target with a soft spring (mouse dragging).
 struct MouseJointDef {
+    static constexpr JointType type = JointType::Mouse;  ///< the joint this defines
     BodyId bodyA;  ///< usually a static body; only bodyB moves
     BodyId bodyB;  ///< the body dragged
     Vec2 target;   ///< world
@@ -126,6 +138,7 @@ struct MouseJointDef {
 /// and the two moving bodies must differ. The joints' geometry is captured at creation: the gear
 /// keeps working if they are destroyed later.
 struct GearJointDef {
+    static constexpr JointType type = JointType::Gear;  ///< the joint this defines
     /// A revolute or prismatic joint; the gear's body A is its body B.
     JointId jointA;
     /// A revolute or prismatic joint; the gear's body B is its body B.
@@ -142,6 +155,7 @@ struct GearJointDef {
 /// stays constant, where length is the distance from a ground anchor to the body's anchor
 /// (Box2D's b2PulleyJoint, an equality: the rope also pushes).
 struct PulleyJointDef {
+    static constexpr JointType type = JointType::Pulley;  ///< the joint this defines
     /// The body on the first side of the rope.
     BodyId bodyA;
     /// The body on the second side of the rope.
@@ -164,6 +178,16 @@ struct PulleyJointDef {
     bool collideConnected = false;
     /// Not used by the engine.
     void* userData = nullptr;
+};
+
+/// Keeps two bodies from colliding and does nothing else: no rows (Box2D v3's b2FilterJointDef,
+/// formerly its null joint). Being a joint, it keeps the two bodies in one island, so they sleep
+/// and wake together; destroying it lets them collide again.
+struct FilterJointDef {
+    static constexpr JointType type = JointType::Filter;  ///< the joint this defines
+    BodyId bodyA;              ///< the first body
+    BodyId bodyB;              ///< the second body
+    void* userData = nullptr;  ///< the application's pointer
 };
 
 }  // namespace perpdot

@@ -174,19 +174,10 @@ public:
     void enablePreSolveEvents(ShapeId shape, bool enable);  ///< ShapeDef::enablePreSolveEvents
 
     // --- joints ---
-    /// A new joint between def.bodyA and def.bodyB (Error if `def` is invalid).
-    JointId createJoint(const RevoluteJointDef& def);
-    JointId createJoint(const PrismaticJointDef& def);  ///< A new prismatic joint.
-    JointId createJoint(const DistanceJointDef& def);  ///< A new distance joint.
-    JointId createJoint(const WeldJointDef& def);  ///< A new weld joint.
-    JointId createJoint(const WheelJointDef& def);  ///< A new wheel joint.
-    JointId createJoint(const MotorJointDef& def);  ///< A new motor joint.
-    JointId createJoint(const MouseJointDef& def);  ///< A new mouse joint.
-    /// A gear between the moving bodies of two revolute/prismatic joints (joints.hpp); throws
-    /// perpdot::Error for a stale joint, another joint type, a non-static base, ratio 0 or not finite.
-    JointId createJoint(const GearJointDef& def);
-    /// A pulley (joints.hpp); throws perpdot::Error for lengths ≤ 0, ratio ≤ 0 or non-finite values.
-    JointId createJoint(const PulleyJointDef& def);
+    /// A new joint of def's type (joints.hpp) between def.bodyA and def.bodyB (a gear's: the bodies B
+    /// of its two joints); throws perpdot::Error if `def` breaks the rules its struct documents.
+    template <JointDef Def>
+    JointId createJoint(const Def& def);
     void destroyJoint(JointId joint);  ///< Wakes its bodies.
     bool isValid(JointId joint) const;  ///< Whether `joint` names a live joint.
     std::vector<JointId> joints() const;  ///< Live joints, in creation order.

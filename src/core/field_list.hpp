@@ -5,7 +5,7 @@
 //         return std::tuple{field("a", &T::a), field("b", &T::b).anyBits(), field("c", &T::c).since(3)};
 //     }
 //
-// next to the others (snapshot_fields.hpp). Members are written in list order as little-endian
+// next to the others (snapshot_fields.hpp; a joint type's in its joint_<type>.cpp). Members are written in list order as little-endian
 // values (bool: one byte 0/1, float: its bits, Vec2: two floats, enums and ints: their width,
 // structs with their own field list: recursively). Reading checks what it can alone: booleans are
 // 0 or 1, floats are finite unless the field is marked anyBits(); cross-field checks (ranges,
@@ -42,6 +42,10 @@ template <class T, class M>
 constexpr Field<T, M> field(const char* name, M T::*member) {
     return {name, member};
 }
+
+// A struct whose layout changed must have its field list reviewed (then update the size there).
+template <class T, size_t Size>
+constexpr bool reviewedLayout = sizeof(void*) != 8 || sizeof(T) == Size;
 
 template <class T>
 concept Persisted = requires(const T* t) { fields(t); };

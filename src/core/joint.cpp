@@ -322,12 +322,6 @@ Vec2 World::jointAnchorB(JointId id) const {
     return transformPoint(impl_->bodies[j.bodyB].xf, j.localAnchorB);
 }
 
-std::pair<Vec2, Vec2> World::pulleyGroundAnchors(JointId id) const {
-    const Joint& j = checkedJoint(*impl_, id);
-    if (j.type != JointType::Pulley) throw Error("pulleyGroundAnchors: not a pulley joint");
-    return {j.data.pulley.groundA, j.data.pulley.groundB};
-}
-
 // The accumulated impulse is what every substep applies, so force = λ / hs (Box2D v3).
 Vec2 World::jointReactionForce(JointId id) const {
     return store(*impl_).invHs * reactionOf(checkedJoint(*impl_, id)).linear;
@@ -388,12 +382,9 @@ void World::setMotorSpeed(JointId id, float speed) {
     impl_->checkUnlocked("setMotorSpeed");
     Joint& j = checkedJoint(*impl_, id);
     requireFinite(std::isfinite(speed), "setMotorSpeed: speed");
-    switch (j.type) {
-        case JointType::Revolute: j.data.revolute.motorSpeed = speed; break;
-        case JointType::Prismatic: j.data.prismatic.motorSpeed = speed; break;
-        case JointType::Wheel: j.data.wheel.motorSpeed = speed; break;
-        default: throw Error("setMotorSpeed: only revolute, prismatic and wheel joints have motors");
-    }
+    float* (*motorSpeed)(JointData&) = kindOf(j.type)->motorSpeed;
+    if (!motorSpeed) throw Error("setMotorSpeed: the joint's type has no motor");
+    *motorSpeed(j.data) = speed;
     impl_->wake(j.bodyA);
     impl_->wake(j.bodyB);
 }

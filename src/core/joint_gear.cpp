@@ -4,15 +4,50 @@
 // axis·(anchor − base), Ċ-term axis·v + perpDot(r, axis) ω. One coupled row (joint_coupled_row.hpp),
 // B's terms scaled by the ratio.
 #include <cmath>
-#include <memory>
 #include <string>
 
 #include "core/joint_coupled_row.hpp"
+#include "core/joint_prismatic.hpp"
+#include "core/joint_type.hpp"
 #include "core/world_impl.hpp"
 
 namespace perpdot {
 
 namespace {
+
+// One side of a gear: the coordinate of a revolute joint, θ − offset, or of a prismatic joint,
+// axis·anchor − offset (= axis·(anchor − base)), whose body A is static, so axis and offset are fixed.
+struct GearSide {
+    JointType kind = JointType::Revolute;
+    Vec2 axis;             // prismatic: world
+    float offset = 0;      // revolute: θ of the static body + the joint's reference angle; prismatic: axis·base
+    float coordinate = 0;  // at step start
+};
+
+constexpr auto fields(const GearSide*) {
+    using S = GearSide;
+    return std::tuple{field("kind", &S::kind), field("axis", &S::axis).anyBits(), field("offset", &S::offset).anyBits(),
+                      field("coordinate", &S::coordinate).anyBits()};
+}
+
+// coordinateA + ratio·coordinateB = constant.
+struct GearJoint {
+    GearSide sideA, sideB;
+    float ratio = 1, constant = 0;
+    float mass = 0;
+    float impulse = 0;
+};
+
+static_assert(reviewedLayout<GearJoint, 56>);
+constexpr auto fields(const GearJoint*) {
+    using J = GearJoint;
+    return std::tuple{field("sideA", &J::sideA),
+                      field("sideB", &J::sideB),
+                      field("ratio", &J::ratio).anyBits(),
+                      field("constant", &J::constant).anyBits(),
+                      field("mass", &J::mass).anyBits(),
+                      field("impulse", &J::impulse).anyBits()};
+}
 
 // The side's coordinate with the body at rest at `body`, its anchor at arm r from the centre of mass.
 float coordinateAt(const GearSide& side, const Body& body, Vec2 r) {
@@ -33,7 +68,7 @@ GearSide gearSide(const World::Impl& w, const Joint& joint, const char* which) {
     if (joint.type == JointType::Revolute) {
         side.offset = base.angle + joint.referenceAngle;
     } else {
-        side.axis = rotate(base.xf.q, joint.data.prismatic.localAxisA);
+        side.axis = rotate(base.xf.q, prismaticLocalAxis(joint));
         side.offset = dot(transformPoint(base.xf, joint.localAnchorA), side.axis);
     }
     side.coordinate = coordinateAt(side, moving, rotate(moving.xf.q, joint.localAnchorB - moving.localCenter));
@@ -60,28 +95,28 @@ CoupledRow gearRow(const GearJoint& g, const SideNow& a, const SideNow& b) {
 
 }  // namespace
 
-JointId World::createJoint(const GearJointDef& def) {
+Joint& makeJoint(World::Impl& w, const GearJointDef& def) {
     requireFinite(std::isfinite(def.ratio), "GearJointDef.ratio");
     if (def.ratio == 0.0f) throw Error("GearJointDef.ratio must not be 0");
-    const Joint& jointA = checkedJoint(*impl_, def.jointA);
-    const Joint& jointB = checkedJoint(*impl_, def.jointB);
-    const GearSide sideA = gearSide(*impl_, jointA, "jointA");
-    const GearSide sideB = gearSide(*impl_, jointB, "jointB");
+    const Joint& jointA = checkedJoint(w, def.jointA);
+    const Joint& jointB = checkedJoint(w, def.jointB);
+    const GearSide sideA = gearSide(w, jointA, "jointA");
+    const GearSide sideB = gearSide(w, jointB, "jointB");
     const int bodyA = jointA.bodyB, bodyB = jointB.bodyB;
     const Vec2 anchorA = jointA.localAnchorB, anchorB = jointB.localAnchorB;
     if (bodyA == bodyB) throw Error("GearJointDef: the two joints move the same body");
-    Joint& j = addJoint(*impl_, JointType::Gear, impl_->bodyId(bodyA), impl_->bodyId(bodyB), anchorA, anchorB, 0.0f,
+    Joint& j = addJoint(w, JointType::Gear, w.bodyId(bodyA), w.bodyId(bodyB), anchorA, anchorB, 0.0f,
                         def.collideConnected, def.userData);
-    GearJoint& g = *std::construct_at(&j.data.gear);
+    GearJoint& g = j.data.emplace<GearJoint>();
     g.sideA = sideA;
     g.sideB = sideB;
     g.ratio = def.ratio;
     g.constant = sideA.coordinate + def.ratio * sideB.coordinate;
-    return jointId(*impl_, j);
+    return j;
 }
 
 void prepareGear(PreparedJoint& j, const StepContext& ctx, const Body& a, const Body& b) {
-    GearJoint& g = j.data.gear;
+    GearJoint& g = j.data.as<GearJoint>();
     g.sideA.coordinate = coordinateAt(g.sideA, a, j.anchorA);
     g.sideB.coordinate = coordinateAt(g.sideB, b, j.anchorB);
     const BodyState still{};
@@ -90,13 +125,13 @@ void prepareGear(PreparedJoint& j, const StepContext& ctx, const Body& a, const 
 }
 
 void warmStartGear(PreparedJoint& j, JointPair& p) {
-    const GearJoint& g = j.data.gear;
+    const GearJoint& g = j.data.as<GearJoint>();
     applyRow(p, gearRow(g, sideNow(g.sideA, p.a, p.rotationA, j.anchorA), sideNow(g.sideB, p.b, p.rotationA + p.rotation, j.anchorB)),
              g.impulse);
 }
 
 void solveGear(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool useBias) {
-    GearJoint& g = j.data.gear;
+    GearJoint& g = j.data.as<GearJoint>();
     const SideNow a = sideNow(g.sideA, p.a, p.rotationA, j.anchorA), b = sideNow(g.sideB, p.b, p.rotationA + p.rotation, j.anchorB);
     const float C = a.coordinate + g.ratio * b.coordinate - g.constant;
     solveRow(p, gearRow(g, a, b), g.mass, C, rigidSoftness(ctx, useBias), g.impulse);
@@ -104,12 +139,13 @@ void solveGear(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool useB
 
 // On B: a torque for a revolute side, a force along the axis for a prismatic one.
 JointReaction reactionGear(const Joint& j) {
-    const GearJoint& g = j.data.gear;
+    const GearJoint& g = j.data.as<GearJoint>();
     const float impulse = g.ratio * g.impulse;
     if (g.sideB.kind == JointType::Revolute) return {{}, impulse};
     return {impulse * g.sideB.axis, 0.0f};
 }
 
-extern const JointStages gearStages{prepareGear, warmStartGear, solveGear, reactionGear};
+template JointId World::createJoint(const GearJointDef&);
+extern const JointKind gearKind = jointKind<GearJoint>({prepareGear, warmStartGear, solveGear, reactionGear});
 
 }  // namespace perpdot

@@ -3,31 +3,53 @@
 // Box2D; per substep it overshot the target by 0.8 m in a cross-check), impulses capped by maxForce·hs
 // and maxTorque·hs. Rows: the point rows and the angular row of the weld, used as motors.
 #include <cmath>
-#include <memory>
 
 #include "core/joint_rows.hpp"
+#include "core/joint_type.hpp"
 #include "core/world_impl.hpp"
 
 namespace perpdot {
 
-JointId World::createJoint(const MotorJointDef& def) {
+namespace {
+
+struct MotorJoint {
+    float maxForce = 0, maxTorque = 0, correctionFactor = 0;
+    float axialMass = 0;
+    Vec2 linearImpulse;
+    float angularImpulse = 0;
+};
+
+static_assert(reviewedLayout<MotorJoint, 28>);
+constexpr auto fields(const MotorJoint*) {
+    using J = MotorJoint;
+    return std::tuple{field("maxForce", &J::maxForce).anyBits(),
+                      field("maxTorque", &J::maxTorque).anyBits(),
+                      field("correctionFactor", &J::correctionFactor).anyBits(),
+                      field("axialMass", &J::axialMass).anyBits(),
+                      field("linearImpulse", &J::linearImpulse).anyBits(),
+                      field("angularImpulse", &J::angularImpulse).anyBits()};
+}
+
+}  // namespace
+
+Joint& makeJoint(World::Impl& w, const MotorJointDef& def) {
     requireFinite(isFinite(def.linearOffset) && std::isfinite(def.angularOffset), "MotorJointDef offsets");
     requireFinite(std::isfinite(def.maxForce) && std::isfinite(def.maxTorque) && std::isfinite(def.correctionFactor),
                   "MotorJointDef limits");
     if (def.maxForce < 0.0f || def.maxTorque < 0.0f) throw Error("MotorJointDef: maxForce and maxTorque must be >= 0");
     if (def.correctionFactor < 0.0f || def.correctionFactor > 1.0f) throw Error("MotorJointDef.correctionFactor must be in [0, 1]");
     // Anchor A is the target point in A's frame, anchor B is B's origin.
-    Joint& j = addJoint(*impl_, JointType::Motor, def.bodyA, def.bodyB, def.linearOffset, {}, def.angularOffset,
+    Joint& j = addJoint(w, JointType::Motor, def.bodyA, def.bodyB, def.linearOffset, {}, def.angularOffset,
                         def.collideConnected, def.userData);
-    MotorJoint& s = *std::construct_at(&j.data.motor);
+    MotorJoint& s = j.data.emplace<MotorJoint>();
     s.maxForce = def.maxForce;
     s.maxTorque = def.maxTorque;
     s.correctionFactor = def.correctionFactor;
-    return jointId(*impl_, j);
+    return j;
 }
 
 void prepareMotor(PreparedJoint& j, const StepContext& ctx, const Body&, const Body&) {
-    MotorJoint& s = j.data.motor;
+    MotorJoint& s = j.data.as<MotorJoint>();
     s.axialMass = effectiveMass(j.mass, angularRow);
     if (!ctx.enableWarmStarting) {
         s.linearImpulse = {};
@@ -36,22 +58,23 @@ void prepareMotor(PreparedJoint& j, const StepContext& ctx, const Body&, const B
 }
 
 void warmStartMotor(PreparedJoint& j, JointPair& p) {
-    const MotorJoint& s = j.data.motor;
+    const MotorJoint& s = j.data.as<MotorJoint>();
     const JointFrame f = currentFrame(j, p);
     applyPoint(p, f.rA, f.rB, s.linearImpulse);
     applyRow(p, angularRow, s.angularImpulse);
 }
 
 void solveMotor(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool) {
-    MotorJoint& s = j.data.motor;
+    MotorJoint& s = j.data.as<MotorJoint>();
     const float rate = s.correctionFactor * ctx.invH;
     solveMotorRow(p, angularRow, s.axialMass, -rate * currentAngle(j, p), s.maxTorque * ctx.hs, s.angularImpulse);
     const JointFrame f = currentFrame(j, p);
     solvePointRows(p, f.rA, f.rB, f.d, Softness{.biasRate = rate}, s.linearImpulse, s.maxForce * ctx.hs);
 }
 
-JointReaction reactionMotor(const Joint& j) { return {j.data.motor.linearImpulse, j.data.motor.angularImpulse}; }
+JointReaction reactionMotor(const Joint& j) { return {j.data.as<MotorJoint>().linearImpulse, j.data.as<MotorJoint>().angularImpulse}; }
 
-extern const JointStages motorStages{prepareMotor, warmStartMotor, solveMotor, reactionMotor};
+template JointId World::createJoint(const MotorJointDef&);
+extern const JointKind motorKind = jointKind<MotorJoint>({prepareMotor, warmStartMotor, solveMotor, reactionMotor});
 
 }  // namespace perpdot

@@ -2,31 +2,52 @@
 // the point rows of joint_rows.hpp with only B movable and the impulse capped at maxForce·hs.
 // The target is anchor A, so it stays put in A's frame (A is normally static).
 #include <cmath>
-#include <memory>
 
 #include "core/joint_rows.hpp"
+#include "core/joint_type.hpp"
 #include "core/world_impl.hpp"
 
 namespace perpdot {
 
-JointId World::createJoint(const MouseJointDef& def) {
+namespace {
+
+// The target is anchor A (fixed in the world during a step: A is meant to be static).
+struct MouseJoint {
+    float hertz = 0, dampingRatio = 0, maxForce = 0;
+    Softness softness;
+    Vec2 linearImpulse;
+};
+
+static_assert(reviewedLayout<MouseJoint, 32>);
+constexpr auto fields(const MouseJoint*) {
+    using J = MouseJoint;
+    return std::tuple{field("hertz", &J::hertz).anyBits(),
+                      field("dampingRatio", &J::dampingRatio).anyBits(),
+                      field("maxForce", &J::maxForce).anyBits(),
+                      field("softness", &J::softness).anyBits(),
+                      field("linearImpulse", &J::linearImpulse).anyBits()};
+}
+
+}  // namespace
+
+Joint& makeJoint(World::Impl& w, const MouseJointDef& def) {
     requireFinite(isFinite(def.target), "MouseJointDef.target");
     requireFinite(std::isfinite(def.hertz) && std::isfinite(def.dampingRatio) && std::isfinite(def.maxForce),
                   "MouseJointDef spring");
     if (!(def.hertz > 0.0f) || def.dampingRatio < 0.0f || def.maxForce < 0.0f)
         throw Error("MouseJointDef: need hertz > 0, dampingRatio >= 0 and maxForce >= 0");
-    const Transform xfA = transform(def.bodyA), xfB = transform(def.bodyB);
-    Joint& j = addJoint(*impl_, JointType::Mouse, def.bodyA, def.bodyB, invTransformPoint(xfA, def.target),
+    const Transform xfA = w.body(def.bodyA).xf, xfB = w.body(def.bodyB).xf;
+    Joint& j = addJoint(w, JointType::Mouse, def.bodyA, def.bodyB, invTransformPoint(xfA, def.target),
                         invTransformPoint(xfB, def.target), 0.0f, def.collideConnected, def.userData);
-    MouseJoint& s = *std::construct_at(&j.data.mouse);
+    MouseJoint& s = j.data.emplace<MouseJoint>();
     s.hertz = def.hertz;
     s.dampingRatio = def.dampingRatio;
     s.maxForce = def.maxForce;
-    return jointId(*impl_, j);
+    return j;
 }
 
 void prepareMouse(PreparedJoint& j, const StepContext& ctx, const Body&, const Body&) {
-    MouseJoint& s = j.data.mouse;
+    MouseJoint& s = j.data.as<MouseJoint>();
     j.mass.mA = j.mass.iA = 0.0f;  // the mouse pulls B only
     s.softness = makeSoftness(s.hertz, s.dampingRatio, ctx.hs);
     if (!ctx.enableWarmStarting) s.linearImpulse = {};
@@ -34,17 +55,18 @@ void prepareMouse(PreparedJoint& j, const StepContext& ctx, const Body&, const B
 
 void warmStartMouse(PreparedJoint& j, JointPair& p) {
     const JointFrame f = currentFrame(j, p);
-    applyPoint(p, f.rA, f.rB, j.data.mouse.linearImpulse);
+    applyPoint(p, f.rA, f.rB, j.data.as<MouseJoint>().linearImpulse);
 }
 
 void solveMouse(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool) {
-    MouseJoint& s = j.data.mouse;
+    MouseJoint& s = j.data.as<MouseJoint>();
     const JointFrame f = currentFrame(j, p);
     solvePointRows(p, f.rA, f.rB, f.d, s.softness, s.linearImpulse, s.maxForce * ctx.hs);
 }
 
-JointReaction reactionMouse(const Joint& j) { return {j.data.mouse.linearImpulse, 0.0f}; }
+JointReaction reactionMouse(const Joint& j) { return {j.data.as<MouseJoint>().linearImpulse, 0.0f}; }
 
-extern const JointStages mouseStages{prepareMouse, warmStartMouse, solveMouse, reactionMouse};
+template JointId World::createJoint(const MouseJointDef&);
+extern const JointKind mouseKind = jointKind<MouseJoint>({prepareMouse, warmStartMouse, solveMouse, reactionMouse});
 
 }  // namespace perpdot

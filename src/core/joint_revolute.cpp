@@ -2,32 +2,33 @@
 // with the 4-wide blocks through joint_solver_wide.hpp), plus on the angle θB − θA − θref an
 // optional motor row and two one-sided limit rows, each with effective mass 1/(1/IA + 1/IB).
 #include <cmath>
-#include <memory>
 
+#include "core/joint_revolute.hpp"
 #include "core/joint_solver_wide.hpp"
+#include "core/joint_type.hpp"
 #include "core/world_impl.hpp"
 
 namespace perpdot {
 
-JointId World::createJoint(const RevoluteJointDef& def) {
+Joint& makeJoint(World::Impl& w, const RevoluteJointDef& def) {
     requireFinite(std::isfinite(def.lowerAngle) && std::isfinite(def.upperAngle), "RevoluteJointDef limits");
     requireFinite(std::isfinite(def.motorSpeed) && std::isfinite(def.maxMotorTorque), "RevoluteJointDef motor");
     if (def.lowerAngle > def.upperAngle) throw Error("RevoluteJointDef: lowerAngle must be <= upperAngle");
     if (def.maxMotorTorque < 0.0f) throw Error("RevoluteJointDef.maxMotorTorque must be >= 0");
-    Joint& j = addJoint(*impl_, JointType::Revolute, def.bodyA, def.bodyB, def.localAnchorA, def.localAnchorB,
+    Joint& j = addJoint(w, JointType::Revolute, def.bodyA, def.bodyB, def.localAnchorA, def.localAnchorB,
                         def.referenceAngle, def.collideConnected, def.userData);
-    RevoluteJoint& r = *std::construct_at(&j.data.revolute);
+    RevoluteJoint& r = j.data.emplace<RevoluteJoint>();
     r.enableLimit = def.enableLimit;
     r.lowerAngle = def.lowerAngle;
     r.upperAngle = def.upperAngle;
     r.enableMotor = def.enableMotor;
     r.motorSpeed = def.motorSpeed;
     r.maxMotorTorque = def.maxMotorTorque;
-    return jointId(*impl_, j);
+    return j;
 }
 
 void prepareRevolute(PreparedJoint& j, const StepContext& ctx, const Body&, const Body&) {
-    RevoluteJoint& r = j.data.revolute;
+    RevoluteJoint& r = j.data.as<RevoluteJoint>();
     r.axialMass = effectiveMass(j.mass, angularRow);
     if (!ctx.enableWarmStarting) {
         r.linearImpulse = {};
@@ -38,7 +39,7 @@ void prepareRevolute(PreparedJoint& j, const StepContext& ctx, const Body&, cons
 void warmStartRevolute(PreparedJoint& j, JointPair& p) { warmStartRevoluteRows(revoluteRows(j), p); }
 
 void solveRevolute(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool useBias) {
-    RevoluteJoint& r = j.data.revolute;
+    RevoluteJoint& r = j.data.as<RevoluteJoint>();
     if (r.enableMotor) solveMotorRow(p, angularRow, r.axialMass, r.motorSpeed, r.maxMotorTorque * ctx.hs, r.motorImpulse);
     if (r.enableLimit) {
         const float angle = currentAngle(j, p);
@@ -52,10 +53,11 @@ void solveRevolute(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool 
 }
 
 JointReaction reactionRevolute(const Joint& j) {
-    const RevoluteJoint& r = j.data.revolute;
+    const RevoluteJoint& r = j.data.as<RevoluteJoint>();
     return {r.linearImpulse, r.motorImpulse + r.lowerImpulse - r.upperImpulse};
 }
 
-extern const JointStages revoluteStages{prepareRevolute, warmStartRevolute, solveRevolute, reactionRevolute};
+template JointId World::createJoint(const RevoluteJointDef&);
+extern const JointKind revoluteKind = jointKind<RevoluteJoint, &RevoluteJoint::motorSpeed>({prepareRevolute, warmStartRevolute, solveRevolute, reactionRevolute});
 
 }  // namespace perpdot

@@ -50,7 +50,7 @@ void unpackRevoluteImpulses(const RevoluteBlock& block, std::span<Joint> joints)
     block.rows.linearImpulse.x.store(x);
     block.rows.linearImpulse.y.store(y);
     for (int lane = 0; lane < 4; ++lane)
-        if (block.joint[lane] >= 0) joints[block.joint[lane]].data.revolute.linearImpulse = {x[lane], y[lane]};
+        if (block.joint[lane] >= 0) joints[block.joint[lane]].data.as<RevoluteJoint>().linearImpulse = {x[lane], y[lane]};
 }
 
 }  // namespace perpdot

@@ -9,6 +9,7 @@
 #include <span>
 
 #include "core/body_lanes.hpp"
+#include "core/joint_revolute.hpp"
 #include "core/joint_rows.hpp"
 
 namespace perpdot {
@@ -24,7 +25,7 @@ struct RevoluteRows {
 
 // The point rows of one prepared revolute joint.
 inline RevoluteRows<float> revoluteRows(const PreparedJoint& j) {
-    const RevoluteJoint& r = j.data.revolute;
+    const RevoluteJoint& r = j.data.as<RevoluteJoint>();
     return {j.anchorA, j.anchorB, j.deltaCenter, r.linearImpulse, r.motorImpulse + r.lowerImpulse - r.upperImpulse};
 }
 
@@ -45,7 +46,9 @@ void solveRevolutePoint(RevoluteRows<F>& r, JointPairT<F>& p, const Softness& so
 
 // A revolute joint without motor or limit: its rows are the point rows alone.
 inline bool solvesInLanes(const PreparedJoint& j) {
-    return j.type == JointType::Revolute && !j.data.revolute.enableMotor && !j.data.revolute.enableLimit;
+    if (j.type != JointType::Revolute) return false;
+    const RevoluteJoint& r = j.data.as<RevoluteJoint>();
+    return !r.enableMotor && !r.enableLimit;
 }
 
 // Four revolute joints of one graph colour (no two share a dynamic body) as the lanes of one row set.

@@ -1,11 +1,14 @@
 // The joint store: a Pool<Joint> (pool.hpp: one contiguous vector, a free list, generations), and the
-// per-type entry points that joint.cpp dispatches to by switch (no virtual calls in the solve).
+// joint types as the store sees them (JointKind, one per type in joint_registry.cpp): their solver
+// stages, called through one table of function pointers (no virtual calls in the solve), and the
+// type-erased handling of their data.
 //
 // A Joint is plain data (trivially copyable): the user's definition, the per-step solver
 // values written by prepare, and the accumulated impulses kept for warm starting.
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <limits>
 #include <memory>
 #include <type_traits>
@@ -16,7 +19,6 @@
 #include "core/joint.hpp"
 #include "core/joint_tree.hpp"
 #include "core/pool.hpp"
-#include "core/softness.hpp"
 #include "core/step_context.hpp"
 
 namespace perpdot {
@@ -40,108 +42,41 @@ struct JointPairT {
 };
 using JointPair = JointPairT<float>;
 
-struct RevoluteJoint {
-    bool enableLimit = false, enableMotor = false;
-    float lowerAngle = 0, upperAngle = 0;
-    float motorSpeed = 0, maxMotorTorque = 0;
-    float axialMass = 0;  // 1 / (1/IA + 1/IB)
-    Vec2 linearImpulse;   // point rows
-    float motorImpulse = 0, lowerImpulse = 0, upperImpulse = 0;
-};
+// A joint type's data, a struct only its file names (joint_type.hpp; joint_revolute.hpp shares the
+// revolute joint's with the 4-wide rows and the trees): `type` in the Joint says which one lives
+// here. The bytes start at zero; emplace<T>() starts a value-initialised T (createJoint, the
+// snapshot reader), as<T>() is the live T. Both check that T fits and is trivially copyable, since
+// the store copies joints bytewise (which carries the T along: C++20's implicit object creation).
+// Strictly, as<T>() would std::launder its pointer; GCC then stops merging the loads of
+// packRevoluteBlock (+0.5 % of joint_grid's instructions), and no compiler we build with needs it.
+class JointData {
+public:
+    static constexpr size_t capacity = 68;  // bytes: the largest type's (the wheel joint's)
 
-struct PrismaticJoint {
-    Vec2 localAxisA;
-    bool enableLimit = false, enableMotor = false;
-    float lower = 0, upper = 0;
-    float motorSpeed = 0, maxMotorForce = 0;
-    Vec2 axisA;           // world axis at step start
-    float axialMass = 0;  // of the row along the axis
-    Vec2 impulse;         // (perpendicular, angular) rows
-    float motorImpulse = 0, lowerImpulse = 0, upperImpulse = 0;
-};
+    template <class T>
+    T& emplace() {
+        check<T>();
+        return *std::construct_at(reinterpret_cast<T*>(bytes_));
+    }
+    template <class T>
+    T& as() {
+        check<T>();
+        return *reinterpret_cast<T*>(bytes_);
+    }
+    template <class T>
+    const T& as() const {
+        return const_cast<JointData&>(*this).as<T>();
+    }
 
-struct DistanceJoint {
-    float length = 1, minLength = 0, maxLength = 0;
-    float hertz = 0, dampingRatio = 0;
-    Softness spring;
-    Vec2 axis;            // B's anchor from A's, unit, at step start
-    float axialMass = 0;
-    float impulse = 0, lowerImpulse = 0, upperImpulse = 0;
-};
-
-struct WeldJoint {
-    float hertz = 0, dampingRatio = 0;  // soft in the angle only, like Box2D 2.4's weld
-    Softness angularSoftness;
-    float axialMass = 0;
-    Vec2 linearImpulse;
-    float angularImpulse = 0;
-};
-
-struct WheelJoint {
-    Vec2 localAxisA;
-    float hertz = 0, dampingRatio = 0;  // 0 hertz: rigid suspension
-    bool enableMotor = false;
-    float motorSpeed = 0, maxMotorTorque = 0;
-    Softness spring;
-    Vec2 axisA;
-    float axialMass = 0, motorMass = 0;
-    float perpImpulse = 0, springImpulse = 0, motorImpulse = 0;
-};
-
-struct MotorJoint {
-    float maxForce = 0, maxTorque = 0, correctionFactor = 0;
-    float axialMass = 0;
-    Vec2 linearImpulse;
-    float angularImpulse = 0;
-};
-
-// The target is anchor A (fixed in the world during a step: A is meant to be static).
-struct MouseJoint {
-    float hertz = 0, dampingRatio = 0, maxForce = 0;
-    Softness softness;
-    Vec2 linearImpulse;
-};
-
-// One side of a gear: the coordinate of a revolute joint, θ − offset, or of a prismatic joint,
-// axis·anchor − offset (= axis·(anchor − base)), whose body A is static, so axis and offset are fixed.
-struct GearSide {
-    JointType kind = JointType::Revolute;
-    Vec2 axis;             // prismatic: world
-    float offset = 0;      // revolute: θ of the static body + the joint's reference angle; prismatic: axis·base
-    float coordinate = 0;  // at step start
-};
-
-// coordinateA + ratio·coordinateB = constant (joint_gear.cpp).
-struct GearJoint {
-    GearSide sideA, sideB;
-    float ratio = 1, constant = 0;
-    float mass = 0;
-    float impulse = 0;
-};
-
-// lengthA + ratio·lengthB = constant, length = |anchor − ground anchor| (joint_pulley.cpp).
-struct PulleyJoint {
-    Vec2 groundA, groundB;   // world
-    float ratio = 1, constant = 0;
-    Vec2 fromGroundA, fromGroundB;  // centre of mass − ground anchor, at step start
-    Vec2 uB;                 // B's rope direction (ground to anchor) at step start, for the reaction
-    float mass = 0;
-    float impulse = 0;
-};
-
-// Type-specific data; `type` in the Joint says which member is live (createJoint starts its
-// lifetime with std::construct_at, value-initialised).
-union JointData {
-    RevoluteJoint revolute;
-    PrismaticJoint prismatic;
-    DistanceJoint distance;
-    WeldJoint weld;
-    WheelJoint wheel;
-    MotorJoint motor;
-    MouseJoint mouse;
-    GearJoint gear;
-    PulleyJoint pulley;
-    JointData() : revolute{} {}
+private:
+    static constexpr size_t alignment = alignof(float);
+    template <class T>
+    static constexpr void check() {
+        static_assert(sizeof(T) <= capacity, "a joint type's data must fit: raise JointData::capacity");
+        static_assert(alignof(T) <= alignment, "a joint type's data must not need more than float alignment");
+        static_assert(std::is_trivially_copyable_v<T>, "a joint type's data must be trivially copyable");
+    }
+    alignas(alignment) std::byte bytes_[capacity]{};
 };
 
 struct Joint {
@@ -221,8 +156,7 @@ JointId jointId(const World::Impl& world, const Joint& joint);
 Joint& checkedJoint(const World::Impl& world, JointId id);
 void requireFinite(bool ok, const char* what);  // Error "<what> must be finite" unless ok
 
-// A joint type's solver stages, defined at the end of its joint_<type>.cpp and listed in
-// joint_registry.cpp. prepare runs after the common frame (anchors, masses, deltaCenter,
+// A joint type's solver stages. prepare runs after the common frame (anchors, masses, deltaCenter,
 // deltaAngle) is set, with the two bodies as the step starts.
 struct Body;
 struct JointStages {
@@ -231,7 +165,22 @@ struct JointStages {
     void (*solve)(PreparedJoint& joint, JointPair& pair, const StepContext& ctx, bool useBias);
     JointReaction (*reaction)(const Joint& joint);
 };
-const JointStages& stagesOf(JointType type);
+
+// A joint type as the store sees it: its stages and what the store and the snapshot do with its
+// data. Built at the end of the type's joint_<type>.cpp by jointKind (joint_type.hpp) and listed
+// in joint_registry.cpp.
+class ByteWriter;
+class ByteReader;
+struct JointKind {
+    JointStages stages;
+    void (*write)(ByteWriter& out, const JointData& data);  // through its field list
+    // Emplaces the type's data and reads the fields of a snapshot of in.version (format 1: the raw layout).
+    void (*read)(ByteReader& in, JointData& data);
+    float* (*motorSpeed)(JointData& data);  // for setMotorSpeed; null: the type has no motor
+};
+// The kind of `type`; null for a number that names no type (read from a snapshot).
+const JointKind* kindOf(JointType type);
+const JointStages& stagesOf(JointType type);  // of a type that exists
 
 // The revolute joint's rows one at a time, also for revolute trees that do not factor.
 void warmStartRevolute(PreparedJoint& joint, JointPair& pair);

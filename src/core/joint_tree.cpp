@@ -198,7 +198,7 @@ void solveRevoluteTrees(World::Impl& w, RevoluteTrees& t, std::vector<PreparedJo
         // Every Δλ from the velocities before any is applied: the solve already couples them.
         for (int i = 0; i < joints; ++i) {
             PreparedJoint& j = prepared[t.joints[first + i]];
-            Vec2& lambda = j.data.revolute.linearImpulse;
+            Vec2& lambda = j.data.as<RevoluteJoint>().linearImpulse;
             const Vec2 newLambda = lambda - soft.massScale * lambdaOf(t.x, i) - soft.impulseScale * lambda;
             const Vec2 delta = newLambda - lambda;
             t.x[2 * i] = delta.x;

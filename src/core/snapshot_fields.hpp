@@ -1,4 +1,6 @@
-// The field list of every struct a snapshot holds (field_list.hpp), and the format version.
+// The field list of every struct a snapshot holds (field_list.hpp), and the format version. The
+// joint types' data are the exception: each type's list is in its joint_<type>.cpp, beside its
+// stages (joint_type.hpp).
 //
 // To add a member to one of these structs: add it to the struct's list with .since(N), where N
 // is formatVersion + 1, and set formatVersion to N (docs/reliability.md, "Adding a field"). The
@@ -19,10 +21,6 @@ namespace perpdot {
 // manifolds (manifold_reuse.hpp), WorldDef::contactReuseDistance and box2dSkin (older: true),
 // joints' break limits.
 constexpr uint32_t formatVersion = 4;
-
-// A struct whose layout changed must have its field list reviewed (then update the size here).
-template <class T, size_t Size>
-constexpr bool reviewedLayout = sizeof(void*) != 8 || sizeof(T) == Size;
 
 // --- math ---
 
@@ -152,9 +150,10 @@ constexpr auto fields(const Contact*) {
                       field("reuseAngleB", &C::reuseAngleB).anyBits().since(4)};
 }
 
-// --- joints: any float bits; each type's list in declaration order (format 1 was raw bytes) ---
+// --- joints: any float bits ---
 
-// Not listed: generation, alive, edges (written as body lists), userData; data (by type, below).
+// Not listed: generation, alive, edges (written as body lists), userData; data (its type's list,
+// in the type's file: JointKind::write and read).
 static_assert(reviewedLayout<Joint, 144>);
 constexpr auto fields(const Joint*) {
     return std::tuple{field("type", &Joint::type),
@@ -169,137 +168,6 @@ constexpr auto fields(const Joint*) {
                       field("destroyOnBreak", &Joint::destroyOnBreak).since(4)};
 }
 
-static_assert(reviewedLayout<RevoluteJoint, 44>);
-constexpr auto fields(const RevoluteJoint*) {
-    using J = RevoluteJoint;
-    return std::tuple{field("enableLimit", &J::enableLimit),
-                      field("enableMotor", &J::enableMotor),
-                      field("lowerAngle", &J::lowerAngle).anyBits(),
-                      field("upperAngle", &J::upperAngle).anyBits(),
-                      field("motorSpeed", &J::motorSpeed).anyBits(),
-                      field("maxMotorTorque", &J::maxMotorTorque).anyBits(),
-                      field("axialMass", &J::axialMass).anyBits(),
-                      field("linearImpulse", &J::linearImpulse).anyBits(),
-                      field("motorImpulse", &J::motorImpulse).anyBits(),
-                      field("lowerImpulse", &J::lowerImpulse).anyBits(),
-                      field("upperImpulse", &J::upperImpulse).anyBits()};
-}
-
-static_assert(reviewedLayout<PrismaticJoint, 60>);
-constexpr auto fields(const PrismaticJoint*) {
-    using J = PrismaticJoint;
-    return std::tuple{field("localAxisA", &J::localAxisA).anyBits(),
-                      field("enableLimit", &J::enableLimit),
-                      field("enableMotor", &J::enableMotor),
-                      field("lower", &J::lower).anyBits(),
-                      field("upper", &J::upper).anyBits(),
-                      field("motorSpeed", &J::motorSpeed).anyBits(),
-                      field("maxMotorForce", &J::maxMotorForce).anyBits(),
-                      field("axisA", &J::axisA).anyBits(),
-                      field("axialMass", &J::axialMass).anyBits(),
-                      field("impulse", &J::impulse).anyBits(),
-                      field("motorImpulse", &J::motorImpulse).anyBits(),
-                      field("lowerImpulse", &J::lowerImpulse).anyBits(),
-                      field("upperImpulse", &J::upperImpulse).anyBits()};
-}
-
-static_assert(reviewedLayout<DistanceJoint, 56>);
-constexpr auto fields(const DistanceJoint*) {
-    using J = DistanceJoint;
-    return std::tuple{field("length", &J::length).anyBits(),
-                      field("minLength", &J::minLength).anyBits(),
-                      field("maxLength", &J::maxLength).anyBits(),
-                      field("hertz", &J::hertz).anyBits(),
-                      field("dampingRatio", &J::dampingRatio).anyBits(),
-                      field("spring", &J::spring).anyBits(),
-                      field("axis", &J::axis).anyBits(),
-                      field("axialMass", &J::axialMass).anyBits(),
-                      field("impulse", &J::impulse).anyBits(),
-                      field("lowerImpulse", &J::lowerImpulse).anyBits(),
-                      field("upperImpulse", &J::upperImpulse).anyBits()};
-}
-
-static_assert(reviewedLayout<WeldJoint, 36>);
-constexpr auto fields(const WeldJoint*) {
-    using J = WeldJoint;
-    return std::tuple{field("hertz", &J::hertz).anyBits(),
-                      field("dampingRatio", &J::dampingRatio).anyBits(),
-                      field("angularSoftness", &J::angularSoftness).anyBits(),
-                      field("axialMass", &J::axialMass).anyBits(),
-                      field("linearImpulse", &J::linearImpulse).anyBits(),
-                      field("angularImpulse", &J::angularImpulse).anyBits()};
-}
-
-static_assert(reviewedLayout<WheelJoint, 68>);
-constexpr auto fields(const WheelJoint*) {
-    using J = WheelJoint;
-    return std::tuple{field("localAxisA", &J::localAxisA).anyBits(),
-                      field("hertz", &J::hertz).anyBits(),
-                      field("dampingRatio", &J::dampingRatio).anyBits(),
-                      field("enableMotor", &J::enableMotor),
-                      field("motorSpeed", &J::motorSpeed).anyBits(),
-                      field("maxMotorTorque", &J::maxMotorTorque).anyBits(),
-                      field("spring", &J::spring).anyBits(),
-                      field("axisA", &J::axisA).anyBits(),
-                      field("axialMass", &J::axialMass).anyBits(),
-                      field("motorMass", &J::motorMass).anyBits(),
-                      field("perpImpulse", &J::perpImpulse).anyBits(),
-                      field("springImpulse", &J::springImpulse).anyBits(),
-                      field("motorImpulse", &J::motorImpulse).anyBits()};
-}
-
-static_assert(reviewedLayout<MotorJoint, 28>);
-constexpr auto fields(const MotorJoint*) {
-    using J = MotorJoint;
-    return std::tuple{field("maxForce", &J::maxForce).anyBits(),
-                      field("maxTorque", &J::maxTorque).anyBits(),
-                      field("correctionFactor", &J::correctionFactor).anyBits(),
-                      field("axialMass", &J::axialMass).anyBits(),
-                      field("linearImpulse", &J::linearImpulse).anyBits(),
-                      field("angularImpulse", &J::angularImpulse).anyBits()};
-}
-
-static_assert(reviewedLayout<MouseJoint, 32>);
-constexpr auto fields(const MouseJoint*) {
-    using J = MouseJoint;
-    return std::tuple{field("hertz", &J::hertz).anyBits(),
-                      field("dampingRatio", &J::dampingRatio).anyBits(),
-                      field("maxForce", &J::maxForce).anyBits(),
-                      field("softness", &J::softness).anyBits(),
-                      field("linearImpulse", &J::linearImpulse).anyBits()};
-}
-
-constexpr auto fields(const GearSide*) {
-    using S = GearSide;
-    return std::tuple{field("kind", &S::kind), field("axis", &S::axis).anyBits(), field("offset", &S::offset).anyBits(),
-                      field("coordinate", &S::coordinate).anyBits()};
-}
-
-static_assert(reviewedLayout<GearJoint, 56>);
-constexpr auto fields(const GearJoint*) {
-    using J = GearJoint;
-    return std::tuple{field("sideA", &J::sideA),
-                      field("sideB", &J::sideB),
-                      field("ratio", &J::ratio).anyBits(),
-                      field("constant", &J::constant).anyBits(),
-                      field("mass", &J::mass).anyBits(),
-                      field("impulse", &J::impulse).anyBits()};
-}
-
-static_assert(reviewedLayout<PulleyJoint, 56>);
-constexpr auto fields(const PulleyJoint*) {
-    using J = PulleyJoint;
-    return std::tuple{field("groundA", &J::groundA).anyBits(),
-                      field("groundB", &J::groundB).anyBits(),
-                      field("ratio", &J::ratio).anyBits(),
-                      field("constant", &J::constant).anyBits(),
-                      field("fromGroundA", &J::fromGroundA).anyBits(),
-                      field("fromGroundB", &J::fromGroundB).anyBits(),
-                      field("uB", &J::uB).anyBits(),
-                      field("mass", &J::mass).anyBits(),
-                      field("impulse", &J::impulse).anyBits()};
-}
-
 // --- events raised between steps (since format 3) ---
 
 template <class Tag>
@@ -312,24 +180,6 @@ constexpr auto fields(const ContactEndTouchEvent*) {
 constexpr auto fields(const SensorEndTouchEvent*) {
     return std::tuple{field("sensorShape", &SensorEndTouchEvent::sensorShape),
                       field("visitorShape", &SensorEndTouchEvent::visitorShape)};
-}
-
-// Calls visit(member) with the live member of `data` for a joint of `type` (the one switch a new
-// joint type extends, next to its field list above). False for an unknown type.
-template <class Data, class Visit>
-bool visitJointData(JointType type, Data& data, Visit&& visit) {
-    switch (type) {
-        case JointType::Revolute: visit(data.revolute); return true;
-        case JointType::Prismatic: visit(data.prismatic); return true;
-        case JointType::Distance: visit(data.distance); return true;
-        case JointType::Weld: visit(data.weld); return true;
-        case JointType::Wheel: visit(data.wheel); return true;
-        case JointType::Motor: visit(data.motor); return true;
-        case JointType::Mouse: visit(data.mouse); return true;
-        case JointType::Gear: visit(data.gear); return true;
-        case JointType::Pulley: visit(data.pulley); return true;
-    }
-    return false;
 }
 
 }  // namespace perpdot

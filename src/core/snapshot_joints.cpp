@@ -1,8 +1,7 @@
-// The joint store in a snapshot: each joint's common part and its type's data through their field
-// lists (snapshot_fields.hpp); format 1 held the type data as the struct's raw bytes, which
-// readLayoutV1 walks with the same list. Links are rebuilt from each body's saved joint list, and
+// The joint store in a snapshot: each joint's common part through its field list
+// (snapshot_fields.hpp), then its type's data through the type's kind (joint_type.hpp: the list in
+// the type's file; format 1 held the data as the struct's raw bytes, which the kind reads too). Links are rebuilt from each body's saved joint list, and
 // per-step values are left for prepareJoints to recompute.
-#include <memory>
 #include <string>
 #include <utility>
 
@@ -21,7 +20,7 @@ void writeJoints(ByteWriter& out, const World::Impl& w) {
         out.boolean(j.alive);
         if (!j.alive) continue;
         writeFields(out, j);
-        visitJointData(j.type, j.data, [&](const auto& data) { writeFields(out, data); });
+        kindOf(j.type)->write(out, j.data);
     }
     out.u32(static_cast<uint32_t>(s.joints.freeList().size()));
     for (int i : s.joints.freeList()) out.i32(i);
@@ -49,16 +48,9 @@ void readJoints(ByteReader& in, World::Impl& w) {
         if (j.bodyA < 0 || j.bodyA >= bodyCount || j.bodyB < 0 || j.bodyB >= bodyCount || j.bodyA == j.bodyB ||
             !w.bodies[j.bodyA].alive || !w.bodies[j.bodyB].alive)
             in.fail("joint " + std::to_string(index) + " needs two different live bodies");
-        const bool known = visitJointData(j.type, j.data, [&](auto& data) {
-            std::construct_at(&data);  // the live member, value-initialised as createJoint does
-            if (in.version == 1) {
-                size_t offset = 0;
-                readLayoutV1(in, data, offset);
-            } else {
-                readFields(in, data);
-            }
-        });
-        if (!known) in.fail("joint type " + std::to_string(static_cast<int>(j.type)) + " is unknown");
+        const JointKind* kind = kindOf(j.type);
+        if (!kind) in.fail("joint type " + std::to_string(static_cast<int>(j.type)) + " is unknown");
+        kind->read(in, j.data);
     }
     std::vector<int> free(in.count(4, "free joint"));
     std::vector<bool> listed(count, false);

@@ -276,9 +276,9 @@ b2Joint* createJoint(b2World& world, const SceneJoint& j, b2Body* a, b2Body* b, 
         def.ratio = j.ratio;
         return world.CreateJoint(&def);
     }
-    case JointType::Mouse: break;
+    default: break;  // mouse joints, and types the format does not have
     }
-    throw Error("joints: mouse joints are interactive and not part of the scene format");
+    throw Error("joints: mouse joints are interactive and not part of the scene format, nor are joints of a type it does not have");
 }
 
 // b2ChainShape asserts (aborts) unless every edge, a loop's closing one included (its fixture's

@@ -128,9 +128,9 @@ JointId createJoint(World& world, const SceneJoint& j, const JointFrame& f, cons
                 .lengthB = j.lengthB.value_or(distance(j.groundAnchorB, worldB)), .ratio = j.ratio,
                 .collideConnected = j.collideConnected});
         }
-        case JointType::Mouse: break;
+        default: break;  // mouse joints, and types the format does not have
     }
-    throw Error("mouse joints cannot be part of a scene");
+    throw Error("mouse joints cannot be part of a scene, nor joints of a type the format does not have");
 }
 
 std::string element(const char* list, size_t i) { return std::string(list) + "[" + std::to_string(i) + "]"; }

@@ -303,7 +303,7 @@ KeyList jointKeys(JointType type) {
         case JointType::Motor: return scene_keys::motor;
         case JointType::Gear: return scene_keys::gear;
         case JointType::Pulley: return scene_keys::pulley;
-        case JointType::Mouse: break;  // not in the file format
+        default: break;  // not in the file format (mouse joints)
     }
     return {};
 }

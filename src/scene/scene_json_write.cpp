@@ -66,9 +66,9 @@ const char* name(JointType type) {
         case JointType::Motor: return "motor";
         case JointType::Gear: return "gear";
         case JointType::Pulley: return "pulley";
-        case JointType::Mouse: break;
+        default: break;  // mouse joints, and types the format does not have (docs/joints.md)
     }
-    throw Error("mouse joints are interactive and cannot be saved in a scene");
+    throw Error("mouse joints are interactive and cannot be saved in a scene; nor can joints of a type the format does not have");
 }
 
 const char* name(SceneAction::Kind kind) {
