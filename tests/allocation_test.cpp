@@ -137,6 +137,17 @@ TEST(Allocation, JointGridAllocatesNothing) {
     EXPECT_EQ(allocationsOf(20, [&] { grid.step(); }), 0);
 }
 
+// Rollback: restore keeps the world's step scratch (the contacts' and the joints' per-step arrays),
+// so the first frame re-simulated after a restore allocates nothing either.
+TEST(Allocation, AFrameAfterARestoreAllocatesNothing) {
+    SceneWorld chain = buildWorld(findScene("chain"));
+    for (int i = 0; i < 240; ++i) chain.step();
+    const std::vector<uint8_t> saved = chain.world.snapshot();
+    for (int i = 0; i < 8; ++i) chain.step();
+    chain.world.restore(saved);
+    EXPECT_EQ(allocationsOf(1, [&] { chain.step(); }), 0);
+}
+
 // With workers (oneTBB): the threads' task storage is reused too.
 TEST(Allocation, ThreadedStepsAllocateNothing) {
     for (const char* name : {"pyramid", "joint_grid", "ragdoll_rain"}) {

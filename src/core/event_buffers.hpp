@@ -30,6 +30,19 @@ struct EventBuffers {
         contactEnd.erase(contactEnd.begin(), contactEnd.begin() + static_cast<std::ptrdiff_t>(contactEndReported));
         sensorEnd.erase(sensorEnd.begin(), sensorEnd.begin() + static_cast<std::ptrdiff_t>(sensorEndReported));
     }
+    // The events of `other` in this world's buffers, whose capacity stays (a restore keeps the
+    // restoring world's buffers: its next step allocates nothing).
+    void assignKeepingCapacity(const EventBuffers& other) {
+        auto copy = [](auto& to, const auto& from) { to.assign(from.begin(), from.end()); };
+        copy(contactBegin, other.contactBegin);
+        copy(contactEnd, other.contactEnd);
+        copy(contactHit, other.contactHit);
+        copy(jointBreak, other.jointBreak);
+        copy(sensorBegin, other.sensorBegin);
+        copy(sensorEnd, other.sensorEnd);
+        contactEndReported = other.contactEndReported;
+        sensorEndReported = other.sensorEndReported;
+    }
     // At the end of step(): every end event so far is this step's.
     void endStep() {
         contactEndReported = contactEnd.size();

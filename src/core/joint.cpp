@@ -12,6 +12,8 @@ namespace perpdot {
 
 void JointStoreDeleter::operator()(JointStore* store) const { delete store; }
 JointStorePtr makeJointStore() { return JointStorePtr(new JointStore); }
+void JointScratchDeleter::operator()(JointScratch* scratch) const { delete scratch; }
+JointScratchPtr makeJointScratch() { return JointScratchPtr(new JointScratch); }
 
 void requireFinite(bool ok, const char* what) {
     if (!ok) throw Error(std::string(what) + " must be finite");
@@ -21,6 +23,8 @@ namespace {
 
 JointStore& store(World::Impl& w) { return *w.joints; }
 const JointStore& store(const World::Impl& w) { return *w.joints; }
+JointScratch& jointScratch(World::Impl& w) { return *w.scratch.joints; }
+const JointScratch& jointScratch(const World::Impl& w) { return *w.scratch.joints; }
 
 // A joint that forbids collision between its bodies removes their contacts.
 void destroyContactsBetween(World::Impl& w, int bodyA, int bodyB) {
@@ -120,11 +124,11 @@ void prepareJoint(PreparedJoint& j, const World::Impl& w, const Joint& joint, co
 // body, so their order within it is free and workers may run its units side by side.
 template <class Wide, class Scalar>
 void forJointUnits(World::Impl& w, int color, int begin, int end, Wide wide, Scalar scalar) {
-    JointStore& s = store(w);
+    JointScratch& d = jointScratch(w);
     std::vector<BodyState>& states = w.scratch.states;
-    const int blocks = s.blockStart[color + 1] - s.blockStart[color];
+    const int blocks = d.blockStart[color + 1] - d.blockStart[color];
     for (int unit = begin; unit < std::min(end, blocks); ++unit) {
-        RevoluteBlock& block = s.revoluteBlocks[s.blockStart[color] + unit];
+        RevoluteBlock& block = d.revoluteBlocks[d.blockStart[color] + unit];
         BodyLanes<Float4> a = gatherBodies(states, block.bodyA), b = gatherBodies(states, block.bodyB);
         JointPairT<Float4> p{a, b, block.mass};
         wide(block.rows, p);
@@ -134,7 +138,7 @@ void forJointUnits(World::Impl& w, int color, int begin, int end, Wide wide, Sca
     // The static slot 0 is shared by the colour's joints: each run writes (nothing) to its own copy.
     BodyState fixed = states[0];
     for (int unit = std::max(begin, blocks); unit < end; ++unit) {
-        PreparedJoint& j = s.prepared[s.scalarOrder[s.scalarStart[color] + unit - blocks]];
+        PreparedJoint& j = d.prepared[d.scalarOrder[d.scalarStart[color] + unit - blocks]];
         JointPair p = pairOf(j.indexA == 0 ? fixed : states[j.indexA], j.indexB == 0 ? fixed : states[j.indexB],
                              w.scratch.stepRotation, j);
         scalar(j, p);
@@ -173,6 +177,7 @@ bool inLanes(int color, const PreparedJoint& j) { return color != GraphColoring:
 void prepareJoints(World::Impl& w, const StepContext& ctx) {
     constexpr int overflow = GraphColoring::overflow;
     JointStore& s = store(w);
+    JointScratch& d = jointScratch(w);
     s.invHs = ctx.invHs;
     auto awake = [&](int index) {
         const Joint& joint = s.joints[index];
@@ -182,45 +187,45 @@ void prepareJoints(World::Impl& w, const StepContext& ctx) {
     const int count = w.workers.parallelSelect(
         s.joints.capacity(), awake,
         [&](int total) {
-            s.awake.resize(total);
-            s.prepared.resize(total);
-            s.colors.resize(total);
+            d.awake.resize(total);
+            d.prepared.resize(total);
+            d.colors.resize(total);
         },
         [&](int k, int index) {
-            s.awake[k] = index;
-            prepareJoint(s.prepared[k], w, s.joints[index], ctx);
+            d.awake[k] = index;
+            prepareJoint(d.prepared[k], w, s.joints[index], ctx);
         });
 
-    s.coloring.reset(static_cast<int>(w.scratch.states.size()));
+    d.coloring.reset(static_cast<int>(w.scratch.states.size()));
     std::array<int, overflow + 1> laneCount{}, scalarCount{};
     for (int k = 0; k < count; ++k) {
-        const PreparedJoint& j = s.prepared[k];
-        s.colors[k] = s.coloring.assign(j.indexA, j.indexB);
-        ++(inLanes(s.colors[k], j) ? laneCount[s.colors[k]] : scalarCount[s.colors[k]]);
+        const PreparedJoint& j = d.prepared[k];
+        d.colors[k] = d.coloring.assign(j.indexA, j.indexB);
+        ++(inLanes(d.colors[k], j) ? laneCount[d.colors[k]] : scalarCount[d.colors[k]]);
     }
     // Joints of revolute trees leave the colours: they are solved directly (joint_tree.hpp).
-    findRevoluteTrees(s.trees, s.prepared, static_cast<int>(w.scratch.states.size()));
-    for (int k : s.trees.joints) --(inLanes(s.colors[k], s.prepared[k]) ? laneCount[s.colors[k]] : scalarCount[s.colors[k]]);
+    findRevoluteTrees(d.trees, d.prepared, static_cast<int>(w.scratch.states.size()));
+    for (int k : d.trees.joints) --(inLanes(d.colors[k], d.prepared[k]) ? laneCount[d.colors[k]] : scalarCount[d.colors[k]]);
 
     for (int color = 0; color <= overflow; ++color) {
-        s.blockStart[color + 1] = s.blockStart[color] + (laneCount[color] + 3) / 4;
-        s.scalarStart[color + 1] = s.scalarStart[color] + scalarCount[color];
+        d.blockStart[color + 1] = d.blockStart[color] + (laneCount[color] + 3) / 4;
+        d.scalarStart[color + 1] = d.scalarStart[color] + scalarCount[color];
     }
-    const int blocks = s.blockStart[overflow + 1];
-    s.revoluteBlocks.resize(blocks);
-    s.blockLanes.assign(blocks, {-1, -1, -1, -1});
-    s.scalarOrder.resize(s.scalarStart[overflow + 1]);
-    ColorStarts nextScalar = s.scalarStart;
+    const int blocks = d.blockStart[overflow + 1];
+    d.revoluteBlocks.resize(blocks);
+    d.blockLanes.assign(blocks, {-1, -1, -1, -1});
+    d.scalarOrder.resize(d.scalarStart[overflow + 1]);
+    ColorStarts nextScalar = d.scalarStart;
     std::array<int, overflow + 1> nextLane{};
     for (int k = 0; k < count; ++k) {
-        const int color = s.colors[k];
-        if (s.trees.inTree[k]) continue;
-        if (!inLanes(color, s.prepared[k])) {
-            s.scalarOrder[nextScalar[color]++] = k;
+        const int color = d.colors[k];
+        if (d.trees.inTree[k]) continue;
+        if (!inLanes(color, d.prepared[k])) {
+            d.scalarOrder[nextScalar[color]++] = k;
             continue;
         }
         const int lane = nextLane[color]++;
-        s.blockLanes[s.blockStart[color] + lane / 4][lane % 4] = k;
+        d.blockLanes[d.blockStart[color] + lane / 4][lane % 4] = k;
     }
     static const PreparedJoint emptyLane;  // static slots, no mass
     w.workers.parallelFor(blocks, 16, [&](int begin, int end, int) {
@@ -228,45 +233,49 @@ void prepareJoints(World::Impl& w, const StepContext& ctx) {
             std::array<const PreparedJoint*, 4> lanes;
             std::array<int, 4> joints;
             for (int lane = 0; lane < 4; ++lane) {
-                const int k = s.blockLanes[block][lane];
-                lanes[lane] = k < 0 ? &emptyLane : &s.prepared[k];
-                joints[lane] = k < 0 ? -1 : s.awake[k];
+                const int k = d.blockLanes[block][lane];
+                lanes[lane] = k < 0 ? &emptyLane : &d.prepared[k];
+                joints[lane] = k < 0 ? -1 : d.awake[k];
             }
-            s.revoluteBlocks[block] = packRevoluteBlock(lanes, joints);
+            d.revoluteBlocks[block] = packRevoluteBlock(lanes, joints);
         }
     });
 }
 
 // Every substep begins by re-applying the accumulated impulses (Box2D v3's soft step).
 int jointUnitCount(const World::Impl& w, int color) {
-    const JointStore& s = store(w);
-    return s.blockStart[color + 1] - s.blockStart[color] + s.scalarStart[color + 1] - s.scalarStart[color];
+    const JointScratch& d = jointScratch(w);
+    return d.blockStart[color + 1] - d.blockStart[color] + d.scalarStart[color + 1] - d.scalarStart[color];
 }
 
 int serialJointCount(const World::Impl& w) {
-    return jointUnitCount(w, GraphColoring::overflow) + static_cast<int>(store(w).trees.joints.size());
+    return jointUnitCount(w, GraphColoring::overflow) + static_cast<int>(jointScratch(w).trees.joints.size());
 }
 
 void serialJointRows(World::Impl& w, const StepContext& ctx, RowPass pass) {
     constexpr int overflow = GraphColoring::overflow;
     jointRows(w, ctx, pass, overflow, 0, jointUnitCount(w, overflow));
-    JointStore& s = store(w);
+    JointScratch& d = jointScratch(w);
     if (pass == RowPass::WarmStart)
-        warmStartRevoluteTrees(w, s.trees, s.prepared);
+        warmStartRevoluteTrees(w, d.trees, d.prepared);
     else
-        solveRevoluteTrees(w, s.trees, s.prepared, ctx, pass == RowPass::Solve);
+        solveRevoluteTrees(w, d.trees, d.prepared, ctx, pass == RowPass::Solve);
 }
 
-void projectJoints(World::Impl& w) { projectRevoluteTrees(w, store(w).trees, store(w).prepared); }
+void projectJoints(World::Impl& w) {
+    JointScratch& d = jointScratch(w);
+    projectRevoluteTrees(w, d.trees, d.prepared);
+}
 
 // The accumulated impulses go back to the joints, ready for the next step's warm start.
 void storeJointImpulses(World::Impl& w, const StepContext&) {
     JointStore& s = store(w);
-    w.workers.parallelFor(static_cast<int>(s.revoluteBlocks.size()), 64, [&](int begin, int end, int) {
-        for (int block = begin; block < end; ++block) unpackRevoluteImpulses(s.revoluteBlocks[block], s.joints.slots());
+    JointScratch& d = jointScratch(w);
+    w.workers.parallelFor(static_cast<int>(d.revoluteBlocks.size()), 64, [&](int begin, int end, int) {
+        for (int block = begin; block < end; ++block) unpackRevoluteImpulses(d.revoluteBlocks[block], s.joints.slots());
     });
-    for (int position : s.scalarOrder) s.joints[s.awake[position]].data = s.prepared[position].data;
-    for (int position : s.trees.joints) s.joints[s.awake[position]].data = s.prepared[position].data;
+    for (int position : d.scalarOrder) s.joints[d.awake[position]].data = d.prepared[position].data;
+    for (int position : d.trees.joints) s.joints[d.awake[position]].data = d.prepared[position].data;
 }
 
 bool jointAllowsCollision(const World::Impl& w, int bodyA, int bodyB) {
@@ -345,6 +354,7 @@ void World::setJointBreakLimits(JointId id, float maxForce, float maxTorque, boo
 // step's last substep (the accumulated impulses / hs, as jointReactionForce reports them).
 void breakJoints(World::Impl& w) {
     JointStore& s = store(w);
+    JointScratch& d = jointScratch(w);
     auto reaction = [&](const Joint& j) {
         const JointReaction r = reactionOf(j);
         return std::pair{s.invHs * r.linear, s.invHs * r.angular};  // force, torque
@@ -358,9 +368,9 @@ void breakJoints(World::Impl& w) {
     // The workers find the joints over their limits; a break wakes bodies, so which of them are
     // awake is asked one by one, in store order, as the joints break.
     w.workers.parallelSelect(
-        s.joints.capacity(), overLimit, [&](int total) { s.breaking.resize(total); },
-        [&](int k, int index) { s.breaking[k] = index; });
-    for (int index : s.breaking) {
+        s.joints.capacity(), overLimit, [&](int total) { d.breaking.resize(total); },
+        [&](int k, int index) { d.breaking[k] = index; });
+    for (int index : d.breaking) {
         const Joint& j = s.joints[index];
         if (!w.bodies[j.bodyA].awake && !w.bodies[j.bodyB].awake) continue;  // asleep: nothing changed
         const auto [force, torque] = reaction(j);

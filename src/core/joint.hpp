@@ -14,6 +14,13 @@ struct JointStoreDeleter {
 };
 using JointStorePtr = std::unique_ptr<JointStore, JointStoreDeleter>;
 JointStorePtr makeJointStore();
+// The joints' per-step arrays (joint_store.hpp), for the step scratch.
+struct JointScratch;
+struct JointScratchDeleter {
+    void operator()(JointScratch* scratch) const;
+};
+using JointScratchPtr = std::unique_ptr<JointScratch, JointScratchDeleter>;
+JointScratchPtr makeJointScratch();
 
 // Solver stages, run by World::step (step.cpp, solver_stages.cpp) like the contact stages.
 void prepareJoints(World::Impl& world, const StepContext& ctx);

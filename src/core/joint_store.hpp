@@ -121,7 +121,13 @@ struct RevoluteBlock;  // four revolute joints in SIMD lanes (joint_solver_wide.
 
 struct JointStore {
     Pool<Joint> joints;
-    EdgeList bodyLists;                  // each body's joints
+    EdgeList bodyLists;  // each body's joints
+    float invHs = 0;     // of the last step, for reaction forces
+};
+
+// The joints' per-step arrays, held by the step scratch (step_scratch.hpp) with the contacts' and
+// kept, like them, when a snapshot is restored.
+struct JointScratch {
     // The step's awake joints, prepared in store order: prepared[k] is joints[awake[k]].
     std::vector<int> awake;
     std::vector<PreparedJoint> prepared;
@@ -138,7 +144,6 @@ struct JointStore {
     std::vector<int> colors;  // of prepared[k]
     std::vector<std::array<int, 4>> blockLanes;  // by revolute block: its lanes' k in prepared, -1 empty
     std::vector<int> breaking;  // breakJoints: the joints over their break limits, in store order
-    float invHs = 0;                     // of the last step, for reaction forces
 };
 
 // Impulses on B per substep, turned into force and torque by the caller (× 1/hs).

@@ -99,7 +99,10 @@ public:
         items_.assign(static_cast<size_t>(count), T{});
         free_.clear();
     }
-    void restoreFreeList(std::vector<int> free) { free_ = std::move(free); }
+    void restoreFreeList(std::vector<int> free) {
+        free_ = std::move(free);
+        free_.reserve(items_.size());  // room for every slot: destroying allocates nothing until the pool grows
+    }
 
 private:
     // Over a copy of the span, so that fn's writes (through a char, say) cannot make it reload the vector.

@@ -11,6 +11,7 @@
 #include "core/contact_groups.hpp"
 #include "core/contact_solver_wide.hpp"
 #include "core/graph_color.hpp"
+#include "core/joint.hpp"
 #include "core/solver_stages.hpp"
 #include "core/step_context.hpp"
 
@@ -71,6 +72,7 @@ struct StepScratch {
     std::vector<int> overflowConstraints;        // constraints no colour could take: solved one by one
     ContactGroups contactGroups;                 // constraints solved a group at a time (contact_groups.hpp)
     SolverStages solverStages;                   // the substeps' stages for the workers
+    JointScratchPtr joints = makeJointScratch();  // the joints' prepared rows, blocks and colours (joint_store.hpp)
     std::vector<int> islandParent;      // union-find scratch for sleeping, by body index
     std::vector<float> islandMinSleep;
     std::vector<int> islandHead;
