@@ -3,6 +3,7 @@
 // 10 km from the origin. Misuse must give perpdot::Error or defined behaviour, never UB
 // (the ASan + UBSan build runs these too).
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -231,6 +232,31 @@ TEST(Numerics, ShapeCoordinatesBeyondTheHugeLimitAreRefused) {
     const Vec2 triangle[3] = {{0, 0}, {1, 0}, {0, 1}};
     EXPECT_NO_THROW(makePolygon(triangle, huge));
     EXPECT_THROW(makePolygon(triangle, beyond), Error);
+}
+
+TEST(Numerics, BadWorldSettingsAreRefusedByName) {
+    // Each setting names itself in the error; NaN, infinite and negative values are refused.
+    const auto refuses = [](const WorldDef& def, const std::string& name) {
+        try {
+            World world(def);
+            ADD_FAILURE() << name << " was accepted";
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find("WorldDef." + name), std::string::npos) << e.what();
+        }
+    };
+    const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+    refuses({.contactHertz = -1.0f}, "contactHertz");
+    refuses({.contactDampingRatio = nan}, "contactDampingRatio");
+    refuses({.jointHertz = inf}, "jointHertz");
+    refuses({.jointDampingRatio = -0.5f}, "jointDampingRatio");
+    refuses({.contactPushMaxVelocity = -3.0f}, "contactPushMaxVelocity");
+    refuses({.restitutionThreshold = nan}, "restitutionThreshold");
+    refuses({.maxLinearSpeed = 0.0f}, "maxLinearSpeed");
+    refuses({.hitEventThreshold = -1.0f}, "hitEventThreshold");
+    refuses({.contactReuseDistance = -0.05f}, "contactReuseDistance");
+    refuses({.substeps = 0}, "substeps");
+    // The edges are allowed: rigid rows (0 Hz), no threshold, no reuse.
+    EXPECT_NO_THROW(World(WorldDef{.contactHertz = 0.0f, .jointHertz = 0.0f, .restitutionThreshold = 0.0f, .contactReuseDistance = 0.0f}));
 }
 
 TEST(Numerics, LinearSpeedIsClampedToTheWorldLimit) {

@@ -1,6 +1,7 @@
 // Bodies: creation, mass from shapes, state access, and forces at points (τ = perpDot(P - CM, F)).
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "core/world_impl.hpp"
 
@@ -17,6 +18,20 @@ void requireFinite(bool ok, const char* what) {
 World::Impl::Impl(const WorldDef& d) : def(d), joints(makeJointStore()), workers(d) {
     if (!isFinite(def.gravity)) throw Error("WorldDef.gravity must be finite");
     if (def.substeps < 1 || def.substeps > 64) throw Error("WorldDef.substeps must be 1..64");
+    // Box2D v3's checks of its b2WorldDef: every rate, ratio, speed and threshold finite and >= 0
+    // (a hertz of 0 is a rigid row), the speed limit > 0.
+    const std::pair<float, const char*> atLeastZero[] = {
+        {def.contactHertz, "contactHertz"},
+        {def.contactDampingRatio, "contactDampingRatio"},
+        {def.jointHertz, "jointHertz"},
+        {def.jointDampingRatio, "jointDampingRatio"},
+        {def.contactPushMaxVelocity, "contactPushMaxVelocity"},
+        {def.restitutionThreshold, "restitutionThreshold"},
+        {def.hitEventThreshold, "hitEventThreshold"},
+        {def.contactReuseDistance, "contactReuseDistance"}};
+    for (const auto& [value, name] : atLeastZero)
+        if (!(std::isfinite(value) && value >= 0.0f)) throw Error(std::string("WorldDef.") + name + " must be finite and >= 0");
+    if (!(std::isfinite(def.maxLinearSpeed) && def.maxLinearSpeed > 0.0f)) throw Error("WorldDef.maxLinearSpeed must be finite and > 0");
 }
 
 Body& World::Impl::body(BodyId id) {
