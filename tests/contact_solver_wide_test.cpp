@@ -1,6 +1,7 @@
 // The contact rows of src/core/contact_solver_wide.hpp solve four constraints in simd::Float4
 // lanes with bit for bit the results of solving them one at a time with F = float (no FMA, no
-// approximate reciprocal), including one-point manifolds, rolling resistance and empty lanes.
+// approximate reciprocal), including one-point manifolds, rolling resistance, restitution (the pass
+// after the substeps, which skips slow, non-pushing and inelastic points) and empty lanes.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -31,6 +32,7 @@ ContactRows<float> randomRows(Random& r, int pointCount, bool rolling) {
     c.biasRate = r(10.0f, 60.0f);
     c.massScale = r(0.5f, 1.0f);
     c.impulseScale = r(0.0f, 0.5f);
+    c.restitution = r(0.0f, 1.0f) < 0.3f ? 0.0f : r(0.1f, 1.0f);
     for (int i = 0; i < pointCount; ++i) {
         ContactPointRows<float>& p = c.points[i];
         p.anchorA = {r(-0.5f, 0.5f), r(-0.5f, 0.5f)};
@@ -40,6 +42,7 @@ ContactRows<float> randomRows(Random& r, int pointCount, bool rolling) {
         p.tangentImpulse = r(-0.2f, 0.2f);
         p.normalMass = r(0.2f, 2.0f);
         p.tangentMass = r(0.2f, 2.0f);
+        p.relativeVelocity = r(-4.0f, 0.5f);  // a threshold of 1 m/s: some approaches bounce
     }
     return c;
 }
@@ -47,6 +50,10 @@ ContactRows<float> randomRows(Random& r, int pointCount, bool rolling) {
 TEST(ContactSolverWide, FourLanesEqualFourScalarSolves) {
     StepContext ctx;
     ctx.invHs = 240.0f;
+    ctx.restitutionThreshold = 1.0f;
+    ctx.substeps = 4;
+    ctx.h = 1.0f / 60.0f;
+    ctx.invH = 60.0f;
     Random r{987654321u};
     for (int round = 0; round < 50; ++round) {
         // Lanes: a two-point manifold, a one-point one with rolling resistance, one against the
@@ -69,6 +76,11 @@ TEST(ContactSolverWide, FourLanesEqualFourScalarSolves) {
                 else solveContact<false>(scalarRows[lane], scalar[bodyA[lane]], scalar[bodyB[lane]], ctx);
             }
         }
+        // Each body's velocity change per substep from gravity-like forces: the rebound's deceleration.
+        std::vector<Vec2> dv(9);
+        for (int i = 1; i < 9; ++i) dv[i] = {r(-0.02f, 0.02f), r(-0.06f, 0.0f)};
+        for (int lane = 0; lane < (emptyLast ? 3 : 4); ++lane)
+            restituteContact(scalarRows[lane], scalar[bodyA[lane]], scalar[bodyB[lane]], dv[bodyA[lane]], dv[bodyB[lane]], ctx);
 
         ContactRows<simd::Float4> wide;
         packContactRows({&rows[0], &rows[1], &rows[2], &rows[3]}, wide);
@@ -80,19 +92,30 @@ TEST(ContactSolverWide, FourLanesEqualFourScalarSolves) {
             scatterVelocities(states, bodyA, a);
             scatterVelocities(states, bodyB, b);
         }
+        BodyLanes<simd::Float4> a = gatherBodies(states, bodyA), b = gatherBodies(states, bodyB);
+        const auto lanesOf = [&](const int (&slots)[4]) {
+            float x[4], y[4];
+            for (int lane = 0; lane < 4; ++lane) x[lane] = dv[slots[lane]].x, y[lane] = dv[slots[lane]].y;
+            return Vec2T<simd::Float4>{simd::Float4::load(x), simd::Float4::load(y)};
+        };
+        restituteContact(wide, a, b, lanesOf(bodyA), lanesOf(bodyB), ctx);
+        scatterVelocities(states, bodyA, a);
+        scatterVelocities(states, bodyB, b);
 
         for (int i = 0; i < 9; ++i) {
             EXPECT_TRUE(sameBits(states[i].v.x, scalar[i].v.x)) << "round " << round << " body " << i;
             EXPECT_TRUE(sameBits(states[i].v.y, scalar[i].v.y)) << "round " << round << " body " << i;
             EXPECT_TRUE(sameBits(states[i].w, scalar[i].w)) << "round " << round << " body " << i;
         }
-        float normal[4], tangent[4], rolling[4];
+        float normal[4], tangent[4], rolling[4], maxNormal[4];
         wide.rollingImpulse.store(rolling);
         for (int lane = 0; lane < 4; ++lane) EXPECT_TRUE(sameBits(rolling[lane], scalarRows[lane].rollingImpulse)) << lane;
         for (int i = 0; i < 2; ++i) {
             wide.points[i].normalImpulse.store(normal);
             wide.points[i].tangentImpulse.store(tangent);
+            wide.points[i].maxNormalImpulse.store(maxNormal);
             for (int lane = 0; lane < 4; ++lane) {
+                EXPECT_TRUE(sameBits(maxNormal[lane], scalarRows[lane].points[i].maxNormalImpulse)) << lane;
                 EXPECT_TRUE(sameBits(normal[lane], scalarRows[lane].points[i].normalImpulse)) << lane;
                 EXPECT_TRUE(sameBits(tangent[lane], scalarRows[lane].points[i].tangentImpulse)) << lane;
             }

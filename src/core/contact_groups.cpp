@@ -270,6 +270,14 @@ bool solveGroupNormals(World::Impl& w, ContactGroups& g, int group, const StepCo
 
 void contactGroupRows(World::Impl& w, const StepContext& ctx, RowPass pass) {
     ContactGroups& g = w.scratch.contactGroups;
+    if (pass == RowPass::Restitution) {  // the bounce is row by row, as for every constraint
+        for (int index : g.constraints) {
+            ContactConstraint& c = w.scratch.constraints[index];
+            const std::vector<SubstepForces>& forces = w.scratch.substepForces;
+            restituteContact(c, w.scratch.states[c.indexA], w.scratch.states[c.indexB], forces[c.indexA].dv, forces[c.indexB].dv, ctx);
+        }
+        return;
+    }
     for (int group = 0; group + 1 < static_cast<int>(g.start.size()); ++group) {
         const bool useBias = pass == RowPass::Solve;
         const bool solved = pass != RowPass::WarmStart && solveGroupNormals(w, g, group, ctx, useBias);

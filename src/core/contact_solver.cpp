@@ -1,5 +1,6 @@
-// Contact constraints of a step: built from the contact cache, then (after the substeps' rows,
-// contact_solver_wide.{hpp,cpp}) a restitution pass, and the impulses kept for warm starting.
+// Contact constraints of a step, built from the contact cache: masses, softness, anchors, effective
+// masses and the approach speeds restitution reads. Their rows (the substeps' passes and, after them,
+// restitution) are in contact_solver_wide.{hpp,cpp}.
 #include <algorithm>
 
 #include "core/world_impl.hpp"
@@ -25,10 +26,6 @@ BodyState velocityWithoutContact(const World::Impl& w, const StepContext& ctx, i
     s.w += static_cast<float>(ctx.substeps) * f.dw;
     return s;
 }
-
-}  // namespace
-
-namespace {
 
 // The constraint of a touching contact: masses, softness, anchors and effective masses.
 void prepareContact(const World::Impl& w, const StepContext& ctx, ContactConstraint& c) {
@@ -60,6 +57,7 @@ void prepareContact(const World::Impl& w, const StepContext& ctx, ContactConstra
 
     const Vec2 n = contact.normal, t = perp(n);
     const BodyState sa = velocityWithoutContact(w, ctx, c.indexA), sb = velocityWithoutContact(w, ctx, c.indexB);
+
     for (int i = 0; i < contact.pointCount; ++i) {
         const ContactPointState& p = contact.points[i];
         ContactPointRows<float>& cp = c.points[i];
@@ -100,56 +98,8 @@ void prepareContacts(World::Impl& w, const StepContext& ctx) {
             prepareContact(w, ctx, c);
             s.constraintSlots[k] = {c.indexA, c.indexB};
         });
-    w.workers.parallelSelect(
-        static_cast<int>(s.constraints.size()), [&](int k) { return s.constraints[k].restitution != 0.0f; },
-        [&](int total) { s.bouncingConstraints.resize(total); }, [&](int slot, int k) { s.bouncingConstraints[slot] = k; });
     findContactGroups(w, ctx);
     prepareContactBlocks(w);
-}
-
-namespace {
-
-// The rebound speed of an approach at speed V: Hecker's e V, corrected so that the climb it starts
-// reaches e² of the height the fall took in the discrete integrator. Under a steady deceleration a
-// along n (gravity: a = g), a symplectic-Euler climb from speed v rises v²/2a − h v/2 and the fall
-// that ended at V took V²/2a − h V/2; equal to e² times: v = (a h + √(a²h² + 4e²(V² − a h V)))/2,
-// which is V for e = 1 (docs/stress.md). Without such a deceleration (a h ≥ V or a ≤ 0): e V.
-float reboundSpeed(float e, float V, float a, float h) {
-    const float ah = a * h;
-    if (!(ah > 0.0f) || !(V > ah)) return e * V;
-    return 0.5f * (ah + std::sqrt(ah * ah + 4.0f * e * e * (V * V - ah * V)));
-}
-
-}  // namespace
-
-// Hecker's bounce: drive v_rel·n to the rebound speed of the approach (v_rel·n at the end of the
-// step without the contact), for approaches faster than the restitution threshold. Runs after
-// storeContactImpulses: the accumulated impulses it adds to are the contact's.
-void applyRestitution(World::Impl& w, const StepContext& ctx) {
-    std::vector<BodyState>& states = w.scratch.states;
-    for (int k : w.scratch.bouncingConstraints) {
-        const ContactConstraint& c = w.scratch.constraints[k];
-        Contact& contact = w.contactCache.contacts[c.contact];
-        BodyState& a = states[c.indexA];
-        BodyState& b = states[c.indexB];
-        // The pair's deceleration along n from this step's forces: −(ΔvB − ΔvA)·n / h.
-        const Vec2 dv = w.scratch.substepForces[c.indexB].dv - w.scratch.substepForces[c.indexA].dv;
-        const float deceleration = -static_cast<float>(ctx.substeps) * dot(dv, c.normal) * ctx.invH;
-        for (int i = 0; i < c.pointCount; ++i) {
-            const ContactPointRows<float>& cp = c.points[i];
-            ContactPointState& stored = contact.points[i];
-            if (cp.relativeVelocity > -ctx.restitutionThreshold || stored.maxNormalImpulse == 0.0f) continue;
-            const Vec2 rA = cp.anchorA, rB = cp.anchorB;
-            const float vn = dot(relativeVelocity(a, b, rA, rB), c.normal);
-            const float rebound = reboundSpeed(c.restitution, -cp.relativeVelocity, deceleration, ctx.h);
-            float impulse = -cp.normalMass * (vn - rebound);
-            const float newImpulse = std::max(stored.normalImpulse + impulse, 0.0f);
-            impulse = newImpulse - stored.normalImpulse;
-            stored.normalImpulse = newImpulse;
-            stored.maxNormalImpulse = std::max(stored.maxNormalImpulse, impulse);
-            applyImpulse(c, a, b, rA, rB, impulse * c.normal);
-        }
-    }
 }
 
 }  // namespace perpdot

@@ -44,33 +44,54 @@ void packContactRows(const ContactRows<float>* const (&lanes)[4], ContactRows<Fl
 
 namespace {
 
-// `rows(blockRows, a, b)` on blocks [begin, end), or `rows(constraint, a, b)` on every overflow
-// constraint when overflow is set.
-template <class Rows>
-void forContacts(World::Impl& w, int begin, int end, bool overflow, Rows rows) {
+// `rows(blockRows, a, b, slotsA, slotsB)` on the blocks of [begin, end) that `needs` (all by
+// default), or `rows(constraint, a, b, slotA, slotB)` on every overflow constraint when overflow is set.
+template <class Rows, class Needs = bool (*)(const ContactBlock&)>
+void forContacts(World::Impl& w, int begin, int end, bool overflow, Rows rows,
+                 Needs needs = [](const ContactBlock&) { return true; }) {
     std::vector<BodyState>& states = w.scratch.states;
     for (int k = begin; k < end; ++k) {
         ContactBlock& block = w.scratch.contactBlocks[k];
+        if (!needs(block)) continue;
         BodyLanes<Float4> a = gatherBodies(states, block.bodyA);
         BodyLanes<Float4> b = gatherBodies(states, block.bodyB);
-        rows(block.rows, a, b);
+        rows(block.rows, a, b, block.bodyA, block.bodyB);
         scatterVelocities(states, block.bodyA, a);
         scatterVelocities(states, block.bodyB, b);
     }
     if (!overflow) return;
     for (int index : w.scratch.overflowConstraints) {
         ContactConstraint& c = w.scratch.constraints[index];
-        rows(c, states[c.indexA], states[c.indexB]);
+        rows(c, states[c.indexA], states[c.indexB], c.indexA, c.indexB);
     }
+}
+
+// The velocity change per substep from its forces of a slot's body, or of four slots' as lanes.
+Vec2 substepVelocityChange(const std::vector<SubstepForces>& forces, int slot) { return forces[slot].dv; }
+Vec2T<Float4> substepVelocityChange(const std::vector<SubstepForces>& forces, const int (&slots)[4]) {
+    float x[4], y[4];
+    for (int lane = 0; lane < 4; ++lane) {
+        x[lane] = forces[slots[lane]].dv.x;
+        y[lane] = forces[slots[lane]].dv.y;
+    }
+    return {Float4::load(x), Float4::load(y)};
 }
 
 void passContacts(World::Impl& w, const StepContext& ctx, RowPass pass, int begin, int end, bool overflow) {
     if (pass == RowPass::WarmStart)
-        forContacts(w, begin, end, overflow, [](auto& c, auto& a, auto& b) { warmStartContact(c, a, b); });
+        forContacts(w, begin, end, overflow, [](auto& c, auto& a, auto& b, const auto&, const auto&) { warmStartContact(c, a, b); });
     else if (pass == RowPass::Solve)
-        forContacts(w, begin, end, overflow, [&](auto& c, auto& a, auto& b) { solveContact<true>(c, a, b, ctx); });
+        forContacts(w, begin, end, overflow, [&](auto& c, auto& a, auto& b, const auto&, const auto&) { solveContact<true>(c, a, b, ctx); });
+    else if (pass == RowPass::Relax)
+        forContacts(w, begin, end, overflow, [&](auto& c, auto& a, auto& b, const auto&, const auto&) { solveContact<false>(c, a, b, ctx); });
     else
-        forContacts(w, begin, end, overflow, [&](auto& c, auto& a, auto& b) { solveContact<false>(c, a, b, ctx); });
+        forContacts(
+            w, begin, end, overflow,
+            [&](auto& c, auto& a, auto& b, const auto& slotsA, const auto& slotsB) {
+                const std::vector<SubstepForces>& forces = w.scratch.substepForces;
+                restituteContact(c, a, b, substepVelocityChange(forces, slotsA), substepVelocityChange(forces, slotsB), ctx);
+            },
+            [](const ContactBlock& block) { return anyElastic(block.rowData(), ContactBlock::lanes); });
 }
 
 }  // namespace
@@ -151,7 +172,9 @@ int contactBlockCount(const World::Impl& w, int color) {
 void contactRows(World::Impl& w, const StepContext& ctx, RowPass pass, int color, int begin, int end) {
     const int first = w.scratch.contactBlockStart[color];
 #ifdef PERPDOT_AVX2
-    if (w.scratch.contactLanes == 8) return contactRows8(w.scratch.contactBlocks8.data(), first + begin, first + end, w.scratch.states.data(), ctx, pass);
+    if (w.scratch.contactLanes == 8)
+        return contactRows8(w.scratch.contactBlocks8.data(), first + begin, first + end, w.scratch.states.data(),
+                            w.scratch.substepForces.data(), ctx, pass);
 #endif
     passContacts(w, ctx, pass, first + begin, first + end, false);
 }

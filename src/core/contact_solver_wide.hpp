@@ -137,12 +137,62 @@ void solveContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, const Ste
     applyAngularImpulse(c, a, b, c.rollingImpulse - lambda);
 }
 
+// The rebound speed of an approach at speed V: Hecker's e V, corrected so that the climb it starts
+// reaches e² of the height the fall took in the discrete integrator. Under a steady deceleration a
+// along n (gravity: a = g), a symplectic-Euler climb from speed v rises v²/2a − h v/2 and the fall
+// that ended at V took V²/2a − h V/2; equal to e² times: v = (a h + √(a²h² + 4e²(V² − a h V)))/2,
+// which is V for e = 1 (docs/stress.md). Without such a deceleration (a h ≥ V or a ≤ 0): e V.
+template <class F>
+F reboundSpeed(F e, F V, F a, float h) {
+    using simd::select;
+    const F ah = a * F(h);
+    const F climb = F(0.5f) * (ah + simd::sqrt(ah * ah + F(4.0f) * e * e * (V * V - ah * V)));
+    return select(ah > F(0.0f), select(V > ah, climb, e * V), e * V);
+}
+
+// Hecker's bounce, once per step after the substeps: λn += -(v_rel·n − rebound) / K, λn ≥ 0, at
+// each point whose approach (v_rel·n before solving) was faster than the restitution threshold and
+// that pushed this step (λn,max > 0), for constraints with restitution; the other lanes apply
+// nothing. dvA, dvB: each body's velocity change per substep from its forces, whose pull along n
+// is the deceleration of the rebound.
+template <class F>
+void restituteContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, Vec2T<F> dvA, Vec2T<F> dvB, const StepContext& ctx) {
+    using simd::max;
+    using simd::select;
+    const simd::MaskOf<F> elastic = c.restitution != F(0.0f);
+    const F deceleration = F(-static_cast<float>(ctx.substeps)) * dot(dvB - dvA, c.normal) * F(ctx.invH);
+    for (ContactPointRows<F>& cp : c.points) {
+        const simd::MaskOf<F> slow = cp.relativeVelocity > F(-ctx.restitutionThreshold);
+        const simd::MaskOf<F> pushed = cp.maxNormalImpulse != F(0.0f);
+        const auto ifBouncing = [&](F value, F otherwise) {
+            return select(slow, otherwise, select(pushed, select(elastic, value, otherwise), otherwise));
+        };
+        const Vec2T<F> rA = cp.anchorA, rB = cp.anchorB;
+        const F vn = dot(relativeVelocity(a, b, rA, rB), c.normal);
+        const F rebound = reboundSpeed(c.restitution, -cp.relativeVelocity, deceleration, ctx.h);
+        const F newImpulse = max(cp.normalImpulse + -cp.normalMass * (vn - rebound), F(0.0f));
+        const F impulse = ifBouncing(newImpulse - cp.normalImpulse, F(0.0f));
+        cp.normalImpulse = ifBouncing(newImpulse, cp.normalImpulse);
+        cp.maxNormalImpulse = ifBouncing(max(cp.maxNormalImpulse, impulse), cp.maxNormalImpulse);
+        applyImpulse(c, a, b, rA, rB, impulse * c.normal);
+    }
+}
+
 // ContactRows<float> is nothing but floats, and ContactRows<F> of an N-lane F is the same fields as
 // N floats each, in the same order: field i of lane l is float i·N + l of the rows.
 constexpr std::size_t rowFloats = sizeof(ContactRows<float>) / sizeof(float);
 static_assert(std::is_standard_layout_v<ContactRows<float>> && std::is_standard_layout_v<ContactRows<simd::Float4>>);
 static_assert(sizeof(ContactRows<float>) == rowFloats * sizeof(float) &&
               sizeof(ContactRows<simd::Float4>) == rowFloats * sizeof(simd::Float4) && rowFloats >= 4);
+
+// Whether any lane of a block's rows (rowData(), `lanes` wide) has restitution: blocks without
+// any skip the restitution pass, gathers and all.
+inline bool anyElastic(const float* rows, int lanes) {
+    const float* restitution = rows + offsetof(ContactRows<float>, restitution) / sizeof(float) * static_cast<std::size_t>(lanes);
+    for (int lane = 0; lane < lanes; ++lane)
+        if (restitution[lane] != 0.0f) return true;
+    return false;
+}
 
 // Four constraints of one graph colour (no two share a dynamic body) as the lanes of one row set.
 struct ContactBlock {
@@ -175,6 +225,7 @@ int chooseContactLanes();
 // packContactRows8 packs eight constraints' rows into a block's lanes; contactRows8 is one pass
 // over blocks [begin, end), as contactRows is over four-lane blocks.
 void packContactRows8(const ContactRows<float>* const (&lanes)[8], ContactBlock8& block);
-void contactRows8(ContactBlock8* blocks, int begin, int end, BodyState* states, const StepContext& ctx, RowPass pass);
+void contactRows8(ContactBlock8* blocks, int begin, int end, BodyState* states, const SubstepForces* forces, const StepContext& ctx,
+                  RowPass pass);
 
 }  // namespace perpdot

@@ -1,11 +1,13 @@
 // Float4: four float lanes for the wide contact and joint solvers. SSE2 on x86-64; elsewhere, or when
 // PERPDOT_NO_SIMD is defined, a plain struct of four floats with the same semantics.
 //
-// Only exactly rounded IEEE operations are offered (+, −, ×, ÷, negation, min, max, compare and
+// Only exactly rounded IEEE operations are offered (+, −, ×, ÷, √, negation, min, max, compare and
 // select: what the contact and joint rows use): no FMA and no approximate reciprocal, so every lane computes
 // bit for bit what the scalar `float` code computes. The float overloads of min, max and select below give the scalar
 // (1-lane) case the very same semantics, so one template serves both.
 #pragma once
+
+#include <cmath>
 
 #if !defined(PERPDOT_NO_SIMD) && (defined(__SSE2__) || defined(_M_X64))
 #define PERPDOT_SSE2 1
@@ -22,6 +24,7 @@ namespace perpdot::simd {
 inline float min(float a, float b) { return a < b ? a : b; }
 inline float max(float a, float b) { return a > b ? a : b; }
 inline float select(bool mask, float ifTrue, float ifFalse) { return mask ? ifTrue : ifFalse; }
+inline float sqrt(float a) { return std::sqrt(a); }
 
 #ifdef PERPDOT_SSE2
 
@@ -53,6 +56,7 @@ struct Float4 {
 
 inline Float4 min(Float4 a, Float4 b) { return Float4(_mm_min_ps(a.v, b.v)); }
 inline Float4 max(Float4 a, Float4 b) { return Float4(_mm_max_ps(a.v, b.v)); }
+inline Float4 sqrt(Float4 a) { return Float4(_mm_sqrt_ps(a.v)); }
 inline Float4 select(Mask4 mask, Float4 ifTrue, Float4 ifFalse) {
     return Float4(_mm_or_ps(_mm_and_ps(mask.m, ifTrue.v), _mm_andnot_ps(mask.m, ifFalse.v)));
 }
@@ -113,6 +117,7 @@ struct Float4 {
 
 inline Float4 min(Float4 a, Float4 b) { return Float4::lanewise(a, b, [](float x, float y) { return min(x, y); }); }
 inline Float4 max(Float4 a, Float4 b) { return Float4::lanewise(a, b, [](float x, float y) { return max(x, y); }); }
+inline Float4 sqrt(Float4 a) { return Float4::lanewise(a, a, [](float x, float) { return std::sqrt(x); }); }
 inline Float4 select(Mask4 mask, Float4 ifTrue, Float4 ifFalse) {
     Float4 r;
     for (int i = 0; i < 4; ++i) r.v[i] = mask.m[i] ? ifTrue.v[i] : ifFalse.v[i];

@@ -23,20 +23,25 @@ void SolverStages::build(const World::Impl& w) {
     auto add = [&](Work work, RowPass pass, int color, int units, int unitsPerItem) {
         if (units > 0) stages_.push_back({work, pass, color, units, unitsPerItem});
     };
-    auto rows = [&](RowPass pass) {
-        for (int color = 0; color < GraphColoring::overflow; ++color)
-            add(Work::Joints, pass, color, jointUnitCount(w, color), jointUnitsPerItem);
-        add(Work::SerialJoints, pass, 0, serialJointCount(w) > 0 ? 1 : 0, 1);
+    auto contactRows = [&](RowPass pass) {
         for (int color = 0; color < GraphColoring::overflow; ++color)
             add(Work::Contacts, pass, color, contactBlockCount(w, color), contactsPerItem / w.scratch.contactLanes);
         add(Work::SerialContacts, pass, 0, w.scratch.overflowConstraints.empty() ? 0 : 1, 1);
         add(Work::ContactGroups, pass, 0, w.scratch.contactGroups.start.size() > 1 ? 1 : 0, 1);
+    };
+    auto rows = [&](RowPass pass) {
+        for (int color = 0; color < GraphColoring::overflow; ++color)
+            add(Work::Joints, pass, color, jointUnitCount(w, color), jointUnitsPerItem);
+        add(Work::SerialJoints, pass, 0, serialJointCount(w) > 0 ? 1 : 0, 1);
+        contactRows(pass);
     };
     add(Work::SubstepForces, RowPass::WarmStart, 0, bodies, bodiesPerItem);
     rows(RowPass::WarmStart);
     rows(RowPass::Solve);
     add(Work::IntegratePositions, RowPass::WarmStart, 0, bodies, bodiesPerItem);
     rows(RowPass::Relax);
+    substepStages_ = stages_.size();
+    contactRows(RowPass::Restitution);
 }
 
 void SolverStages::execute(World::Impl& w, const StepContext& ctx, const SolverStage& stage, int begin, int end) const {
@@ -52,41 +57,45 @@ void SolverStages::execute(World::Impl& w, const StepContext& ctx, const SolverS
     }
 }
 
-// One worker's walk through every stage of every substep: claim items until none is left, then
-// wait for the items other workers claimed.
+// One worker's walk through every stage of every substep, then the stages after them: claim items
+// until none is left, then wait for the items other workers claimed.
 void SolverStages::participate(World::Impl& w, const StepContext& ctx, int worker, int workerCount) {
     const size_t count = stages_.size();
-    for (int substep = 0; substep < ctx.substeps; ++substep) {
-        for (size_t s = 0; s < count; ++s) {
-            const SolverStage& stage = stages_[s];
-            Sync& sync = sync_[static_cast<size_t>(substep) * count + s];
-            std::atomic<int>* claims = &claims_[static_cast<size_t>(firstClaim_[s])];
-            const int items = stage.items();
-            auto tryItem = [&](int item) {
-                int expected = substep;
-                if (claims[item].load(std::memory_order_relaxed) != substep ||
-                    !claims[item].compare_exchange_strong(expected, substep + 1, std::memory_order_relaxed))
-                    return;
-                const int begin = item * stage.unitsPerItem;
-                execute(w, ctx, stage, begin, std::min(begin + stage.unitsPerItem, stage.units));
-                sync.done.fetch_add(1, std::memory_order_release);
-            };
-            const int start = static_cast<int>(static_cast<int64_t>(items) * worker / workerCount);
-            for (int item = start; item < items; ++item) tryItem(item);
-            for (int item = start - 1; item >= 0; --item) tryItem(item);
-            for (int spins = 0; sync.done.load(std::memory_order_acquire) < items; ++spins)
-                if (spins > 100) std::this_thread::yield();
-        }
-    }
+    // Stage s in round `round` (a substep, or ctx.substeps for the stages after them), whose items
+    // the round before left claimed `claimed` times.
+    auto walk = [&](int round, size_t s, int claimed) {
+        const SolverStage& stage = stages_[s];
+        Sync& sync = sync_[static_cast<size_t>(round) * count + s];
+        std::atomic<int>* claims = &claims_[static_cast<size_t>(firstClaim_[s])];
+        const int items = stage.items();
+        auto tryItem = [&](int item) {
+            int expected = claimed;
+            if (claims[item].load(std::memory_order_relaxed) != claimed ||
+                !claims[item].compare_exchange_strong(expected, claimed + 1, std::memory_order_relaxed))
+                return;
+            const int begin = item * stage.unitsPerItem;
+            execute(w, ctx, stage, begin, std::min(begin + stage.unitsPerItem, stage.units));
+            sync.done.fetch_add(1, std::memory_order_release);
+        };
+        const int start = static_cast<int>(static_cast<int64_t>(items) * worker / workerCount);
+        for (int item = start; item < items; ++item) tryItem(item);
+        for (int item = start - 1; item >= 0; --item) tryItem(item);
+        for (int spins = 0; sync.done.load(std::memory_order_acquire) < items; ++spins)
+            if (spins > 100) std::this_thread::yield();
+    };
+    for (int substep = 0; substep < ctx.substeps; ++substep)
+        for (size_t s = 0; s < substepStages_; ++s) walk(substep, s, substep);
+    for (size_t s = substepStages_; s < count; ++s) walk(ctx.substeps, s, 0);
 }
 
 void SolverStages::run(World::Impl& w, const StepContext& ctx) {
     if (w.workers.count() == 1) {
         for (int substep = 0; substep < ctx.substeps; ++substep)
-            for (const SolverStage& stage : stages_) execute(w, ctx, stage, 0, stage.units);
+            for (size_t s = 0; s < substepStages_; ++s) execute(w, ctx, stages_[s], 0, stages_[s].units);
+        for (size_t s = substepStages_; s < stages_.size(); ++s) execute(w, ctx, stages_[s], 0, stages_[s].units);
         return;
     }
-    const size_t syncCount = stages_.size() * static_cast<size_t>(ctx.substeps);
+    const size_t syncCount = stages_.size() * static_cast<size_t>(ctx.substeps + 1);  // a round more: the stages after the substeps
     if (syncCount > syncCapacity_) {  // grows with the colours in use, then stays
         syncCapacity_ = std::max(syncCount, 2 * syncCapacity_);
         sync_ = std::make_unique<Sync[]>(syncCapacity_);

@@ -30,7 +30,8 @@ struct SolverStage {
 
 class SolverStages {
 public:
-    // The stages of one substep for this step's colours (after prepareJoints and prepareContacts).
+    // The stages of one substep for this step's colours (after prepareJoints and prepareContacts),
+    // and restitution's, run once after the substeps.
     void build(const World::Impl& w);
     // Every substep's stages, on the world's workers.
     void run(World::Impl& w, const StepContext& ctx);
@@ -42,7 +43,9 @@ private:
     void execute(World::Impl& w, const StepContext& ctx, const SolverStage& stage, int begin, int end) const;
     void participate(World::Impl& w, const StepContext& ctx, int worker, int workerCount);
 
+    // stages_[0, substepStages_) run every substep, the rest (restitution) once after the last.
     std::vector<SolverStage> stages_;
+    size_t substepStages_ = 0;
     std::vector<int> firstClaim_;  // by stage: its first item's claim in claims_
     std::unique_ptr<Sync[]> sync_;
     size_t syncCapacity_ = 0;

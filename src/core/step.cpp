@@ -47,13 +47,13 @@ void World::step(float timeStep) {
     integrateVelocities(w, ctx);
     prepareJoints(w, ctx);  // prepare: effective masses, anchors, warm-start impulses
     prepareContacts(w, ctx);
-    // Per substep: its forces, warm start, solve with soft bias, x += hs v, relax without bias
-    // (solver_stages.hpp: the rows colour by colour, on the workers).
+    // Per substep: its forces, warm start, solve with soft bias, x += hs v, relax without bias;
+    // then restitution, Hecker's bounce, once (solver_stages.hpp: the rows colour by colour, on
+    // the workers).
     w.scratch.solverStages.build(w);
     w.scratch.solverStages.run(w, ctx);
-    projectJoints(w);  // project: the anchors of revolute trees meet again
-    storeContactImpulses(w);   // store: impulses for the next step's warm start, from the lanes
-    applyRestitution(w, ctx);  // restitution: Hecker's bounce, once per step
+    projectJoints(w);         // project: the anchors of revolute trees meet again
+    storeContactImpulses(w);  // store: impulses for the next step's warm start, from the lanes
     storeJointImpulses(w, ctx);
     reportHitEvents(w);
     finalizeBodies(w, timeStep);  // positions back into the bodies; continuous collision

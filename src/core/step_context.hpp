@@ -32,7 +32,7 @@ inline Rot integrateRotation(Rot q, float angle) {
 }
 
 // The three passes of the rows in a substep: warm start, solve with soft bias, relax without it.
-enum class RowPass : uint8_t { WarmStart, Solve, Relax };
+enum class RowPass : uint8_t { WarmStart, Solve, Relax, Restitution };  // Restitution: contacts only, after the substeps
 
 struct StepContext {
     float h = 0;       // the whole step

@@ -60,7 +60,6 @@ struct StepScratch {
     std::vector<uint8_t> bodyMotion;    // finalizeBodies scratch, by awake body: its Motion (integrate.cpp)
     std::vector<SubstepForces> substepForces;  // of states[i]
     std::vector<ContactConstraint> constraints;
-    std::vector<int> bouncingConstraints;        // the constraints with restitution, for its pass
     std::vector<std::array<int, 2>> constraintSlots;  // by constraint: its bodies' solver slots, for colouring
     GraphColoring contactColoring;               // colours of `constraints` (graph_color.hpp)
     int contactLanes = chooseContactLanes();     // constraints per block: 4, or 8 with AVX2

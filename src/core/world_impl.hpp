@@ -74,10 +74,9 @@ void prepareContactBlocks(World::Impl& world);
 int contactBlockCount(const World::Impl& world, int color);
 void contactRows(World::Impl& world, const StepContext& ctx, RowPass pass, int color, int begin, int end);
 void serialContactRows(World::Impl& world, const StepContext& ctx, RowPass pass);
-// The accumulated impulses into the contacts (the blocks' straight from their lanes), then
-// restitution on them: `constraints` keeps only what the step prepared.
+// The accumulated impulses, restitution's included, into the contacts (the blocks' straight from
+// their lanes).
 void storeContactImpulses(World::Impl& world);
-void applyRestitution(World::Impl& world, const StepContext& ctx);
 void reportHitEvents(World::Impl& world);
 
 }  // namespace perpdot

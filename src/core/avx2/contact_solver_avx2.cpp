@@ -70,29 +70,50 @@ void packContactRows8(const ContactRows<float>* const (&lanes)[8], ContactBlock8
 
 namespace {
 
-// `rows(blockRows, a, b)` on blocks [begin, end).
-template <class Rows>
-void forBlocks(ContactBlock8* blocks, int begin, int end, BodyState* states, Rows rows) {
+// `rows(blockRows, a, b, block)` on the blocks of [begin, end) that `needs` (all by default).
+template <class Rows, class Needs = bool (*)(const ContactBlock8&)>
+void forBlocks(ContactBlock8* blocks, int begin, int end, BodyState* states, Rows rows,
+               Needs needs = [](const ContactBlock8&) { return true; }) {
     for (int k = begin; k < end; ++k) {
         ContactBlock8& block = blocks[k];
+        if (!needs(block)) continue;
         BodyLanes<Float8> a = gatherBodies8(states, block.bodyA);
         BodyLanes<Float8> b = gatherBodies8(states, block.bodyB);
-        rows(*reinterpret_cast<ContactRows<Float8>*>(block.rows), a, b);
+        rows(*reinterpret_cast<ContactRows<Float8>*>(block.rows), a, b, block);
         scatterVelocities8(states, block.bodyA, a);
         scatterVelocities8(states, block.bodyB, b);
     }
 }
 
+// The velocity change per substep from its forces of eight slots' bodies, as lanes.
+Vec2T<Float8> substepVelocityChange8(const SubstepForces* forces, const int (&slots)[8]) {
+    alignas(32) float x[8], y[8];
+    for (int lane = 0; lane < 8; ++lane) {
+        x[lane] = forces[slots[lane]].dv.x;
+        y[lane] = forces[slots[lane]].dv.y;
+    }
+    return {Float8(_mm256_load_ps(x)), Float8(_mm256_load_ps(y))};
+}
+
 }  // namespace
 
-void contactRows8(ContactBlock8* blocks, int begin, int end, BodyState* states, const StepContext& ctx, RowPass pass) {
+void contactRows8(ContactBlock8* blocks, int begin, int end, BodyState* states, const SubstepForces* forces, const StepContext& ctx,
+                  RowPass pass) {
     using Lanes = BodyLanes<Float8>;
+    using Rows = ContactRows<Float8>;
     if (pass == RowPass::WarmStart)
-        forBlocks(blocks, begin, end, states, [](ContactRows<Float8>& c, Lanes& a, Lanes& b) { warmStartContact(c, a, b); });
+        forBlocks(blocks, begin, end, states, [](Rows& c, Lanes& a, Lanes& b, const ContactBlock8&) { warmStartContact(c, a, b); });
     else if (pass == RowPass::Solve)
-        forBlocks(blocks, begin, end, states, [&](ContactRows<Float8>& c, Lanes& a, Lanes& b) { solveContact<true>(c, a, b, ctx); });
+        forBlocks(blocks, begin, end, states, [&](Rows& c, Lanes& a, Lanes& b, const ContactBlock8&) { solveContact<true>(c, a, b, ctx); });
+    else if (pass == RowPass::Relax)
+        forBlocks(blocks, begin, end, states, [&](Rows& c, Lanes& a, Lanes& b, const ContactBlock8&) { solveContact<false>(c, a, b, ctx); });
     else
-        forBlocks(blocks, begin, end, states, [&](ContactRows<Float8>& c, Lanes& a, Lanes& b) { solveContact<false>(c, a, b, ctx); });
+        forBlocks(
+            blocks, begin, end, states,
+            [&](Rows& c, Lanes& a, Lanes& b, const ContactBlock8& block) {
+                restituteContact(c, a, b, substepVelocityChange8(forces, block.bodyA), substepVelocityChange8(forces, block.bodyB), ctx);
+            },
+            [](const ContactBlock8& block) { return anyElastic(block.rows, ContactBlock8::lanes); });
 }
 
 }  // namespace perpdot
