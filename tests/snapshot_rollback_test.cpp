@@ -2,7 +2,7 @@
 // netcode does every frame) must see the same future as a run that never snapshotted — state hash
 // and every event, each step — at over 1,000 restore points drawn with a fixed seed across every
 // built-in scene (scene actions, behaviours and scripts included) and test::jointZoo() (every
-// joint type, sensor, bullet). Between running ahead and restoring, the world is sometimes
+// joint type, the filter joint added here, sensor, bullet). Between running ahead and restoring, the world is sometimes
 // disturbed (a body destroyed, another created), so restore must replace all of it.
 #include <cstdint>
 #include <cstdio>
@@ -263,7 +263,18 @@ TEST(SnapshotRollback, EveryRestorePointReplaysTheSameFuture) {
                       coverage);
         if (HasFatalFailure()) return;
     }
-    checkRollback("joint_zoo", [] { return std::make_unique<SceneRun>(test::jointZoo()); }, {240, 60}, rng, coverage);
+    // The zoo, plus the filter joint (not in the scene format): two overlapping boxes that fall
+    // through each other onto the ground.
+    const auto zooWithFilter = [] {
+        World world = test::jointZoo();
+        const BodyId a = world.createBody({.type = BodyType::Dynamic, .position = {24.0f, 3.0f}});
+        const BodyId b = world.createBody({.type = BodyType::Dynamic, .position = {24.3f, 3.4f}, .angle = 0.3f});
+        world.createShape(a, {}, makeBox(0.5f, 0.5f));
+        world.createShape(b, {}, makeBox(0.5f, 0.5f));
+        world.createJoint(FilterJointDef{.bodyA = a, .bodyB = b});
+        return std::make_unique<SceneRun>(std::move(world));
+    };
+    checkRollback("joint_zoo", zooWithFilter, {240, 60}, rng, coverage);
     EXPECT_GE(coverage.points * pointScale, 1000);
     EXPECT_GT(coverage.withSleepingBodies, 0);
     EXPECT_GT(coverage.withEvents, 0);
