@@ -134,20 +134,20 @@ void layOutBlocks(World::Impl& w, const ColorStarts& start, std::vector<Block>& 
 
 }  // namespace
 
-// Colour the constraints in order, then lay them out colour by colour (Box2D v3's solve order:
-// it keeps stacks as stiff as the plain constraint order does), four or eight to a block; overflow
-// last. The lane width changes no result: a colour's constraints share no moving body. The
+// Colour the constraints in order, in the colouring the joints began (prepareJoints: one graph, so
+// a colour's joints and contacts share no moving body either), then lay them out colour by colour
+// (Box2D v3's solve order: it keeps stacks as stiff as the plain constraint order does), four or
+// eight to a block; overflow last. The lane width changes no result: a colour's constraints share no moving body. The
 // constraints of contact groups solved directly (contact_groups.hpp) take no colour.
 void prepareContactBlocks(World::Impl& w) {
     StepScratch& s = w.scratch;
     constexpr int overflow = GraphColoring::overflow;
     const int count = static_cast<int>(s.constraints.size());
-    s.contactColoring.reset(static_cast<int>(s.states.size()));
     s.contactColors.resize(s.constraints.size());
     const std::vector<uint8_t>& direct = s.contactGroups.direct;  // solved by their groups instead
     for (int index = 0; index < count; ++index) {
         const auto [slotA, slotB] = s.constraintSlots[index];
-        s.contactColors[index] = direct[index] ? overflow : s.contactColoring.assign(slotA, slotB);
+        s.contactColors[index] = direct[index] ? overflow : s.coloring.assign(slotA, slotB);
     }
     const ColorStarts start = sortByColor(s.contactColors, s.contactOrder);
 #ifdef PERPDOT_AVX2

@@ -196,16 +196,19 @@ void prepareJoints(World::Impl& w, const StepContext& ctx) {
             prepareJoint(d.prepared[k], w, s.joints[index], ctx);
         });
 
-    d.coloring.reset(static_cast<int>(w.scratch.states.size()));
+    // One colouring for joints and contacts (the constraint graph): joints first, contacts then
+    // take the colours their bodies' joints left (prepareContactBlocks).
+    GraphColoring& coloring = w.scratch.coloring;
+    coloring.reset(static_cast<int>(w.scratch.states.size()));
+    // Joints of revolute trees take no colour: they are solved directly (joint_tree.hpp).
+    findRevoluteTrees(d.trees, d.prepared, static_cast<int>(w.scratch.states.size()));
     std::array<int, overflow + 1> laneCount{}, scalarCount{};
     for (int k = 0; k < count; ++k) {
+        if (d.trees.inTree[k]) continue;
         const PreparedJoint& j = d.prepared[k];
-        d.colors[k] = d.coloring.assign(j.indexA, j.indexB);
+        d.colors[k] = coloring.assign(j.indexA, j.indexB);
         ++(inLanes(d.colors[k], j) ? laneCount[d.colors[k]] : scalarCount[d.colors[k]]);
     }
-    // Joints of revolute trees leave the colours: they are solved directly (joint_tree.hpp).
-    findRevoluteTrees(d.trees, d.prepared, static_cast<int>(w.scratch.states.size()));
-    for (int k : d.trees.joints) --(inLanes(d.colors[k], d.prepared[k]) ? laneCount[d.colors[k]] : scalarCount[d.colors[k]]);
 
     for (int color = 0; color <= overflow; ++color) {
         d.blockStart[color + 1] = d.blockStart[color] + (laneCount[color] + 3) / 4;

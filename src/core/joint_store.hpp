@@ -140,8 +140,7 @@ struct JointScratch {
     // Revolute trees (joint_tree.hpp): solved directly after the colours, outside them.
     RevoluteTrees trees;
     // Scratch of prepareJoints, kept to reuse its memory.
-    GraphColoring coloring;
-    std::vector<int> colors;  // of prepared[k]
+    std::vector<int> colors;  // of prepared[k], from the step scratch's one colouring
     std::vector<std::array<int, 4>> blockLanes;  // by revolute block: its lanes' k in prepared, -1 empty
     std::vector<int> breaking;  // breakJoints: the joints over their break limits, in store order
 };

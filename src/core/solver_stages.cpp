@@ -23,17 +23,18 @@ void SolverStages::build(const World::Impl& w) {
     auto add = [&](Work work, RowPass pass, int color, int units, int unitsPerItem) {
         if (units > 0) stages_.push_back({work, pass, color, units, unitsPerItem});
     };
-    auto contactRows = [&](RowPass pass) {
-        for (int color = 0; color < GraphColoring::overflow; ++color)
+    // Colour by colour, the colour's joints and then its contacts (one constraint graph: they share
+    // no moving body); then the constraints no colour took, one by one: joints (and revolute
+    // trees), contacts, contact groups. Restitution has the contact stages only.
+    auto rows = [&](RowPass pass) {
+        const bool joints = pass != RowPass::Restitution;
+        for (int color = 0; color < GraphColoring::overflow; ++color) {
+            if (joints) add(Work::Joints, pass, color, jointUnitCount(w, color), jointUnitsPerItem);
             add(Work::Contacts, pass, color, contactBlockCount(w, color), contactsPerItem / w.scratch.contactLanes);
+        }
+        if (joints) add(Work::SerialJoints, pass, 0, serialJointCount(w) > 0 ? 1 : 0, 1);
         add(Work::SerialContacts, pass, 0, w.scratch.overflowConstraints.empty() ? 0 : 1, 1);
         add(Work::ContactGroups, pass, 0, w.scratch.contactGroups.start.size() > 1 ? 1 : 0, 1);
-    };
-    auto rows = [&](RowPass pass) {
-        for (int color = 0; color < GraphColoring::overflow; ++color)
-            add(Work::Joints, pass, color, jointUnitCount(w, color), jointUnitsPerItem);
-        add(Work::SerialJoints, pass, 0, serialJointCount(w) > 0 ? 1 : 0, 1);
-        contactRows(pass);
     };
     add(Work::SubstepForces, RowPass::WarmStart, 0, bodies, bodiesPerItem);
     rows(RowPass::WarmStart);
@@ -41,7 +42,7 @@ void SolverStages::build(const World::Impl& w) {
     add(Work::IntegratePositions, RowPass::WarmStart, 0, bodies, bodiesPerItem);
     rows(RowPass::Relax);
     substepStages_ = stages_.size();
-    contactRows(RowPass::Restitution);
+    rows(RowPass::Restitution);
 }
 
 void SolverStages::execute(World::Impl& w, const StepContext& ctx, const SolverStage& stage, int begin, int end) const {

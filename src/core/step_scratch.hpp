@@ -61,7 +61,7 @@ struct StepScratch {
     std::vector<SubstepForces> substepForces;  // of states[i]
     std::vector<ContactConstraint> constraints;
     std::vector<std::array<int, 2>> constraintSlots;  // by constraint: its bodies' solver slots, for colouring
-    GraphColoring contactColoring;               // colours of `constraints` (graph_color.hpp)
+    GraphColoring coloring;  // one constraint graph: the colours of joints, then of `constraints` (graph_color.hpp)
     int contactLanes = chooseContactLanes();     // constraints per block: 4, or 8 with AVX2
     std::vector<ContactBlock> contactBlocks;     // four constraints of one colour each, in colour order,
     std::vector<ContactBlock8> contactBlocks8;   // or eight (contactLanes = 8)
