@@ -83,7 +83,7 @@ TEST(ContactSolverWide, FourLanesEqualFourScalarSolves) {
             restituteContact(scalarRows[lane], scalar[bodyA[lane]], scalar[bodyB[lane]], dv[bodyA[lane]], dv[bodyB[lane]], ctx);
 
         ContactRows<simd::Float4> wide;
-        packContactRows({&rows[0], &rows[1], &rows[2], &rows[3]}, wide);
+        packLanes<ContactRows>({&rows[0], &rows[1], &rows[2], &rows[3]}, wide);
         for (const bool useBias : {true, false}) {
             BodyLanes<simd::Float4> a = gatherBodies(states, bodyA), b = gatherBodies(states, bodyB);
             warmStartContact(wide, a, b);

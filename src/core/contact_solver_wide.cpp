@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "core/pack_lanes.hpp"
 #include "core/world_impl.hpp"
 
 namespace perpdot {
@@ -29,17 +30,6 @@ int chooseContactLanes() {
     const char* asked = std::getenv("PERPDOT_CONTACT_LANES");
     if (asked != nullptr && std::strcmp(asked, "4") == 0) return 4;
     return contactLanes8Available() ? 8 : 4;
-}
-
-void packContactRows(const ContactRows<float>* const (&lanes)[4], ContactRows<Float4>& packed) {
-    auto* out = reinterpret_cast<Float4*>(&packed);
-    for (std::size_t k = 0; k < rowFloats; k += 4) {
-        const std::size_t first = std::min(k, rowFloats - 4);  // the last run overlaps the one before
-        Float4 run[4];
-        for (int i = 0; i < 4; ++i) run[i] = Float4::loadBytes(reinterpret_cast<const float*>(lanes[i]) + first);
-        simd::transpose(run);
-        std::copy(run, run + 4, out + first);
-    }
 }
 
 namespace {
@@ -158,7 +148,7 @@ void prepareContactBlocks(World::Impl& w) {
     else
 #endif
         layOutBlocks(w, start, s.contactBlocks, [](const ContactRows<float>* const (&lanes)[4], ContactBlock& block) {
-            packContactRows(lanes, block.rows);
+            packLanes(lanes, block.rows);
         });
     s.overflowConstraints.clear();
     for (int position = start[overflow]; position < count; ++position)

@@ -14,6 +14,7 @@
 
 #include "collide/collision.hpp"
 #include "core/body_lanes.hpp"
+#include "core/pack_lanes.hpp"
 
 namespace perpdot {
 
@@ -179,11 +180,8 @@ void restituteContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, Vec2T
 }
 
 // ContactRows<float> is nothing but floats, and ContactRows<F> of an N-lane F is the same fields as
-// N floats each, in the same order: field i of lane l is float i·N + l of the rows.
-constexpr std::size_t rowFloats = sizeof(ContactRows<float>) / sizeof(float);
-static_assert(std::is_standard_layout_v<ContactRows<float>> && std::is_standard_layout_v<ContactRows<simd::Float4>>);
-static_assert(sizeof(ContactRows<float>) == rowFloats * sizeof(float) &&
-              sizeof(ContactRows<simd::Float4>) == rowFloats * sizeof(simd::Float4) && rowFloats >= 4);
+// N floats each, in the same order: field i of lane l is float i·N + l of the rows (pack_lanes.hpp).
+constexpr std::size_t rowFloats = rowFloatsOf<ContactRows>();
 
 // Whether any lane of a block's rows (rowData(), `lanes` wide) has restitution: blocks without
 // any skip the restitution pass, gathers and all.
@@ -213,8 +211,6 @@ struct ContactBlock8 {
     const float* rowData() const { return rows; }
 };
 
-// Four constraints' rows as lanes (an empty lane: a default ContactRows, which moves nothing).
-void packContactRows(const ContactRows<float>* const (&lanes)[4], ContactRows<simd::Float4>& packed);
 
 // The lane width of a new world's contact blocks: 8 where contactLanes8Available() (this build
 // has the AVX2 rows and the CPU runs AVX2), else 4; the environment's PERPDOT_CONTACT_LANES=4 picks 4.
