@@ -27,6 +27,6 @@ float staticImpact(const World::Impl& w, int body, const collide::Sweep& sweep);
 // Bullets against moving bodies (continuous_impacts.cpp): the step scratch's `movers` holds the
 // fast bodies of this step (bullets not yet synchronised); finds their impacts in time order,
 // resolves each with Hecker's collision impulse and moves the pair on for the rest of the step.
-void solveMovingImpacts(World::Impl& w, float h);
+void solveMovingImpacts(World::Impl& w, const StepContext& ctx);
 
 }  // namespace perpdot

@@ -186,7 +186,8 @@ void pairImpact(const World::Impl& w, MoverPair& pair, float t) {
 
 // The impact of the pair at step time t: Hecker's impulse at the manifold's points, the pair
 // moved back to first touch, and new paths for the rest of the step.
-void resolveImpact(World::Impl& w, const MoverPair& pair, float t, float h) {
+void resolveImpact(World::Impl& w, const MoverPair& pair, float t, const StepContext& ctx) {
+    const float h = ctx.h;
     std::vector<Mover>& movers = w.scratch.movers;
     Mover& a = movers[pair.a];
     Mover& b = movers[pair.b];
@@ -242,10 +243,9 @@ void resolveImpact(World::Impl& w, const MoverPair& pair, float t, float h) {
             p.tangentImpulse = tangential;
         }
     // The integration's speed limits hold here too (speed_limits.hpp).
-    const float maxSpin = maxAngularSpeed(static_cast<float>(w.def.substeps) / h);
     for (Mover* m : {&a, &b}) {
         m->v = clampSpeed(m->v, w.def.maxLinearSpeed);
-        m->w = clampAngularSpeed(m->w, maxSpin);
+        m->w = clampAngularSpeed(m->w, maxAngularSpeed(ctx.invHs));
     }
     // Back along the old paths to the first touch (not before either path began), then on with the
     // new velocities: c1 = c(t') + (1 - t') h v, θ1 = θ(t') + (1 - t') h ω.
@@ -260,7 +260,7 @@ void resolveImpact(World::Impl& w, const MoverPair& pair, float t, float h) {
 
 }  // namespace
 
-void solveMovingImpacts(World::Impl& w, float h) {
+void solveMovingImpacts(World::Impl& w, const StepContext& ctx) {
     collectMoverPairs(w);
     std::vector<Mover>& movers = w.scratch.movers;
     std::vector<MoverPair>& moverPairs = w.scratch.moverPairs;
@@ -294,7 +294,7 @@ void solveMovingImpacts(World::Impl& w, float h) {
             m.staticTime = 1.0f;
         } else {
             const MoverPair& p = moverPairs[firstPair];
-            resolveImpact(w, p, now, h);
+            resolveImpact(w, p, now, ctx);
             changedA = p.a, changedB = p.b;
         }
         for (MoverPair& p : moverPairs)

@@ -103,12 +103,12 @@ void integratePositions(World::Impl& w, const StepContext& ctx, int begin, int e
 // the other bodies, and fast bodies are swept from their step-start pose against static shapes;
 // bullets wait until every other body is final, then meet moving bodies too
 // (continuous_impacts.cpp).
-void finalizeBodies(World::Impl& w, float h) {
+void finalizeBodies(World::Impl& w, const StepContext& ctx) {
     enum Motion : uint8_t { Moved, MovedInside, Fast, NonFinite };  // MovedInside: its proxies stay as they are
     // The solver's velocities, within the speed limits (restitution comes after the last clamp of
     // integratePositions), and the pose (c1, a1) into the body.
     const float maxLinearSpeed = w.def.maxLinearSpeed;
-    const float maxSpin = maxAngularSpeed(static_cast<float>(w.def.substeps) / h);
+    const float maxSpin = maxAngularSpeed(ctx.invHs);
     const auto moveTo = [&](Body& b, const BodyState& s, Vec2 c1, float a1) {
         b.v = clampSpeed(s.v, maxLinearSpeed);
         b.w = clampAngularSpeed(s.w, maxSpin);
@@ -170,7 +170,7 @@ void finalizeBodies(World::Impl& w, float h) {
         w.scratch.movers.back().c1 = b.center;
         w.scratch.movers.back().a1 = b.angle;
     }
-    if (anyBullet && !w.scratch.movers.empty()) solveMovingImpacts(w, h);
+    if (anyBullet && !w.scratch.movers.empty()) solveMovingImpacts(w, ctx);
     for (Body& b : w.bodies.slots()) {
         b.force = {};
         b.torque = 0.0f;

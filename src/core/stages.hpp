@@ -21,7 +21,7 @@ void applySubstepForces(World::Impl& w, int begin, int end);
 // Integrate positions: x += hs v, θ += hs ω, solver slots [begin, end).
 void integratePositions(World::Impl& w, const StepContext& ctx, int begin, int end);
 // Store the solver state in the bodies and sweep the fast ones (continuous collision).
-void finalizeBodies(World::Impl& w, float h);
+void finalizeBodies(World::Impl& w, const StepContext& ctx);
 // Sleep: islands of touching contacts and joints whose every body was still for timeToSleep fall
 // asleep as a whole (sleep.cpp).
 void updateSleep(World::Impl& w, float h);

@@ -56,7 +56,7 @@ void World::step(float timeStep) {
     storeContactImpulses(w);  // store: impulses for the next step's warm start, from the lanes
     storeJointImpulses(w, ctx);
     reportHitEvents(w);
-    finalizeBodies(w, timeStep);  // positions back into the bodies; continuous collision
+    finalizeBodies(w, ctx);  // positions back into the bodies; continuous collision
     breakJoints(w);               // joints whose reaction passed their break limits
 
     updateSleep(w, timeStep);  // sleep: islands at rest
