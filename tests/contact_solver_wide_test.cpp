@@ -77,10 +77,11 @@ TEST(ContactSolverWide, FourLanesEqualFourScalarSolves) {
             }
         }
         // Each body's velocity change per substep from gravity-like forces: the rebound's deceleration.
-        std::vector<Vec2> dv(9);
-        for (int i = 1; i < 9; ++i) dv[i] = {r(-0.02f, 0.02f), r(-0.06f, 0.0f)};
+        std::vector<SubstepForces> forces(9);
+        for (int i = 1; i < 9; ++i) forces[i].dv = {r(-0.02f, 0.02f), r(-0.06f, 0.0f)};
         for (int lane = 0; lane < (emptyLast ? 3 : 4); ++lane)
-            restituteContact(scalarRows[lane], scalar[bodyA[lane]], scalar[bodyB[lane]], dv[bodyA[lane]], dv[bodyB[lane]], ctx);
+            restituteContact(scalarRows[lane], scalar[bodyA[lane]], scalar[bodyB[lane]], substepVelocityChange(forces, bodyA[lane]),
+                             substepVelocityChange(forces, bodyB[lane]), ctx);
 
         ContactRows<simd::Float4> wide;
         packLanes<ContactRows>({&rows[0], &rows[1], &rows[2], &rows[3]}, wide);
@@ -93,12 +94,7 @@ TEST(ContactSolverWide, FourLanesEqualFourScalarSolves) {
             scatterVelocities(states, bodyB, b);
         }
         BodyLanes<simd::Float4> a = gatherBodies(states, bodyA), b = gatherBodies(states, bodyB);
-        const auto lanesOf = [&](const int (&slots)[4]) {
-            float x[4], y[4];
-            for (int lane = 0; lane < 4; ++lane) x[lane] = dv[slots[lane]].x, y[lane] = dv[slots[lane]].y;
-            return Vec2T<simd::Float4>{simd::Float4::load(x), simd::Float4::load(y)};
-        };
-        restituteContact(wide, a, b, lanesOf(bodyA), lanesOf(bodyB), ctx);
+        restituteContact(wide, a, b, substepVelocityChange(forces, bodyA), substepVelocityChange(forces, bodyB), ctx);
         scatterVelocities(states, bodyA, a);
         scatterVelocities(states, bodyB, b);
 

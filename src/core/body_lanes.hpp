@@ -44,4 +44,16 @@ inline void scatterVelocities(std::vector<BodyState>& states, const int (&slots)
     }
 }
 
+// A body's velocity change per substep from its forces (restitution's deceleration), for one
+// solver slot or for four as lanes.
+inline Vec2 substepVelocityChange(const std::vector<SubstepForces>& forces, int slot) { return forces[slot].dv; }
+inline Vec2Lanes<simd::Float4> substepVelocityChange(const std::vector<SubstepForces>& forces, const int (&slots)[4]) {
+    float x[4], y[4];
+    for (int lane = 0; lane < 4; ++lane) {
+        x[lane] = forces[slots[lane]].dv.x;
+        y[lane] = forces[slots[lane]].dv.y;
+    }
+    return {simd::Float4::load(x), simd::Float4::load(y)};
+}
+
 }  // namespace perpdot

@@ -271,10 +271,11 @@ bool solveGroupNormals(World::Impl& w, ContactGroups& g, int group, const StepCo
 void contactGroupRows(World::Impl& w, const StepContext& ctx, RowPass pass) {
     ContactGroups& g = w.scratch.contactGroups;
     if (pass == RowPass::Restitution) {  // the bounce is row by row, as for every constraint
+        const std::vector<SubstepForces>& forces = w.scratch.substepForces;
         for (int index : g.constraints) {
             ContactConstraint& c = w.scratch.constraints[index];
-            const std::vector<SubstepForces>& forces = w.scratch.substepForces;
-            restituteContact(c, w.scratch.states[c.indexA], w.scratch.states[c.indexB], forces[c.indexA].dv, forces[c.indexB].dv, ctx);
+            restituteContact(c, w.scratch.states[c.indexA], w.scratch.states[c.indexB], substepVelocityChange(forces, c.indexA),
+                             substepVelocityChange(forces, c.indexB), ctx);
         }
         return;
     }

@@ -57,7 +57,6 @@ void prepareContact(const World::Impl& w, const StepContext& ctx, ContactConstra
 
     const Vec2 n = contact.normal, t = perp(n);
     const BodyState sa = velocityWithoutContact(w, ctx, c.indexA), sb = velocityWithoutContact(w, ctx, c.indexB);
-
     for (int i = 0; i < contact.pointCount; ++i) {
         const ContactPointState& p = contact.points[i];
         ContactPointRows<float>& cp = c.points[i];

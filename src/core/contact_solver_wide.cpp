@@ -56,17 +56,6 @@ void forContacts(World::Impl& w, int begin, int end, bool overflow, Rows rows,
     }
 }
 
-// The velocity change per substep from its forces of a slot's body, or of four slots' as lanes.
-Vec2 substepVelocityChange(const std::vector<SubstepForces>& forces, int slot) { return forces[slot].dv; }
-Vec2T<Float4> substepVelocityChange(const std::vector<SubstepForces>& forces, const int (&slots)[4]) {
-    float x[4], y[4];
-    for (int lane = 0; lane < 4; ++lane) {
-        x[lane] = forces[slots[lane]].dv.x;
-        y[lane] = forces[slots[lane]].dv.y;
-    }
-    return {Float4::load(x), Float4::load(y)};
-}
-
 void passContacts(World::Impl& w, const StepContext& ctx, RowPass pass, int begin, int end, bool overflow) {
     if (pass == RowPass::WarmStart)
         forContacts(w, begin, end, overflow, [](auto& c, auto& a, auto& b, const auto&, const auto&) { warmStartContact(c, a, b); });
@@ -127,8 +116,9 @@ void layOutBlocks(World::Impl& w, const ColorStarts& start, std::vector<Block>& 
 // Colour the constraints in order, in the colouring the joints began (prepareJoints: one graph, so
 // a colour's joints and contacts share no moving body either), then lay them out colour by colour
 // (Box2D v3's solve order: it keeps stacks as stiff as the plain constraint order does), four or
-// eight to a block; overflow last. The lane width changes no result: a colour's constraints share no moving body. The
-// constraints of contact groups solved directly (contact_groups.hpp) take no colour.
+// eight to a block; overflow last. The lane width changes no result: a colour's constraints share
+// no moving body. The constraints of contact groups solved directly (contact_groups.hpp) take no
+// colour.
 void prepareContactBlocks(World::Impl& w) {
     StepScratch& s = w.scratch;
     constexpr int overflow = GraphColoring::overflow;
