@@ -75,6 +75,36 @@ TEST(Snapshot, CreationAndDestructionAfterRestoreMatch) {
     EXPECT_TRUE(b.isValid(original.bodies[6]));
 }
 
+// A world that has restored reads the next snapshot into the slots of the state it replaced
+// (their shape and proxy lists' memory): nothing of that state may leak into the new one, whether
+// the next snapshot has more slots or fewer, other shapes (a chain's many proxies) or the same.
+TEST(Snapshot, RestoringAgainAndAgainLeavesNothingOfTheReplacedState) {
+    auto stepped = [](const char* scene, int steps) {
+        SceneWorld built = buildWorld(findScene(scene));
+        for (int i = 0; i < steps; ++i) built.step();
+        return built.world.snapshot();
+    };
+    const Bytes pyramid = stepped("pyramid", 60), rain = stepped("rain", 90);
+    World cup;  // a chain: one shape of many children, each its proxy
+    cup.createShape(cup.createBody({}), {}, Chain{{{-4, 4}, {-4, 0}, {0, -1}, {4, 0}, {4, 4}}, false});
+    for (int i = 0; i < 5; ++i)
+        cup.createShape(cup.createBody({.type = BodyType::Dynamic, .position = {-2.0f + static_cast<float>(i), 3}}), {}, Circle{{0, 0}, 0.3f});
+    for (int i = 0; i < 40; ++i) cup.step(1.0f / 60.0f);
+    const Bytes terrain = cup.snapshot();
+    World w;
+    for (const Bytes* saved : {&pyramid, &terrain, &rain, &pyramid, &rain, &terrain, &terrain, &pyramid}) {
+        w.restore(*saved);
+        EXPECT_EQ(w.snapshot(), *saved);
+    }
+    World fresh;
+    fresh.restore(pyramid);
+    for (int i = 0; i < 60; ++i) {
+        w.step(1.0f / 60.0f);
+        fresh.step(1.0f / 60.0f);
+    }
+    EXPECT_EQ(stateHash(w), stateHash(fresh));
+}
+
 TEST(Snapshot, RestoreReplacesTheWorldAndKeepsIdsValid) {
     SceneWorld built = buildWorld(findScene("single_box"));
     for (int i = 0; i < 30; ++i) built.step();

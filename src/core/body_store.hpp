@@ -33,6 +33,14 @@ struct Body {
     int jointCount = 0;    // joints attached (maintained by the joint store)
     int islandNext = -1;   // next body of the island it fell asleep with
 
+    // Body{}, keeping the shape list's memory (Pool::restoreSlots).
+    void resetKeepingMemory() {
+        std::vector<int> keep = std::move(shapes);
+        keep.clear();
+        *this = Body{};
+        shapes = std::move(keep);
+    }
+
     // The origin frame of the pose (θ, c): q = Rot(θ), x = c − R(θ)·localCenter.
     Transform derivedTransform() const {
         const Rot q = Rot::fromAngle(angle);

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <span>
 #include <vector>
 
 namespace perpdot {
@@ -64,7 +65,7 @@ public:
         return out;
     }
     template <class Items>
-    void restore(Items& items, int body, const std::vector<int>& keys) {
+    void restore(Items& items, int body, std::span<const int> keys) {
         for (auto key = keys.rbegin(); key != keys.rend(); ++key) link(items, *key >> 1, *key & 1, body);
     }
 

@@ -94,10 +94,21 @@ public:
     }
 
     // A snapshot's slots, all free and value-initialised until read into, then its free list
-    // (checked by the reader against the live slots).
+    // (checked by the reader against the live slots). An item that can reset itself keeping its
+    // vectors' memory (resetKeepingMemory) does: reading into slots that held items allocates nothing.
     void restoreSlots(int count) {
-        items_.assign(static_cast<size_t>(count), T{});
+        items_.resize(static_cast<size_t>(count));
+        for (T& item : items_) {
+            if constexpr (requires { item.resetKeepingMemory(); }) item.resetKeepingMemory();
+            else item = T{};
+        }
         free_.clear();
+    }
+    // Takes over another pool's slots and free list (a discarded world's), whose memory
+    // restoreSlots then reads into.
+    void adoptStorage(Pool&& other) {
+        items_ = std::move(other.items_);
+        free_ = std::move(other.free_);
     }
     void restoreFreeList(std::vector<int> free) {
         free_ = std::move(free);

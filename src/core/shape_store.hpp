@@ -27,6 +27,14 @@ struct ShapeData {
     Filter filter;
     void* userData = nullptr;
     std::vector<int> proxies;  // broadphase proxy of each child
+
+    // ShapeData{}, keeping the proxy list's memory (Pool::restoreSlots).
+    void resetKeepingMemory() {
+        std::vector<int> keep = std::move(proxies);
+        keep.clear();
+        *this = ShapeData{};
+        proxies = std::move(keep);
+    }
 };
 
 struct ShapeStore : Pool<ShapeData> {

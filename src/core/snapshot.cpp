@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <bit>
 #include <cstdint>
+#include <span>
 #include <unordered_set>
 
 #include "core/snapshot.hpp"
@@ -60,7 +61,8 @@ void writeBody(ByteWriter& out, const World::Impl& w, int index, bool futureOnly
     for (int e : edges) out.i32(e);
 }
 
-// Reads a live body; its shape list and contact edges are checked against the other pools later.
+// Reads a live body, appending its contact edges to `edges`; its shape list and contact edges are
+// checked against the other pools later.
 void readBody(ByteReader& in, Body& b, std::vector<int>& edges, int bodyCount, int shapeLimit, int edgeLimit) {
     readFields(in, b);
     if (b.xf.q.c == 0.0f && b.xf.q.s == 0.0f) b.xf = b.derivedTransform();
@@ -70,8 +72,8 @@ void readBody(ByteReader& in, Body& b, std::vector<int>& edges, int bodyCount, i
     if (b.islandNext < -1 || b.islandNext >= bodyCount) in.fail("island link " + std::to_string(b.islandNext) + " is out of range");
     b.shapes.resize(in.count(4, "body shape"));
     for (int& s : b.shapes) s = in.integer(0, shapeLimit - 1, "shape index");
-    edges.resize(in.count(4, "contact edge"));
-    for (int& e : edges) e = in.integer(0, edgeLimit - 1, "contact edge");
+    const int edgeCount = in.count(4, "contact edge");
+    for (int k = 0; k < edgeCount; ++k) edges.push_back(in.integer(0, edgeLimit - 1, "contact edge"));
 }
 
 // --- shapes ---
@@ -179,16 +181,19 @@ void writeShape(ByteWriter& out, const World::Impl& w, const ShapeData& s) {
     }
 }
 
+// Reads a live shape, appending its proxies' fat AABBs to `proxies`.
 void readShape(ByteReader& in, ShapeData& s, std::vector<AABB>& proxies, int bodyCount, const ShapeData* held) {
     s.body = in.integer(0, bodyCount - 1, "shape body");
     readGeometry(in, s, held);
     readFields(in, s);
     if (s.density < 0 || s.friction < 0 || s.restitution < 0) in.fail("negative shape material");
-    proxies.resize(in.count(16, "proxy"));
-    for (AABB& fat : proxies) {
+    const int proxyCount = in.count(16, "proxy");
+    for (int k = 0; k < proxyCount; ++k) {
+        AABB fat;
         fat.lower = in.finiteVec2();
         fat.upper = in.finiteVec2();
         if (fat.lower.x > fat.upper.x || fat.lower.y > fat.upper.y) in.fail("inverted proxy AABB");
+        proxies.push_back(fat);
     }
 }
 
@@ -242,7 +247,7 @@ std::vector<int> readFreeList(ByteReader& in, const std::vector<bool>& alive, co
 }
 
 // Relinks body `index`'s contact list in the saved order, checking that every edge belongs to it.
-void linkEdges(ByteReader& in, World::Impl& w, int index, const std::vector<int>& edges, std::vector<bool>& seen) {
+void linkEdges(ByteReader& in, World::Impl& w, int index, std::span<const int> edges, std::vector<bool>& seen) {
     ContactCache& cache = w.contactCache;
     for (int e : edges) {
         const Contact& c = cache.contacts[e >> 1];
@@ -252,12 +257,24 @@ void linkEdges(ByteReader& in, World::Impl& w, int index, const std::vector<int>
     cache.bodyLists.restore(cache.contacts, index, edges);
 }
 
+// What a snapshot holds per slot, read in slot order into one array: slot i's are items[start[i],
+// start[i + 1]) (a body's contact edges, a shape's fat AABBs).
+template <class T>
+struct PerSlot {
+    std::vector<T> items;
+    std::vector<int> start{0};
+    void endSlot() { start.push_back(static_cast<int>(items.size())); }
+    std::span<const T> operator[](int slot) const {
+        return std::span<const T>(items).subspan(static_cast<size_t>(start[slot]), static_cast<size_t>(start[slot + 1] - start[slot]));
+    }
+};
+
 // Whether the restoring world's broadphase already is the one a snapshot describes — a rollback
 // restores the same shapes, and most steps move no proxy out of its fat AABB: the same shapes
 // alive with the same geometry, each child's proxy with the saved fat AABB and tree, and the same
 // proxies waiting for pairs in the same order. Reads only. Proxy ids and the tree's shape then
 // differ from a rebuilt broadphase's, which changes nothing: pairs are made in child-key order.
-bool broadphaseMatches(const World::Impl& old, const World::Impl& w, const std::vector<std::vector<AABB>>& saved,
+bool broadphaseMatches(const World::Impl& old, const World::Impl& w, const PerSlot<AABB>& saved,
                        const std::vector<collide::ChildKey>& moved) {
     if (old.shapes.capacity() != w.shapes.capacity() || old.movedProxies.size() != moved.size()) return false;
     for (int i = 0; i < w.shapes.capacity(); ++i) {
@@ -265,10 +282,10 @@ bool broadphaseMatches(const World::Impl& old, const World::Impl& w, const std::
         const ShapeData& is = w.shapes[i];
         if (was.alive != is.alive) return false;
         if (!is.alive) continue;
-        if (!(was.geometry == is.geometry) || was.proxies.size() != saved[static_cast<size_t>(i)].size()) return false;
+        if (!(was.geometry == is.geometry) || was.proxies.size() != saved[i].size()) return false;
         const bool isStatic = w.bodies[is.body].type == BodyType::Static;
         for (int child = 0; child < static_cast<int>(was.proxies.size()); ++child)
-            if (!old.collision.proxyIs(was.proxies[child], saved[static_cast<size_t>(i)][child], {i, child}, isStatic)) return false;
+            if (!old.collision.proxyIs(was.proxies[child], saved[i][static_cast<size_t>(child)], {i, child}, isStatic)) return false;
     }
     for (size_t k = 0; k < moved.size(); ++k)
         if (old.movedProxies[k] != old.shapes[moved[k].shape].proxies[moved[k].child]) return false;
@@ -363,13 +380,20 @@ void World::restore(std::span<const uint8_t> bytes) {
                 std::to_string(formatVersion) + ")");
     auto fresh = std::make_unique<Impl>(readDef(in));  // one worker: the snapshot holds no threads
     Impl& w = *fresh;
+    // A rollback restores again and again: the pools read into the slots of the state the last
+    // restore replaced, whose shape and proxy lists then allocate nothing.
+    if (const std::unique_ptr<Impl> spare = std::move(impl_->spare)) {
+        w.bodies.adoptStorage(std::move(spare->bodies));
+        w.shapes.adoptStorage(std::move(spare->shapes));
+        w.contactCache.contacts.adoptStorage(std::move(spare->contactCache.contacts));
+    }
     w.frozenBodies = in.integer(0, 0x7FFFFFFF, "frozen body count");
     w.shapes.anyHitEvents = in.boolean();
 
     // Bodies, with their contact lists kept aside until the contacts are read.
     const int bodyCount = in.count(5, "body");
     w.bodies.restoreSlots(bodyCount);
-    std::vector<std::vector<int>> edgesOf(bodyCount);
+    PerSlot<int> edgesOf;
     std::vector<bool> bodyAlive(bodyCount);
     // Shape and contact counts are not known yet: indices are bounded by the input size, then checked.
     const int indexLimit = static_cast<int>(std::min<size_t>(bytes.size(), 0x3FFFFFFF));
@@ -377,21 +401,26 @@ void World::restore(std::span<const uint8_t> bytes) {
         Body& b = w.bodies[i];
         b.generation = in.u32();
         b.alive = bodyAlive[i] = in.boolean();
-        if (b.alive) readBody(in, b, edgesOf[i], bodyCount, indexLimit, 2 * indexLimit);
+        if (b.alive) readBody(in, b, edgesOf.items, bodyCount, indexLimit, 2 * indexLimit);
+        edgesOf.endSlot();
     }
     w.bodies.restoreFreeList(readFreeList(in, bodyAlive, "free body"));
 
     const int shapeCount = in.count(5, "shape");
     w.shapes.restoreSlots(shapeCount);
     std::vector<bool> shapeAlive(shapeCount), shapeListed(shapeCount, false);
-    std::vector<std::vector<AABB>> savedProxies(shapeCount);
+    PerSlot<AABB> savedProxies;
     for (int i = 0; i < shapeCount; ++i) {
         ShapeData& s = w.shapes[i];
         s.generation = in.u32();
         s.alive = shapeAlive[i] = in.boolean();
-        if (!s.alive) continue;
+        if (!s.alive) {
+            savedProxies.endSlot();
+            continue;
+        }
         const bool holds = i < impl_->shapes.capacity() && impl_->shapes[i].alive;
-        readShape(in, s, savedProxies[i], bodyCount, holds ? &impl_->shapes[i] : nullptr);
+        readShape(in, s, savedProxies.items, bodyCount, holds ? &impl_->shapes[i] : nullptr);
+        savedProxies.endSlot();
         w.shapes.noteFilter(s.filter);
         if (!bodyAlive[s.body]) in.fail("shape " + std::to_string(i) + " belongs to a dead body");
     }
@@ -464,7 +493,7 @@ void World::restore(std::span<const uint8_t> bytes) {
         std::visit([&](const auto& g) { w.collision.setGeometry(i, g); }, s.geometry);
         if (w.collision.childCount(i) != static_cast<int>(savedProxies[i].size())) in.fail("proxy count does not match the shape");
         for (int child = 0; child < static_cast<int>(savedProxies[i].size()); ++child)
-            s.proxies.push_back(w.collision.restoreProxy(savedProxies[i][child], {i, child},
+            s.proxies.push_back(w.collision.restoreProxy(savedProxies[i][static_cast<size_t>(child)], {i, child},
                                                          w.bodies[s.body].type == BodyType::Static));
     }
     for (const collide::ChildKey& key : moved) w.movedProxies.push_back(w.shapes[key.shape].proxies[key.child]);
@@ -500,6 +529,7 @@ void World::restore(std::span<const uint8_t> bytes) {
     fresh->contactCache.newPairs = std::move(impl_->contactCache.newPairs);
     fresh->contactCache.newPairsOf = std::move(impl_->contactCache.newPairsOf);
     fresh->contactCache.narrowphase = std::move(impl_->contactCache.narrowphase);
+    fresh->spare = std::move(impl_);
     impl_ = std::move(fresh);
 }
 

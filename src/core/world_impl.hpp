@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,8 @@ struct World::Impl {
 
     EventBuffers events;  // of the last step (event_buffers.hpp, events.cpp)
     PreSolveFn preSolve;
+    // The state the last restore replaced (snapshot.cpp): the next restore reads into its pools' memory.
+    std::unique_ptr<Impl> spare;
 
     Impl(const WorldDef& d);
 
