@@ -17,38 +17,42 @@ using simd::Float8;
 
 namespace {
 
-// A body's (v.x, v.y, ω, Δp.x) and (Δp.x, Δp.y, Δq.c, Δq.s) rows (body_lanes.hpp), eight at a time.
-struct StateRows {
-    __m128 head[8], tail[8];
-};
-
-BodyLanes<Float8> gatherBodies8(const BodyState* states, const int (&slots)[8]) {
-    StateRows r;
-    for (int i = 0; i < 8; ++i) {
-        const float* s = reinterpret_cast<const float*>(&states[slots[i]]);
-        r.head[i] = _mm_loadu_ps(s);
-        r.tail[i] = _mm_loadu_ps(s + 3);
+// Each body's state (v.x, v.y, ω, Δp.x, Δp.y, Δq.c, Δq.s: body_lanes.hpp) as a row of eight
+// floats, the eighth masked off (a state is seven floats, and the last one's row must not read
+// past the array), then the 8x8 transpose: unpack pairs of rows, shuffle quads, swap halves.
+[[gnu::always_inline]] inline BodyLanes<Float8> gatherBodies8(const BodyState* states, const int (&slots)[8]) {
+    const __m256i sevenFloats = _mm256_setr_epi32(-1, -1, -1, -1, -1, -1, -1, 0);
+    __m256 row[8];
+    for (int i = 0; i < 8; ++i) row[i] = _mm256_maskload_ps(reinterpret_cast<const float*>(&states[slots[i]]), sevenFloats);
+    __m256 pairs[8], quads[8];
+    for (int i = 0; i < 8; i += 2) {
+        pairs[i] = _mm256_unpacklo_ps(row[i], row[i + 1]);
+        pairs[i + 1] = _mm256_unpackhi_ps(row[i], row[i + 1]);
     }
-    _MM_TRANSPOSE4_PS(r.head[0], r.head[1], r.head[2], r.head[3]);
-    _MM_TRANSPOSE4_PS(r.head[4], r.head[5], r.head[6], r.head[7]);
-    _MM_TRANSPOSE4_PS(r.tail[0], r.tail[1], r.tail[2], r.tail[3]);
-    _MM_TRANSPOSE4_PS(r.tail[4], r.tail[5], r.tail[6], r.tail[7]);
-    auto lane = [](const __m128 (&rows)[8], int field) { return Float8::join(rows[field], rows[field + 4]); };
-    return {{lane(r.head, 0), lane(r.head, 1)}, lane(r.head, 2), {lane(r.tail, 0), lane(r.tail, 1)}, {lane(r.tail, 2), lane(r.tail, 3)}};
+    for (int i = 0; i < 8; i += 4) {
+        quads[i] = _mm256_shuffle_ps(pairs[i], pairs[i + 2], 0x44);
+        quads[i + 1] = _mm256_shuffle_ps(pairs[i], pairs[i + 2], 0xEE);
+        quads[i + 2] = _mm256_shuffle_ps(pairs[i + 1], pairs[i + 3], 0x44);
+        quads[i + 3] = _mm256_shuffle_ps(pairs[i + 1], pairs[i + 3], 0xEE);
+    }
+    // Field f < 4 is the low halves of quads[f] (bodies 0-3) and quads[f + 4] (bodies 4-7); f ≥ 4 the high ones.
+    auto field = [&](int f) {
+        return Float8(f < 4 ? _mm256_permute2f128_ps(quads[f], quads[f + 4], 0x20) : _mm256_permute2f128_ps(quads[f - 4], quads[f], 0x31));
+    };
+    return {{field(0), field(1)}, field(2), {field(3), field(4)}, {field(5), field(6)}};
 }
 
-// The velocities back (slot 0, the shared static body, never moves).
-void scatterVelocities8(BodyState* states, const int (&slots)[8], const BodyLanes<Float8>& lanes) {
-    float vx[8], vy[8], w[8];
-    lanes.v.x.store(vx);
-    lanes.v.y.store(vy);
-    lanes.w.store(w);
-    for (int i = 0; i < 8; ++i) {
-        if (slots[i] == 0) continue;
-        float* s = reinterpret_cast<float*>(&states[slots[i]]);
-        s[0] = vx[i];
-        s[1] = vy[i];
-        s[2] = w[i];
+// The velocities back: the inverse transpose of (v.x, v.y, ω, Δp.x) into each body's first four
+// floats, Δp.x as gathered (the rows leave it alone). Slot 0, the shared static body, never moves.
+[[gnu::always_inline]] inline void scatterVelocities8(BodyState* states, const int (&slots)[8], const BodyLanes<Float8>& lanes) {
+    const __m256 vxvy01 = _mm256_unpacklo_ps(lanes.v.x.v, lanes.v.y.v), vxvy23 = _mm256_unpackhi_ps(lanes.v.x.v, lanes.v.y.v);
+    const __m256 wdp01 = _mm256_unpacklo_ps(lanes.w.v, lanes.dp.x.v), wdp23 = _mm256_unpackhi_ps(lanes.w.v, lanes.dp.x.v);
+    // Row i (i < 4) of bodies i and i + 4, in the low and high halves.
+    const __m256 rows[4] = {_mm256_shuffle_ps(vxvy01, wdp01, 0x44), _mm256_shuffle_ps(vxvy01, wdp01, 0xEE),
+                            _mm256_shuffle_ps(vxvy23, wdp23, 0x44), _mm256_shuffle_ps(vxvy23, wdp23, 0xEE)};
+    for (int i = 0; i < 4; ++i) {
+        if (slots[i] != 0) _mm_storeu_ps(reinterpret_cast<float*>(&states[slots[i]]), _mm256_castps256_ps128(rows[i]));
+        if (slots[i + 4] != 0) _mm_storeu_ps(reinterpret_cast<float*>(&states[slots[i + 4]]), _mm256_extractf128_ps(rows[i], 1));
     }
 }
 
