@@ -39,10 +39,12 @@ struct Contact {
     Vec2 normal;
     int pointCount = 0;
     ContactPointState points[2];
-    // The pose at the last narrowphase (manifold_reuse.hpp): B's centre in A's frame, both angles.
+    // The pose at the last narrowphase (manifold_reuse.hpp): B's centre in A's frame, both angles,
+    // and their rotations R(θ) (derived from the angles, not saved: snapshot.cpp derives them again).
     bool reuseValid = false;
     Vec2 reuseOffset;
     float reuseAngleA = 0, reuseAngleB = 0;
+    Rot reuseRotA, reuseRotB;
     Edge edges[2];  // in bodyA's list (side 0) and bodyB's (side 1): ContactCache::bodyLists
 };
 

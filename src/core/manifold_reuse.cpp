@@ -36,13 +36,13 @@ bool reuseManifold(Contact& c, const Body& a, const Body& b, const ReuseLimits& 
     if (!(drift < tolerance)) return false;
     if (c.pointCount == 0) return true;
 
-    const Rot qA = Rot::fromAngle(turnA), qB = Rot::fromAngle(turnB);
+    // The material points that met, each anchor turned with its body: R(θ − θ₀) r = R(θ) R(θ₀)ᵀ r.
     Vec2 points[2];
     float separations[2];
     for (int i = 0; i < c.pointCount; ++i) {
         const ContactPointState& p = c.points[i];
-        const Vec2 pointA = a.center + rotate(qA, p.anchorA);  // the material points that met
-        const Vec2 pointB = b.center + rotate(qB, p.anchorB);
+        const Vec2 pointA = a.center + rotate(a.xf.q, invRotate(c.reuseRotA, p.anchorA));
+        const Vec2 pointB = b.center + rotate(b.xf.q, invRotate(c.reuseRotB, p.anchorB));
         separations[i] = p.baseSeparation + dot(pointB - pointA, c.normal);
         // A new narrowphase would drop a point whose skins no longer overlap (and end the touch).
         if (!(separations[i] <= limits.skinOffset)) return false;
@@ -62,6 +62,7 @@ void rememberManifoldPose(Contact& c, const Body& a, const Body& b, bool keepabl
     c.reuseOffset = relativeOffset(a, b);
     c.reuseAngleA = a.angle;
     c.reuseAngleB = b.angle;
+    rememberReuseRotations(c);
     for (int i = 0; i < c.pointCount; ++i) c.points[i].baseSeparation = c.points[i].separation;
 }
 

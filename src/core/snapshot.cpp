@@ -14,6 +14,7 @@
 #include <span>
 #include <unordered_set>
 
+#include "core/manifold_reuse.hpp"
 #include "core/snapshot.hpp"
 #include "core/snapshot_fields.hpp"
 
@@ -223,6 +224,7 @@ void readContact(ByteReader& in, Contact& c, int shapeCount) {
         if (key.shape < 0 || key.shape >= shapeCount || key.child < 0) in.fail("contact names a missing shape child");
     if (c.pointCount < 0 || c.pointCount > 2) in.fail("contact point count out of range");
     for (int i = 0; i < c.pointCount; ++i) readFields(in, c.points[i]);
+    if (c.reuseValid && c.pointCount > 0) rememberReuseRotations(c);
 }
 
 // --- pools ---

@@ -128,8 +128,9 @@ constexpr auto fields(const ContactPointState*) {
 }
 
 // Not listed: alive (written by the pool); pairKey, proxies and bodies (derived from the child
-// keys); points (the first pointCount, written after the list); edges (written as body lists).
-static_assert(reviewedLayout<Contact, 216>);
+// keys); points (the first pointCount, written after the list); edges (written as body lists);
+// reuseRotA, reuseRotB (R of the reuse angles, derived on reading).
+static_assert(reviewedLayout<Contact, 232>);
 constexpr auto fields(const Contact*) {
     using C = Contact;
     return std::tuple{field("touching", &C::touching),
