@@ -1,7 +1,7 @@
 // libFuzzer harness for the snapshot loader: any bytes through World::restore. Corrupt bytes must
 // end in perpdot::Error; a snapshot that loads must step, and must save back to the same bytes
 // (restore and snapshot are inverses; an older format version saves as the current one, which then
-// round-trips), else the harness aborts.
+// round-trips, also restored into a world that held another state), else the harness aborts.
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -29,5 +29,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     }
     for (int i = 0; i < 4; ++i) world.step(1.0f / 60.0f);
     world.restore(world.snapshot());
+    // Restored again, into the slots the stepped state leaves behind (a restore reads into the
+    // memory of the state it replaced): nothing of that state may remain.
+    world.restore(saved);
+    if (world.snapshot() != saved) std::abort();
     return 0;
 }
