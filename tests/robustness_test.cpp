@@ -291,6 +291,27 @@ TEST(Numerics, BouncesStayWithinTheSpeedLimits) {
     EXPECT_GT(fastest, 4.9f);  // it did reach the limit
 }
 
+TEST(Numerics, AnImpactWhoseImpulseOverflowsFreezesItsPairInsteadOfSpreadingNaN) {
+    // A bullet meets a kinematic box inside continuous collision's moving impacts; a restitution
+    // near FLT_MAX makes the target speed, then the impulse, infinite, and the kinematic body's
+    // 0·∞ NaN (a fuzzed snapshot did this, and its world could no longer be saved and restored).
+    World world({.gravity = {0, 0}});
+    const BodyId wall = world.createBody({.type = BodyType::Kinematic});
+    world.createShape(wall, {}, makeBox(1.0f, 1.0f));
+    const BodyId bullet = world.createBody({.type = BodyType::Dynamic, .position = {-6, 0}, .linearVelocity = {600, 0}, .bullet = true});
+    world.createShape(bullet, {.restitution = 3.0e38f}, Circle{{0, 0}, 0.1f});
+    for (int i = 0; i < 3; ++i) world.step(dt);
+    for (BodyId b : {wall, bullet}) {
+        EXPECT_TRUE(isFinite(world.position(b)) && std::isfinite(world.angle(b)) && isFinite(world.linearVelocity(b)));
+        EXPECT_FALSE(world.isAwake(b));
+    }
+    EXPECT_EQ(world.stats().frozenBodies, 2);
+    EXPECT_LT(world.position(bullet).x, -0.9f);  // stopped where it met the box, not through it
+    World restored;
+    restored.restore(world.snapshot());  // a world's own snapshot always loads back
+    EXPECT_EQ(restored.snapshot(), world.snapshot());
+}
+
 TEST(Numerics, AngularSpeedIsClampedToAnEighthOfATurnPerSubstep) {
     World world({.gravity = {0, 0}, .substeps = 4});
     const BodyId spinner = world.createBody({.type = BodyType::Dynamic, .angularVelocity = 1.0e4f});

@@ -89,6 +89,15 @@ void World::Impl::wake(int index) {
     } while (i >= 0 && i != index);
 }
 
+void World::Impl::freeze(int index) {
+    Body& b = bodies[index];
+    b.v = {};
+    b.w = 0.0f;
+    b.awake = false;
+    b.sleepTime = 0.0f;
+    ++frozenBodies;
+}
+
 BodyId World::createBody(const BodyDef& def) {
     Impl& w = *impl_;
     w.checkUnlocked("createBody");

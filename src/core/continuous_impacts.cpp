@@ -242,6 +242,18 @@ void resolveImpact(World::Impl& w, const MoverPair& pair, float t, const StepCon
             applyImpulse(a, ba, b, bb, p, (tangential - p.tangentImpulse) * tangent);
             p.tangentImpulse = tangential;
         }
+    // An impulse that overflowed (a restitution or masses far beyond any game's) leaves NaN: the
+    // pair stops where it met and is frozen at the end, as finalizeBodies freezes a body whose
+    // motion went non-finite, and no NaN path is ever swept (Box2D's time of impact asserts).
+    if (!isFinite(a.v) || !std::isfinite(a.w) || !isFinite(b.v) || !std::isfinite(b.w)) {
+        for (Mover* m : {&a, &b}) {
+            restartAt(*m, t);
+            m->c1 = m->c0, m->a1 = m->a0;
+            m->v = {}, m->w = 0.0f;
+            m->frozen = true;
+        }
+        return;
+    }
     // The integration's speed limits hold here too (speed_limits.hpp).
     for (Mover* m : {&a, &b}) {
         m->v = clampSpeed(m->v, w.def.maxLinearSpeed);
@@ -310,6 +322,7 @@ void solveMovingImpacts(World::Impl& w, const StepContext& ctx) {
         b.xf = b.derivedTransform();
         b.v = m.v;
         b.w = m.w;
+        if (m.frozen) w.freeze(m.body);
         w.synchronizeProxies(m.body, b.center - m.stepStart);
     }
 }

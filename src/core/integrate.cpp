@@ -144,13 +144,7 @@ void finalizeBodies(World::Impl& w, const StepContext& ctx) {
         Body& b = w.bodies[index];
         const BodyState& s = w.scratch.states[k + 1];
         if (w.scratch.bodyMotion[k] == NonFinite) {
-            // A body that went non-finite is frozen where it was instead of spreading NaN: stopped,
-            // put to sleep until something wakes it, and counted in stats().frozenBodies.
-            b.v = {};
-            b.w = 0.0f;
-            b.awake = false;
-            b.sleepTime = 0.0f;
-            ++w.frozenBodies;
+            w.freeze(index);  // where it was before the step
             continue;
         }
         anyBullet = anyBullet || b.bullet;

@@ -40,6 +40,7 @@ struct Mover {
     bool fast = false;      // found fast by isFast (else: met by a fast mover)
     bool sweepStatic = false;  // its path still has to be swept against static shapes
     bool moved = false;     // its path differs from what finalizeBodies wrote to the body
+    bool frozen = false;    // an impact's impulse overflowed: it stopped there and is frozen at the end
     float staticTime = 1;   // time of impact with static shapes (valid when !sweepStatic)
 };
 

@@ -56,6 +56,9 @@ struct World::Impl {
     // Bodies (body.cpp)
     void updateMass(int body);
     void wake(int body);  // wakes the body and the island it slept with
+    // A body whose motion went non-finite, frozen where it is instead of spreading NaN: stopped,
+    // asleep until something wakes it, and counted in stats().frozenBodies.
+    void freeze(int body);
 
     // Shapes and broadphase (shape.cpp)
     int addShape(BodyId body, const ShapeDef& def);
