@@ -97,33 +97,47 @@ void findContactGroups(World::Impl& w, const StepContext& ctx) {
         const Body& b = w.bodies[w.scratch.awakeBodies[k - 1]];
         g.kind[k] = b.type != BodyType::Dynamic ? Fixed : b.jointCount > 0 ? Jointed : Free;
     }
+    // Join the slots the constraints couple, and count each constraint's rows at its slot (its
+    // dynamic one; a slot that moves nothing stays its own root), 2 in `loaded` if it is jointed.
     g.root.resize(static_cast<size_t>(slots));
     std::iota(g.root.begin(), g.root.end(), 0);
-    for (const auto [a, b] : w.scratch.constraintSlots)
-        if (g.kind[a] != Fixed && g.kind[b] != Fixed) unite(g.root, a, b);
-    // unite keeps the smaller slot as the root, so every parent precedes its child: one sweep in
-    // slot order points every slot at its root.
-    for (int k = 0; k < slots; ++k) g.root[k] = g.root[g.root[k]];
-    // Per root: rows, and whether the group is loaded (1), not (0) or jointed (2: never direct).
     g.rowCount.assign(static_cast<size_t>(slots), 0);
     g.loaded.assign(static_cast<size_t>(slots), 0);
+    auto slotOf = [&](int k) {
+        const auto [a, b] = w.scratch.constraintSlots[k];
+        return g.kind[a] != Fixed ? a : b;
+    };
     for (int k = 0; k < count; ++k) {
         const auto [a, b] = w.scratch.constraintSlots[k];
-        const int root = g.root[g.kind[a] != Fixed ? a : b];
-        const ContactConstraint& c = w.scratch.constraints[k];
-        g.rowCount[root] += c.pointCount;
-        if (g.kind[a] == Jointed || g.kind[b] == Jointed)
-            g.loaded[root] = 2;
-        else if (g.loaded[root] == 0 && loaded(c))
-            g.loaded[root] = 1;
+        if (g.kind[a] != Fixed && g.kind[b] != Fixed) unite(g.root, a, b);
+        const int slot = slotOf(k);
+        g.rowCount[slot] += w.scratch.constraints[k].pointCount;
+        if (g.kind[a] == Jointed || g.kind[b] == Jointed) g.loaded[slot] = 2;
+    }
+    // unite keeps the smaller slot as the root, so every parent precedes its child: one sweep in
+    // slot order points every slot at its root and sums the rows there, jointed if any slot is.
+    for (int k = 0; k < slots; ++k) {
+        const int root = g.root[k] = g.root[g.root[k]];
+        if (root == k) continue;
+        g.rowCount[root] += g.rowCount[k];
+        g.loaded[root] = std::max(g.loaded[root], g.loaded[k]);
+    }
+    bool small = false;  // a group, not jointed, with no more rows than a group may have
+    for (int k = 0; k < slots; ++k)
+        small = small || (g.root[k] == k && g.loaded[k] == 0 && g.rowCount[k] > 0 && g.rowCount[k] <= ContactGroups::maxRows);
+    if (!small) return;  // a settled pile: one group, too large
+    // Per small root: whether one of its rows is loaded (1); larger groups are never direct.
+    for (int k = 0; k < count; ++k) {
+        const int root = g.root[slotOf(k)];
+        if (g.loaded[root] == 0 && g.rowCount[root] <= ContactGroups::maxRows && loaded(w.scratch.constraints[k])) g.loaded[root] = 1;
     }
 
     // Groups in the order of their first constraint while the step's rows last; the constraints of
     // each in constraint order. Storage for the most rows is taken once, then reused.
     g.groupOf.assign(static_cast<size_t>(slots), -1);
     int groups = 0, rowsLeft = ContactGroups::maxTotalRows;
-    for (const auto [a, b] : w.scratch.constraintSlots) {
-        const int root = g.root[g.kind[a] != Fixed ? a : b], n = g.rowCount[root];
+    for (int k = 0; k < count; ++k) {
+        const int root = g.root[slotOf(k)], n = g.rowCount[root];
         if (g.loaded[root] != 1 || n > std::min(ContactGroups::maxRows, rowsLeft) || g.groupOf[root] >= 0) continue;
         g.groupOf[root] = groups++;
         rowsLeft -= n;
@@ -134,10 +148,7 @@ void findContactGroups(World::Impl& w, const StepContext& ctx) {
     g.rows.reserve(ContactGroups::maxTotalRows);
     for (std::vector<double>* v : {&g.K, &g.L}) v->reserve(static_cast<size_t>(ContactGroups::maxRows) * ContactGroups::maxTotalRows);
     g.start.assign(static_cast<size_t>(groups) + 1, 0);
-    auto groupOf = [&](int k) {
-        const auto [a, b] = w.scratch.constraintSlots[k];
-        return g.groupOf[g.root[g.kind[a] != Fixed ? a : b]];
-    };
+    auto groupOf = [&](int k) { return g.groupOf[g.root[slotOf(k)]]; };
     for (int k = 0; k < count; ++k)
         if (groupOf(k) >= 0) ++g.start[groupOf(k) + 1];
     std::partial_sum(g.start.begin(), g.start.end(), g.start.begin());
