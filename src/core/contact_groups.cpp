@@ -5,6 +5,7 @@
 #include <numeric>
 
 #include "core/cholesky.hpp"
+#include "core/contact_prepare.hpp"
 #include "core/union_find.hpp"
 #include "core/world_impl.hpp"
 
@@ -81,9 +82,15 @@ void findContactGroups(World::Impl& w, const StepContext& ctx) {
     g.matrixStart.assign(1, 0);
     // Loads are measured in g: λn K_ii / hs ≥ loadTrigger·g, i.e. λn ≥ loadTrigger·g·hs·normalMass.
     const float loadImpulse = ContactGroups::loadTrigger * length(w.def.gravity) * ctx.hs;
+    // From the contact: the rows are prepared once the groups are known (contact_prepare.hpp).
     auto loaded = [&](const ContactConstraint& c) {
-        for (int i = 0; i < c.pointCount; ++i)
-            if (c.points[i].normalImpulse >= loadImpulse * c.points[i].normalMass && c.points[i].normalMass > 0.0f) return true;
+        const Contact& contact = w.contactCache.contacts[c.contact];
+        const RowMasses m = rowMasses(w.bodies[contact.bodyA], w.bodies[contact.bodyB]);
+        for (int i = 0; i < c.pointCount; ++i) {
+            const ContactPointState& p = contact.points[i];
+            const float normalMass = effectiveMass(m, p.anchorA, p.anchorB, contact.normal);
+            if (warmStartImpulse(ctx, p.normalImpulse) >= loadImpulse * normalMass && normalMass > 0.0f) return true;
+        }
         return false;
     };
     if (!(loadImpulse > 0.0f) || std::none_of(w.scratch.constraints.begin(), w.scratch.constraints.end(), loaded)) return;
@@ -158,6 +165,7 @@ void findContactGroups(World::Impl& w, const StepContext& ctx) {
         if (const int group = groupOf(k); group >= 0) g.constraints[g.start[group] + g.rowCount[group]++] = k;
 
     // Each group's rows, K and factor; a group whose K does not factor stays with the sequential rows.
+    for (int k : g.constraints) prepareContactRows(w, ctx, w.scratch.constraints[k]);
     int kept = 0;
     for (int group = 0; group < groups; ++group) {
         const int rowsBefore = static_cast<int>(g.rows.size());

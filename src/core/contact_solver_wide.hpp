@@ -183,6 +183,13 @@ void restituteContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, Vec2T
 // N floats each, in the same order: field i of lane l is float i·N + l of the rows (pack_lanes.hpp).
 constexpr std::size_t rowFloats = rowFloatsOf<ContactRows>();
 
+// Where a point's field of ContactRows<float> is, in floats (memberOffset: its offsetof in
+// ContactPointRows<float>): in a block of N lanes, lane l of it is float (that index)·N + l.
+constexpr std::size_t pointField(int point, std::size_t memberOffset) {
+    return (offsetof(ContactRows<float>, points) + static_cast<std::size_t>(point) * sizeof(ContactPointRows<float>) + memberOffset) /
+           sizeof(float);
+}
+
 // Whether any lane of a block's rows (rowData(), `lanes` wide) has restitution: blocks without
 // any skip the restitution pass, gathers and all.
 inline bool anyElastic(const float* rows, int lanes) {
@@ -199,6 +206,7 @@ struct ContactBlock {
     int contact[4] = {-1, -1, -1, -1};     // index in World::Impl::contacts; -1: an empty lane
     int bodyA[4] = {}, bodyB[4] = {};      // solver slots; an empty lane uses the static slot 0
     const float* rowData() const { return reinterpret_cast<const float*>(&rows); }
+    float* rowData() { return reinterpret_cast<float*>(&rows); }
 };
 
 // Eight constraints of one colour, for CPUs with AVX2 (contact_solver_avx2.cpp): the rows are
@@ -209,6 +217,7 @@ struct ContactBlock8 {
     int contact[8] = {-1, -1, -1, -1, -1, -1, -1, -1};
     int bodyA[8] = {}, bodyB[8] = {};
     const float* rowData() const { return rows; }
+    float* rowData() { return rows; }
 };
 
 
@@ -218,9 +227,7 @@ bool contactLanes8Available();
 int chooseContactLanes();
 
 // The eight-lane rows (src/core/avx2/contact_solver_avx2.cpp, built where PERPDOT_AVX2 is defined):
-// packContactRows8 packs eight constraints' rows into a block's lanes; contactRows8 is one pass
-// over blocks [begin, end), as contactRows is over four-lane blocks.
-void packContactRows8(const ContactRows<float>* const (&lanes)[8], ContactBlock8& block);
+// contactRows8 is one pass over blocks [begin, end), as contactRows is over four-lane blocks.
 void contactRows8(ContactBlock8* blocks, int begin, int end, BodyState* states, const SubstepForces* forces, const StepContext& ctx,
                   RowPass pass);
 

@@ -54,20 +54,6 @@ void scatterVelocities8(BodyState* states, const int (&slots)[8], const BodyLane
 
 }  // namespace
 
-void packContactRows8(const ContactRows<float>* const (&lanes)[8], ContactBlock8& block) {
-    for (std::size_t k = 0; k < rowFloats; k += 4) {
-        const std::size_t first = k + 4 <= rowFloats ? k : rowFloats - 4;  // the last run overlaps the one before
-        __m128 low[4], high[4];
-        for (int i = 0; i < 4; ++i) {
-            low[i] = _mm_loadu_ps(reinterpret_cast<const float*>(lanes[i]) + first);
-            high[i] = _mm_loadu_ps(reinterpret_cast<const float*>(lanes[i + 4]) + first);
-        }
-        _MM_TRANSPOSE4_PS(low[0], low[1], low[2], low[3]);
-        _MM_TRANSPOSE4_PS(high[0], high[1], high[2], high[3]);
-        for (int j = 0; j < 4; ++j) Float8::join(low[j], high[j]).store(block.rows + (first + j) * 8);
-    }
-}
-
 namespace {
 
 // `rows(blockRows, a, b, block)` on the blocks of [begin, end) that `needs` (all by default).
