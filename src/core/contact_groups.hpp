@@ -46,7 +46,8 @@ struct ContactGroups {
     std::vector<double> lambda, y, x, rhs, activeK;
 };
 
-// The groups of this step's constraints to solve directly, their K factored (after prepareContact).
+// The groups of this step's constraints to solve directly (after the select of prepareContacts), their
+// rows prepared and K factored.
 void findContactGroups(World::Impl& world, const StepContext& ctx);
 // A pass of every group: warm start, or its normal rows as one system then its tangent rows.
 void contactGroupRows(World::Impl& world, const StepContext& ctx, RowPass pass);

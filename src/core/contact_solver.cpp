@@ -60,7 +60,8 @@ void prepareRows(const World::Impl& w, const StepContext& ctx, const ContactCons
     set(offsetof(Rows, turnsB), roundingRadius(w.shapes[contact.b.shape]) == 0.0f ? 1.0f : 0.0f);
 
     const Vec2 n = contact.normal, t = perp(n);
-    const BodyState sa = velocityWithoutContact(w, ctx, c.indexA), sb = velocityWithoutContact(w, ctx, c.indexB);
+    const BodyState& sa = w.scratch.freeVelocities[c.indexA];
+    const BodyState& sb = w.scratch.freeVelocities[c.indexB];
     for (int i = 0; i < 2; ++i) {
         const std::size_t point = offsetof(Rows, points) + static_cast<std::size_t>(i) * sizeof(PointRows);
         if (i >= contact.pointCount) {  // no manifold point: no mass, no impulse
@@ -116,6 +117,10 @@ void prepareContacts(World::Impl& w, const StepContext& ctx) {
             c.block = -1;
             s.constraintSlots[k] = {c.indexA, c.indexB};
         });
+    s.freeVelocities.resize(s.states.size());
+    w.workers.parallelFor(static_cast<int>(s.states.size()), 256, [&](int begin, int end, int) {
+        for (int slot = begin; slot < end; ++slot) s.freeVelocities[slot] = velocityWithoutContact(w, ctx, slot);
+    });
     findContactGroups(w, ctx);
     prepareContactBlocks(w, ctx);
 }
