@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <numeric>
 
 #include "core/cholesky.hpp"
@@ -68,6 +69,26 @@ bool assemble(World::Impl& w, ContactGroups& g, int group) {
     return choleskyFactor(L, n);
 }
 
+// Whether this step's constraints join the same slots with the same point counts, and the slots
+// have the same kinds, as when remember last ran.
+bool sameAsLastStep(const StepScratch& s, const ContactGroups& g) {
+    auto same = [](const auto& a, const auto& b) {  // one memcmp, not one per element
+        return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])) == 0);
+    };
+    if (!same(s.constraintSlots, g.lastSlots) || !same(g.kind, g.lastKind)) return false;
+    for (size_t k = 0; k < s.constraints.size(); ++k)
+        if (s.constraints[k].pointCount != g.lastPointCounts[k]) return false;
+    return true;
+}
+
+void remember(const StepScratch& s, ContactGroups& g, bool noneSmall) {
+    g.lastSlots = s.constraintSlots;
+    g.lastKind = g.kind;
+    g.lastPointCounts.resize(s.constraints.size());
+    for (size_t k = 0; k < s.constraints.size(); ++k) g.lastPointCounts[k] = s.constraints[k].pointCount;
+    g.noneSmall = noneSmall;
+}
+
 }  // namespace
 
 void findContactGroups(World::Impl& w, const StepContext& ctx) {
@@ -104,6 +125,10 @@ void findContactGroups(World::Impl& w, const StepContext& ctx) {
         const Body& b = w.bodies[w.scratch.awakeBodies[k - 1]];
         g.kind[k] = b.type != BodyType::Dynamic ? Fixed : b.jointCount > 0 ? Jointed : Free;
     }
+    // A settled pile keeps its constraints from step to step: with last step's slots, point counts
+    // and kinds, the groups are last step's, and if none was small enough then, none is now.
+    if (g.noneSmall && sameAsLastStep(w.scratch, g)) return;
+
     // Join the slots the constraints couple, and count each constraint's rows at its slot (its
     // dynamic one; a slot that moves nothing stays its own root), 2 in `loaded` if it is jointed.
     g.root.resize(static_cast<size_t>(slots));
@@ -132,6 +157,7 @@ void findContactGroups(World::Impl& w, const StepContext& ctx) {
     bool small = false;  // a group, not jointed, with no more rows than a group may have
     for (int k = 0; k < slots; ++k)
         small = small || (g.root[k] == k && g.loaded[k] == 0 && g.rowCount[k] > 0 && g.rowCount[k] <= ContactGroups::maxRows);
+    remember(w.scratch, g, !small);
     if (!small) return;  // a settled pile: one group, too large
     // Per small root: whether one of its rows is loaded (1); larger groups are never direct.
     for (int k = 0; k < count; ++k) {
