@@ -109,7 +109,7 @@ void findContactGroups(World::Impl& w, const StepContext& ctx) {
         const RowMasses m = rowMasses(w.bodies[contact.bodyA], w.bodies[contact.bodyB]);
         for (int i = 0; i < c.pointCount; ++i) {
             const ContactPointState& p = contact.points[i];
-            const float normalMass = effectiveMass(m, p.anchorA, p.anchorB, contact.normal);
+            const float normalMass = effectiveMass<float>(m, p.anchorA, p.anchorB, contact.normal);
             if (warmStartImpulse(ctx, p.normalImpulse) >= loadImpulse * normalMass && normalMass > 0.0f) return true;
         }
         return false;

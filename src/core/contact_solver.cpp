@@ -23,11 +23,13 @@ BodyState velocityWithoutContact(const World::Impl& w, const StepContext& ctx, i
     return s;
 }
 
-// The rows of constraint c, field i of ContactRows<float> written to rows[i · stride]: its own rows
-// (stride 1) or its lane of a block (stride = the block's lanes, pack_lanes.hpp). Every field is
+// The contact's values of constraint c's rows, field i of ContactRows<float> written to
+// rows[i · stride] (its own rows: stride 1; its lane of a block: stride = the block's lanes), as
+// deriveContactRows (contact_solver_wide.hpp) takes them: the separation in baseSeparation, last
+// step's impulses as they were, zeros for no manifold point. With deriveContactRows every field is
 // written: a reused block or slot keeps nothing old.
 template <std::size_t stride>
-void prepareRows(const World::Impl& w, const StepContext& ctx, const ContactConstraint& c, float* rows) {
+void gatherRows(const World::Impl& w, const ContactConstraint& c, float* rows) {
     using Rows = ContactRows<float>;
     using PointRows = ContactPointRows<float>;
     auto set = [&](std::size_t offset, float value) { rows[offset / sizeof(float) * stride] = value; };
@@ -36,9 +38,7 @@ void prepareRows(const World::Impl& w, const StepContext& ctx, const ContactCons
         set(offset + offsetof(Vec2, y), value.y);
     };
     const Contact& contact = w.contactCache.contacts[c.contact];
-    const Body& ba = w.bodies[contact.bodyA];
-    const Body& bb = w.bodies[contact.bodyB];
-    const RowMasses m = rowMasses(ba, bb);
+    const RowMasses m = rowMasses(w.bodies[contact.bodyA], w.bodies[contact.bodyB]);
     set(offsetof(Rows, invMassA), m.invMassA);
     set(offsetof(Rows, invIA), m.invIA);
     set(offsetof(Rows, invMassB), m.invMassB);
@@ -48,48 +48,36 @@ void prepareRows(const World::Impl& w, const StepContext& ctx, const ContactCons
     set(offsetof(Rows, restitution), contact.restitution);
     set(offsetof(Rows, rollingResistance), contact.rollingResistance);
     set(offsetof(Rows, tangentSpeed), contact.tangentSpeed);
-    set(offsetof(Rows, rollingImpulse), ctx.enableWarmStarting ? contact.rollingImpulse : 0.0f);
-    const float kRolling = m.invIA + m.invIB;
-    set(offsetof(Rows, rollingMass), contact.rollingResistance > 0.0f && kRolling > 0.0f ? 1.0f / kRolling : 0.0f);
-    const bool againstStatic = ba.invMass == 0.0f || bb.invMass == 0.0f;
-    const Softness& softness = againstStatic ? ctx.staticSoftness : ctx.contactSoftness;
-    set(offsetof(Rows, biasRate), softness.biasRate);
-    set(offsetof(Rows, massScale), softness.massScale);
-    set(offsetof(Rows, impulseScale), softness.impulseScale);
+    set(offsetof(Rows, rollingImpulse), contact.rollingImpulse);
     set(offsetof(Rows, turnsA), roundingRadius(w.shapes[contact.a.shape]) == 0.0f ? 1.0f : 0.0f);
     set(offsetof(Rows, turnsB), roundingRadius(w.shapes[contact.b.shape]) == 0.0f ? 1.0f : 0.0f);
-
-    const Vec2 n = contact.normal, t = perp(n);
-    const BodyState& sa = w.scratch.freeVelocities[c.indexA];
-    const BodyState& sb = w.scratch.freeVelocities[c.indexB];
     for (int i = 0; i < 2; ++i) {
         const std::size_t point = offsetof(Rows, points) + static_cast<std::size_t>(i) * sizeof(PointRows);
-        if (i >= contact.pointCount) {  // no manifold point: no mass, no impulse
+        if (i >= contact.pointCount) {
             for (std::size_t field = 0; field < sizeof(PointRows); field += sizeof(float)) set(point + field, 0.0f);
             continue;
         }
         const ContactPointState& p = contact.points[i];
         setVec(point + offsetof(PointRows, anchorA), p.anchorA);
         setVec(point + offsetof(PointRows, anchorB), p.anchorB);
-        set(point + offsetof(PointRows, baseSeparation), p.separation - dot(p.anchorB - p.anchorA, n));
-        set(point + offsetof(PointRows, relativeVelocity), dot(relativeVelocity(sa, sb, p.anchorA, p.anchorB), n));
-        set(point + offsetof(PointRows, normalImpulse), warmStartImpulse(ctx, p.normalImpulse));
-        set(point + offsetof(PointRows, tangentImpulse), warmStartImpulse(ctx, p.tangentImpulse));
-        set(point + offsetof(PointRows, maxNormalImpulse), 0.0f);
-        set(point + offsetof(PointRows, normalMass), effectiveMass(m, p.anchorA, p.anchorB, n));
-        set(point + offsetof(PointRows, tangentMass), effectiveMass(m, p.anchorA, p.anchorB, t));
+        set(point + offsetof(PointRows, baseSeparation), p.separation);
+        set(point + offsetof(PointRows, normalImpulse), p.normalImpulse);
+        set(point + offsetof(PointRows, tangentImpulse), p.tangentImpulse);
     }
 }
 
 }  // namespace
 
 void prepareContactRows(const World::Impl& w, const StepContext& ctx, ContactConstraint& c) {
-    prepareRows<1>(w, ctx, c, c.rowData());
+    gatherRows<1>(w, c, c.rowData());
+    const float present[2] = {c.pointCount > 0 ? 1.0f : 0.0f, c.pointCount > 1 ? 1.0f : 0.0f};
+    deriveContactRows(static_cast<ContactRows<float>&>(c), w.scratch.freeVelocities[c.indexA], w.scratch.freeVelocities[c.indexB],
+                      present, ctx);
 }
 
-void prepareContactLane(const World::Impl& w, const StepContext& ctx, const ContactConstraint& c, float* lane, int lanes) {
-    if (lanes == 8) prepareRows<8>(w, ctx, c, lane);
-    else prepareRows<4>(w, ctx, c, lane);
+void gatherContactLane(const World::Impl& w, const ContactConstraint& c, float* lane, int lanes) {
+    if (lanes == 8) gatherRows<8>(w, c, lane);
+    else gatherRows<4>(w, c, lane);
 }
 
 // The touching contacts with an awake body, in pool order, selected by the workers: their

@@ -77,8 +77,23 @@ void passContacts(World::Impl& w, const StepContext& ctx, RowPass pass, int begi
 
 namespace {
 
+// deriveContactRows on a block's lanes: four here, eight in the AVX2 file.
+void deriveBlock(World::Impl& w, const StepContext& ctx, ContactBlock& block, const float (&present)[2][4]) {
+    const BodyLanes<Float4> a = gatherBodies(w.scratch.freeVelocities, block.bodyA);
+    const BodyLanes<Float4> b = gatherBodies(w.scratch.freeVelocities, block.bodyB);
+    const Float4 points[2] = {Float4::load(present[0]), Float4::load(present[1])};
+    deriveContactRows(block.rows, a, b, points, ctx);
+}
+
+#ifdef PERPDOT_AVX2
+void deriveBlock(World::Impl& w, const StepContext& ctx, ContactBlock8& block, const float (&present)[2][8]) {
+    deriveContactRows8(block, w.scratch.freeVelocities.data(), present, ctx);
+}
+#endif
+
 // Blocks of Block::lanes constraints of one colour, in colour order (the last block of a colour
-// may have empty lanes), each lane's rows prepared straight into it (contact_prepare.hpp).
+// may have empty lanes): each lane's contact values gathered straight into it, then the block's
+// rows derived lanes at once (contact_prepare.hpp).
 template <class Block>
 void layOutBlocks(World::Impl& w, const StepContext& ctx, const ColorStarts& start, std::vector<Block>& blocks) {
     constexpr int overflow = GraphColoring::overflow;
@@ -95,23 +110,24 @@ void layOutBlocks(World::Impl& w, const StepContext& ctx, const ColorStarts& sta
         for (int b = begin; b < stop; ++b) {
             while (b >= blockStart[color + 1]) ++color;
             Block& block = blocks[b];
+            const int lanes = std::min(width, start[color + 1] - start[color] - width * (b - blockStart[color]));
+            alignas(32) float present[2][width];  // 1 where a lane's point is a manifold point
             for (int lane = 0; lane < width; ++lane) {
-                const int position = start[color] + width * (b - blockStart[color]) + lane;
-                float* rows = block.rowData() + lane;
-                if (position >= start[color + 1]) {  // an empty lane: no mass, no impulse, the static slot
-                    block.contact[lane] = -1;
-                    block.bodyA[lane] = block.bodyB[lane] = 0;
-                    for (std::size_t field = 0; field < rowFloats; ++field) rows[field * width] = 0.0f;
-                    continue;
-                }
-                ContactConstraint& c = s.constraints[s.contactOrder[position]];
-                c.block = b;
-                c.lane = lane;
-                block.contact[lane] = c.contact;
-                block.bodyA[lane] = c.indexA;
-                block.bodyB[lane] = c.indexB;
-                prepareContactLane(w, ctx, c, rows, width);
+                const bool used = lane < lanes;
+                ContactConstraint* c = used ? &s.constraints[s.contactOrder[start[color] + width * (b - blockStart[color]) + lane]] : nullptr;
+                block.contact[lane] = used ? c->contact : -1;
+                block.bodyA[lane] = used ? c->indexA : 0;  // an empty lane: the static slot
+                block.bodyB[lane] = used ? c->indexB : 0;
+                for (int i = 0; i < 2; ++i) present[i][lane] = used && i < c->pointCount ? 1.0f : 0.0f;
+                if (!used) continue;
+                c->block = b;
+                c->lane = lane;
+                gatherContactLane(w, *c, block.rowData() + lane, width);
             }
+            deriveBlock(w, ctx, block, present);
+            // An empty lane: no mass, no impulse, nothing at all.
+            for (int lane = lanes; lane < width; ++lane)
+                for (std::size_t field = 0; field < rowFloats; ++field) block.rowData()[field * width + static_cast<std::size_t>(lane)] = 0.0f;
         }
     });
 }

@@ -63,6 +63,49 @@ inline Vec2T<F> relativeVelocity(const BodyLanes<F>& a, const BodyLanes<F>& b, V
     return pointVelocity(b.v, b.w, rB) - pointVelocity(a.v, a.w, rA);
 }
 
+// 1 / (1/mA + 1/mB + perpDot(rA,d)²/IA + perpDot(rB,d)²/IB): the effective mass along d, 0 if
+// nothing can move. `m` has the rows' invMassA, invIA, invMassB and invIB.
+template <class F, class Masses>
+F effectiveMass(const Masses& m, Vec2T<F> rA, Vec2T<F> rB, Vec2T<F> d) {
+    const F rnA = perpDot(rA, d), rnB = perpDot(rB, d);
+    const F k = m.invMassA + m.invMassB + m.invIA * rnA * rnA + m.invIB * rnB * rnB;
+    return simd::select(k > F(0.0f), F(1.0f) / k, F(0.0f));
+}
+
+// The rows' fields computed from the others, for one constraint (F = float) or a block's lanes at
+// once, after the contact's values were gathered into them (prepareContactRows, contact_prepare.hpp):
+// each point's separation in baseSeparation and its last accumulated impulses, zeros for no point.
+// a, b: the bodies' velocities without contacts (v, ω); present[i]: 1 where point i is a manifold
+// point, else 0. Warm start, rolling mass, softness (against a body that cannot move: the static
+// one), and per point base separation, approach speed and effective masses.
+template <class F>
+void deriveContactRows(ContactRows<F>& c, const BodyLanes<F>& a, const BodyLanes<F>& b, const F (&present)[2], const StepContext& ctx) {
+    using simd::select;
+    if (!ctx.enableWarmStarting) c.rollingImpulse = F(0.0f);
+    const F kRolling = c.invIA + c.invIB;
+    c.rollingMass = select(c.rollingResistance > F(0.0f), select(kRolling > F(0.0f), F(1.0f) / kRolling, F(0.0f)), F(0.0f));
+    auto soft = [&](float contactValue, float staticValue) {
+        return select(c.invMassA != F(0.0f), select(c.invMassB != F(0.0f), F(contactValue), F(staticValue)), F(staticValue));
+    };
+    c.biasRate = soft(ctx.contactSoftness.biasRate, ctx.staticSoftness.biasRate);
+    c.massScale = soft(ctx.contactSoftness.massScale, ctx.staticSoftness.massScale);
+    c.impulseScale = soft(ctx.contactSoftness.impulseScale, ctx.staticSoftness.impulseScale);
+    const Vec2T<F> n = c.normal, t = perp(n);
+    const F scale = ctx.enableWarmStarting ? 1.0f : 0.0f;
+    for (int i = 0; i < 2; ++i) {
+        ContactPointRows<F>& cp = c.points[i];
+        const simd::MaskOf<F> point = present[i] > F(0.0f);
+        const Vec2T<F> rA = cp.anchorA, rB = cp.anchorB;
+        cp.baseSeparation = select(point, cp.baseSeparation - dot(rB - rA, n), F(0.0f));
+        cp.relativeVelocity = select(point, dot(relativeVelocity(a, b, rA, rB), n), F(0.0f));
+        cp.normalImpulse = scale * cp.normalImpulse;
+        cp.tangentImpulse = scale * cp.tangentImpulse;
+        cp.maxNormalImpulse = F(0.0f);
+        cp.normalMass = select(point, effectiveMass<F>(c, rA, rB, n), F(0.0f));
+        cp.tangentMass = select(point, effectiveMass<F>(c, rA, rB, t), F(0.0f));
+    }
+}
+
 // Re-apply last step's accumulated impulses: λn n + λt perp(n) at each point, λr on the angle.
 template <class F>
 void warmStartContact(const ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b) {
@@ -227,7 +270,10 @@ bool contactLanes8Available();
 int chooseContactLanes();
 
 // The eight-lane rows (src/core/avx2/contact_solver_avx2.cpp, built where PERPDOT_AVX2 is defined):
-// contactRows8 is one pass over blocks [begin, end), as contactRows is over four-lane blocks.
+// contactRows8 is one pass over blocks [begin, end), as contactRows is over four-lane blocks;
+// deriveContactRows8 is deriveContactRows on a block's lanes, its bodies' velocities without contacts
+// in freeVelocities (by solver slot).
+void deriveContactRows8(ContactBlock8& block, const BodyState* freeVelocities, const float (&present)[2][8], const StepContext& ctx);
 void contactRows8(ContactBlock8* blocks, int begin, int end, BodyState* states, const SubstepForces* forces, const StepContext& ctx,
                   RowPass pass);
 

@@ -54,6 +54,13 @@ void scatterVelocities8(BodyState* states, const int (&slots)[8], const BodyLane
 
 }  // namespace
 
+void deriveContactRows8(ContactBlock8& block, const BodyState* freeVelocities, const float (&present)[2][8], const StepContext& ctx) {
+    const BodyLanes<Float8> a = gatherBodies8(freeVelocities, block.bodyA);
+    const BodyLanes<Float8> b = gatherBodies8(freeVelocities, block.bodyB);
+    const Float8 points[2] = {Float8(_mm256_loadu_ps(present[0])), Float8(_mm256_loadu_ps(present[1]))};
+    deriveContactRows(*reinterpret_cast<ContactRows<Float8>*>(block.rows), a, b, points, ctx);
+}
+
 namespace {
 
 // `rows(blockRows, a, b, block)` on the blocks of [begin, end) that `needs` (all by default).
