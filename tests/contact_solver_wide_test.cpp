@@ -1,10 +1,12 @@
 // The contact rows of src/core/contact_solver_wide.hpp solve four constraints in simd::Float4
 // lanes with bit for bit the results of solving them one at a time with F = float (no FMA, no
 // approximate reciprocal), including one-point manifolds, rolling resistance, restitution (the pass
-// after the substeps, which skips slow, non-pushing and inelastic points) and empty lanes.
+// after the substeps, which skips slow, non-pushing and inelastic points) and empty lanes; and so
+// does the derivation of the prepared rows from a contact's gathered values.
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cstddef>
 #include <vector>
 
 #include "core/contact_solver_wide.hpp"
@@ -116,6 +118,50 @@ TEST(ContactSolverWide, FourLanesEqualFourScalarSolves) {
                 EXPECT_TRUE(sameBits(tangent[lane], scalarRows[lane].points[i].tangentImpulse)) << lane;
             }
         }
+    }
+}
+
+// deriveContactRows (the prepared fields computed from a contact's gathered values) on four lanes
+// gives every field the bits of four derivations at F = float: one-point manifolds, a static body,
+// rolling resistance or none, with and without warm starting.
+TEST(ContactSolverWide, DerivedRowsInFourLanesEqualFourScalarDerivations) {
+    StepContext ctx;
+    ctx.contactSoftness = {30.0f, 0.8f, 0.2f};
+    ctx.staticSoftness = {60.0f, 0.9f, 0.1f};
+    Random r{123456789u};
+    for (int round = 0; round < 40; ++round) {
+        ctx.enableWarmStarting = round % 4 != 3;
+        std::vector<BodyState> free(9);
+        for (int i = 1; i < 9; ++i) free[i] = randomBody(r);
+        const int pointCounts[4] = {2, 1, 2, round % 2 == 0 ? 1 : 2};
+        std::array<ContactRows<float>, 4> rows;
+        for (int lane = 0; lane < 4; ++lane) {
+            rows[lane] = randomRows(r, pointCounts[lane], lane % 2 == 1);
+            for (int i = 0; i < pointCounts[lane]; ++i) rows[lane].points[i].baseSeparation = r(-0.05f, 0.05f);  // the separation
+        }
+        rows[2].invMassA = rows[2].invIA = 0.0f;  // body A of lane 2 is static
+        const int bodyA[4] = {1, 3, 0, 7};
+        const int bodyB[4] = {2, 4, 5, 8};
+
+        ContactRows<simd::Float4> wide;
+        packLanes<ContactRows>({&rows[0], &rows[1], &rows[2], &rows[3]}, wide);
+        float present[2][4];
+        for (int lane = 0; lane < 4; ++lane)
+            for (int i = 0; i < 2; ++i) present[i][lane] = i < pointCounts[lane] ? 1.0f : 0.0f;
+        const simd::Float4 points[2] = {simd::Float4::load(present[0]), simd::Float4::load(present[1])};
+        deriveContactRows(wide, gatherBodies(free, bodyA), gatherBodies(free, bodyB), points, ctx);
+
+        for (int lane = 0; lane < 4; ++lane) {
+            const float lanePresent[2] = {present[0][lane], present[1][lane]};
+            deriveContactRows(rows[lane], free[bodyA[lane]], free[bodyB[lane]], lanePresent, ctx);
+            const auto* scalar = reinterpret_cast<const float*>(&rows[lane]);
+            const auto* lanes = reinterpret_cast<const float*>(&wide);
+            for (std::size_t field = 0; field < rowFloats; ++field)
+                EXPECT_TRUE(sameBits(lanes[field * 4 + static_cast<std::size_t>(lane)], scalar[field]))
+                    << "round " << round << " lane " << lane << " field " << field;
+        }
+        EXPECT_GT(rows[0].points[0].normalMass, 0.0f);
+        EXPECT_EQ(rows[1].points[1].normalMass, 0.0f);  // no second point: no mass
     }
 }
 

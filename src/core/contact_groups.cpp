@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <numeric>
 
 #include "core/cholesky.hpp"
+#include "core/contact_prepare.hpp"
 #include "core/union_find.hpp"
 #include "core/world_impl.hpp"
 
@@ -67,6 +69,26 @@ bool assemble(World::Impl& w, ContactGroups& g, int group) {
     return choleskyFactor(L, n);
 }
 
+// Whether this step's constraints join the same slots with the same point counts, and the slots
+// have the same kinds, as when remember last ran.
+bool sameAsLastStep(const StepScratch& s, const ContactGroups& g) {
+    auto same = [](const auto& a, const auto& b) {  // one memcmp, not one per element
+        return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])) == 0);
+    };
+    if (!same(s.constraintSlots, g.lastSlots) || !same(g.kind, g.lastKind)) return false;
+    for (size_t k = 0; k < s.constraints.size(); ++k)
+        if (s.constraints[k].pointCount != g.lastPointCounts[k]) return false;
+    return true;
+}
+
+void remember(const StepScratch& s, ContactGroups& g, bool noneSmall) {
+    g.lastSlots = s.constraintSlots;
+    g.lastKind = g.kind;
+    g.lastPointCounts.resize(s.constraints.size());
+    for (size_t k = 0; k < s.constraints.size(); ++k) g.lastPointCounts[k] = s.constraints[k].pointCount;
+    g.noneSmall = noneSmall;
+}
+
 }  // namespace
 
 void findContactGroups(World::Impl& w, const StepContext& ctx) {
@@ -81,9 +103,15 @@ void findContactGroups(World::Impl& w, const StepContext& ctx) {
     g.matrixStart.assign(1, 0);
     // Loads are measured in g: λn K_ii / hs ≥ loadTrigger·g, i.e. λn ≥ loadTrigger·g·hs·normalMass.
     const float loadImpulse = ContactGroups::loadTrigger * length(w.def.gravity) * ctx.hs;
+    // From the contact: the rows are prepared once the groups are known (contact_prepare.hpp).
     auto loaded = [&](const ContactConstraint& c) {
-        for (int i = 0; i < c.pointCount; ++i)
-            if (c.points[i].normalImpulse >= loadImpulse * c.points[i].normalMass && c.points[i].normalMass > 0.0f) return true;
+        const Contact& contact = w.contactCache.contacts[c.contact];
+        const RowMasses m = rowMasses(w.bodies[contact.bodyA], w.bodies[contact.bodyB]);
+        for (int i = 0; i < c.pointCount; ++i) {
+            const ContactPointState& p = contact.points[i];
+            const float normalMass = effectiveMass<float>(m, p.anchorA, p.anchorB, contact.normal);
+            if (warmStartImpulse(ctx, p.normalImpulse) >= loadImpulse * normalMass && normalMass > 0.0f) return true;
+        }
         return false;
     };
     if (!(loadImpulse > 0.0f) || std::none_of(w.scratch.constraints.begin(), w.scratch.constraints.end(), loaded)) return;
@@ -97,33 +125,52 @@ void findContactGroups(World::Impl& w, const StepContext& ctx) {
         const Body& b = w.bodies[w.scratch.awakeBodies[k - 1]];
         g.kind[k] = b.type != BodyType::Dynamic ? Fixed : b.jointCount > 0 ? Jointed : Free;
     }
+    // A settled pile keeps its constraints from step to step: with last step's slots, point counts
+    // and kinds, the groups are last step's, and if none was small enough then, none is now.
+    if (g.noneSmall && sameAsLastStep(w.scratch, g)) return;
+
+    // Join the slots the constraints couple, and count each constraint's rows at its slot (its
+    // dynamic one; a slot that moves nothing stays its own root), 2 in `loaded` if it is jointed.
     g.root.resize(static_cast<size_t>(slots));
     std::iota(g.root.begin(), g.root.end(), 0);
-    for (const auto [a, b] : w.scratch.constraintSlots)
-        if (g.kind[a] != Fixed && g.kind[b] != Fixed) unite(g.root, a, b);
-    // unite keeps the smaller slot as the root, so every parent precedes its child: one sweep in
-    // slot order points every slot at its root.
-    for (int k = 0; k < slots; ++k) g.root[k] = g.root[g.root[k]];
-    // Per root: rows, and whether the group is loaded (1), not (0) or jointed (2: never direct).
     g.rowCount.assign(static_cast<size_t>(slots), 0);
     g.loaded.assign(static_cast<size_t>(slots), 0);
+    auto slotOf = [&](int k) {
+        const auto [a, b] = w.scratch.constraintSlots[k];
+        return g.kind[a] != Fixed ? a : b;
+    };
     for (int k = 0; k < count; ++k) {
         const auto [a, b] = w.scratch.constraintSlots[k];
-        const int root = g.root[g.kind[a] != Fixed ? a : b];
-        const ContactConstraint& c = w.scratch.constraints[k];
-        g.rowCount[root] += c.pointCount;
-        if (g.kind[a] == Jointed || g.kind[b] == Jointed)
-            g.loaded[root] = 2;
-        else if (g.loaded[root] == 0 && loaded(c))
-            g.loaded[root] = 1;
+        if (g.kind[a] != Fixed && g.kind[b] != Fixed) unite(g.root, a, b);
+        const int slot = slotOf(k);
+        g.rowCount[slot] += w.scratch.constraints[k].pointCount;
+        if (g.kind[a] == Jointed || g.kind[b] == Jointed) g.loaded[slot] = 2;
+    }
+    // unite keeps the smaller slot as the root, so every parent precedes its child: one sweep in
+    // slot order points every slot at its root and sums the rows there, jointed if any slot is.
+    for (int k = 0; k < slots; ++k) {
+        const int root = g.root[k] = g.root[g.root[k]];
+        if (root == k) continue;
+        g.rowCount[root] += g.rowCount[k];
+        g.loaded[root] = std::max(g.loaded[root], g.loaded[k]);
+    }
+    bool small = false;  // a group, not jointed, with no more rows than a group may have
+    for (int k = 0; k < slots; ++k)
+        small = small || (g.root[k] == k && g.loaded[k] == 0 && g.rowCount[k] > 0 && g.rowCount[k] <= ContactGroups::maxRows);
+    remember(w.scratch, g, !small);
+    if (!small) return;  // a settled pile: one group, too large
+    // Per small root: whether one of its rows is loaded (1); larger groups are never direct.
+    for (int k = 0; k < count; ++k) {
+        const int root = g.root[slotOf(k)];
+        if (g.loaded[root] == 0 && g.rowCount[root] <= ContactGroups::maxRows && loaded(w.scratch.constraints[k])) g.loaded[root] = 1;
     }
 
     // Groups in the order of their first constraint while the step's rows last; the constraints of
     // each in constraint order. Storage for the most rows is taken once, then reused.
     g.groupOf.assign(static_cast<size_t>(slots), -1);
     int groups = 0, rowsLeft = ContactGroups::maxTotalRows;
-    for (const auto [a, b] : w.scratch.constraintSlots) {
-        const int root = g.root[g.kind[a] != Fixed ? a : b], n = g.rowCount[root];
+    for (int k = 0; k < count; ++k) {
+        const int root = g.root[slotOf(k)], n = g.rowCount[root];
         if (g.loaded[root] != 1 || n > std::min(ContactGroups::maxRows, rowsLeft) || g.groupOf[root] >= 0) continue;
         g.groupOf[root] = groups++;
         rowsLeft -= n;
@@ -134,10 +181,7 @@ void findContactGroups(World::Impl& w, const StepContext& ctx) {
     g.rows.reserve(ContactGroups::maxTotalRows);
     for (std::vector<double>* v : {&g.K, &g.L}) v->reserve(static_cast<size_t>(ContactGroups::maxRows) * ContactGroups::maxTotalRows);
     g.start.assign(static_cast<size_t>(groups) + 1, 0);
-    auto groupOf = [&](int k) {
-        const auto [a, b] = w.scratch.constraintSlots[k];
-        return g.groupOf[g.root[g.kind[a] != Fixed ? a : b]];
-    };
+    auto groupOf = [&](int k) { return g.groupOf[g.root[slotOf(k)]]; };
     for (int k = 0; k < count; ++k)
         if (groupOf(k) >= 0) ++g.start[groupOf(k) + 1];
     std::partial_sum(g.start.begin(), g.start.end(), g.start.begin());
@@ -147,6 +191,7 @@ void findContactGroups(World::Impl& w, const StepContext& ctx) {
         if (const int group = groupOf(k); group >= 0) g.constraints[g.start[group] + g.rowCount[group]++] = k;
 
     // Each group's rows, K and factor; a group whose K does not factor stays with the sequential rows.
+    for (int k : g.constraints) prepareContactRows(w, ctx, w.scratch.constraints[k]);
     int kept = 0;
     for (int group = 0; group < groups; ++group) {
         const int rowsBefore = static_cast<int>(g.rows.size());

@@ -44,9 +44,16 @@ struct ContactGroups {
     std::vector<int> root, rowCount, groupOf;
     std::vector<uint8_t> kind, loaded, active;
     std::vector<double> lambda, y, x, rhs, activeK;
+    // The inputs of the last search that got as far as the group sizes: the constraints' slots and
+    // point counts, the slots' kinds, and whether no group was small enough to solve directly.
+    std::vector<std::array<int, 2>> lastSlots;
+    std::vector<int> lastPointCounts;
+    std::vector<uint8_t> lastKind;
+    bool noneSmall = false;
 };
 
-// The groups of this step's constraints to solve directly, their K factored (after prepareContact).
+// The groups of this step's constraints to solve directly (after the select of prepareContacts), their
+// rows prepared and K factored.
 void findContactGroups(World::Impl& world, const StepContext& ctx);
 // A pass of every group: warm start, or its normal rows as one system then its tangent rows.
 void contactGroupRows(World::Impl& world, const StepContext& ctx, RowPass pass);

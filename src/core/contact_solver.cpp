@@ -1,84 +1,88 @@
 // Contact constraints of a step, built from the contact cache: masses, softness, anchors, effective
 // masses and the approach speeds restitution reads. Their rows (the substeps' passes and, after them,
 // restitution) are in contact_solver_wide.{hpp,cpp}.
-#include <algorithm>
+#include <cstddef>
 
+#include "core/contact_prepare.hpp"
 #include "core/world_impl.hpp"
 
 namespace perpdot {
 
 namespace {
 
-// 1/mA + 1/mB + perpDot(rA,d)²/IA + perpDot(rB,d)²/IB: the inverse effective mass along d.
-float invEffectiveMass(const ContactConstraint& c, Vec2 rA, Vec2 rB, Vec2 d) {
-    const float rnA = perpDot(rA, d), rnB = perpDot(rB, d);
-    return c.invMassA + c.invMassB + c.invIA * rnA * rnA + c.invIB * rnB * rnB;
-}
-
 // The velocity a body would end the step with if nothing touched it: its state plus the substeps'
 // forces still to come. Restitution reverses the approach speed at the end of the step, forces
 // included: in the discrete fall a ball hits the ground with that speed, and an e = 1 bounce then
-// climbs exactly as many steps as it fell (docs/stress.md).
+// climbs exactly as many steps as it fell (docs/stress.md). Only v and ω are set.
 BodyState velocityWithoutContact(const World::Impl& w, const StepContext& ctx, int slot) {
-    BodyState s = w.scratch.states[slot];
+    const BodyState& now = w.scratch.states[slot];
     const SubstepForces& f = w.scratch.substepForces[slot];
-    s.v += static_cast<float>(ctx.substeps) * f.dv;
-    s.w += static_cast<float>(ctx.substeps) * f.dw;
+    BodyState s;
+    s.v = now.v + static_cast<float>(ctx.substeps) * f.dv;
+    s.w = now.w + static_cast<float>(ctx.substeps) * f.dw;
     return s;
 }
 
-// The constraint of a touching contact: masses, softness, anchors and effective masses.
-void prepareContact(const World::Impl& w, const StepContext& ctx, ContactConstraint& c) {
+// The contact's values of constraint c's rows, field i of ContactRows<float> written to
+// rows[i · stride] (its own rows: stride 1; its lane of a block: stride = the block's lanes), as
+// deriveContactRows (contact_solver_wide.hpp) takes them: the separation in baseSeparation, last
+// step's impulses as they were, zeros for no manifold point. With deriveContactRows every field is
+// written: a reused block or slot keeps nothing old.
+template <std::size_t stride>
+void gatherRows(const World::Impl& w, const ContactConstraint& c, float* rows) {
+    using Rows = ContactRows<float>;
+    using PointRows = ContactPointRows<float>;
+    auto set = [&](std::size_t offset, float value) { rows[offset / sizeof(float) * stride] = value; };
+    auto setVec = [&](std::size_t offset, Vec2 value) {
+        set(offset + offsetof(Vec2, x), value.x);
+        set(offset + offsetof(Vec2, y), value.y);
+    };
     const Contact& contact = w.contactCache.contacts[c.contact];
-    const Body& ba = w.bodies[contact.bodyA];
-    const Body& bb = w.bodies[contact.bodyB];
-    c.indexA = ba.solverIndex;
-    c.indexB = bb.solverIndex;
-    c.invMassA = ba.invMass;
-    c.invIA = ba.invInertia;
-    c.invMassB = bb.invMass;
-    c.invIB = bb.invInertia;
-    c.normal = contact.normal;
-    c.friction = contact.friction;
-    c.restitution = contact.restitution;
-    c.rollingResistance = contact.rollingResistance;
-    c.tangentSpeed = contact.tangentSpeed;
-    c.rollingImpulse = ctx.enableWarmStarting ? contact.rollingImpulse : 0.0f;
-    const float kRolling = c.invIA + c.invIB;
-    c.rollingMass = c.rollingResistance > 0.0f && kRolling > 0.0f ? 1.0f / kRolling : 0.0f;
-    const bool againstStatic = ba.invMass == 0.0f || bb.invMass == 0.0f;
-    const Softness& softness = againstStatic ? ctx.staticSoftness : ctx.contactSoftness;
-    c.biasRate = softness.biasRate;
-    c.massScale = softness.massScale;
-    c.impulseScale = softness.impulseScale;
-    c.pointCount = contact.pointCount;
-    c.turnsA = roundingRadius(w.shapes[contact.a.shape]) == 0.0f ? 1.0f : 0.0f;
-    c.turnsB = roundingRadius(w.shapes[contact.b.shape]) == 0.0f ? 1.0f : 0.0f;
-
-    const Vec2 n = contact.normal, t = perp(n);
-    const BodyState sa = velocityWithoutContact(w, ctx, c.indexA), sb = velocityWithoutContact(w, ctx, c.indexB);
-    for (int i = 0; i < contact.pointCount; ++i) {
+    const RowMasses m = rowMasses(w.bodies[contact.bodyA], w.bodies[contact.bodyB]);
+    set(offsetof(Rows, invMassA), m.invMassA);
+    set(offsetof(Rows, invIA), m.invIA);
+    set(offsetof(Rows, invMassB), m.invMassB);
+    set(offsetof(Rows, invIB), m.invIB);
+    setVec(offsetof(Rows, normal), contact.normal);
+    set(offsetof(Rows, friction), contact.friction);
+    set(offsetof(Rows, restitution), contact.restitution);
+    set(offsetof(Rows, rollingResistance), contact.rollingResistance);
+    set(offsetof(Rows, tangentSpeed), contact.tangentSpeed);
+    set(offsetof(Rows, rollingImpulse), contact.rollingImpulse);
+    set(offsetof(Rows, turnsA), roundingRadius(w.shapes[contact.a.shape]) == 0.0f ? 1.0f : 0.0f);
+    set(offsetof(Rows, turnsB), roundingRadius(w.shapes[contact.b.shape]) == 0.0f ? 1.0f : 0.0f);
+    for (int i = 0; i < 2; ++i) {
+        const std::size_t point = offsetof(Rows, points) + static_cast<std::size_t>(i) * sizeof(PointRows);
+        if (i >= contact.pointCount) {
+            for (std::size_t field = 0; field < sizeof(PointRows); field += sizeof(float)) set(point + field, 0.0f);
+            continue;
+        }
         const ContactPointState& p = contact.points[i];
-        ContactPointRows<float>& cp = c.points[i];
-        cp.anchorA = p.anchorA;
-        cp.anchorB = p.anchorB;
-        cp.baseSeparation = p.separation - dot(p.anchorB - p.anchorA, n);
-        const float scale = ctx.enableWarmStarting ? 1.0f : 0.0f;
-        cp.normalImpulse = scale * p.normalImpulse;
-        cp.tangentImpulse = scale * p.tangentImpulse;
-        cp.maxNormalImpulse = 0.0f;
-        const float kn = invEffectiveMass(c, p.anchorA, p.anchorB, n);
-        const float kt = invEffectiveMass(c, p.anchorA, p.anchorB, t);
-        cp.normalMass = kn > 0.0f ? 1.0f / kn : 0.0f;
-        cp.tangentMass = kt > 0.0f ? 1.0f / kt : 0.0f;
-        cp.relativeVelocity = dot(relativeVelocity(sa, sb, p.anchorA, p.anchorB), n);
+        setVec(point + offsetof(PointRows, anchorA), p.anchorA);
+        setVec(point + offsetof(PointRows, anchorB), p.anchorB);
+        set(point + offsetof(PointRows, baseSeparation), p.separation);
+        set(point + offsetof(PointRows, normalImpulse), p.normalImpulse);
+        set(point + offsetof(PointRows, tangentImpulse), p.tangentImpulse);
     }
-    for (int i = contact.pointCount; i < 2; ++i) c.points[i] = {};  // a reused slot keeps no old point
 }
 
 }  // namespace
 
-// The touching contacts with an awake body, in pool order, selected and prepared by the workers.
+void prepareContactRows(const World::Impl& w, const StepContext& ctx, ContactConstraint& c) {
+    gatherRows<1>(w, c, c.rowData());
+    const float present[2] = {c.pointCount > 0 ? 1.0f : 0.0f, c.pointCount > 1 ? 1.0f : 0.0f};
+    deriveContactRows(static_cast<ContactRows<float>&>(c), w.scratch.freeVelocities[c.indexA], w.scratch.freeVelocities[c.indexB],
+                      present, ctx);
+}
+
+void gatherContactLane(const World::Impl& w, const ContactConstraint& c, float* lane, int lanes) {
+    if (lanes == 8) gatherRows<8>(w, c, lane);
+    else gatherRows<4>(w, c, lane);
+}
+
+// The touching contacts with an awake body, in pool order, selected by the workers: their
+// contacts and bodies' solver slots. Their rows are prepared once their place is known: in a block
+// (prepareContactBlocks), with the overflow or in a contact group.
 void prepareContacts(World::Impl& w, const StepContext& ctx) {
     StepScratch& s = w.scratch;
     auto constrains = [&](int index) {
@@ -92,13 +96,21 @@ void prepareContacts(World::Impl& w, const StepContext& ctx) {
             s.constraintSlots.resize(total);
         },
         [&](int k, int index) {
+            const Contact& contact = w.contactCache.contacts[index];
             ContactConstraint& c = s.constraints[k];
             c.contact = index;
-            prepareContact(w, ctx, c);
+            c.indexA = w.bodies[contact.bodyA].solverIndex;
+            c.indexB = w.bodies[contact.bodyB].solverIndex;
+            c.pointCount = contact.pointCount;
+            c.block = -1;
             s.constraintSlots[k] = {c.indexA, c.indexB};
         });
+    s.freeVelocities.resize(s.states.size());
+    w.workers.parallelFor(static_cast<int>(s.states.size()), 256, [&](int begin, int end, int) {
+        for (int slot = begin; slot < end; ++slot) s.freeVelocities[slot] = velocityWithoutContact(w, ctx, slot);
+    });
     findContactGroups(w, ctx);
-    prepareContactBlocks(w);
+    prepareContactBlocks(w, ctx);
 }
 
 }  // namespace perpdot

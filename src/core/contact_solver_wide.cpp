@@ -9,7 +9,7 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "core/pack_lanes.hpp"
+#include "core/contact_prepare.hpp"
 #include "core/world_impl.hpp"
 
 namespace perpdot {
@@ -77,10 +77,25 @@ void passContacts(World::Impl& w, const StepContext& ctx, RowPass pass, int begi
 
 namespace {
 
+// deriveContactRows on a block's lanes: four here, eight in the AVX2 file.
+void deriveBlock(World::Impl& w, const StepContext& ctx, ContactBlock& block, const float (&present)[2][4]) {
+    const BodyLanes<Float4> a = gatherBodies(w.scratch.freeVelocities, block.bodyA);
+    const BodyLanes<Float4> b = gatherBodies(w.scratch.freeVelocities, block.bodyB);
+    const Float4 points[2] = {Float4::load(present[0]), Float4::load(present[1])};
+    deriveContactRows(block.rows, a, b, points, ctx);
+}
+
+#ifdef PERPDOT_AVX2
+void deriveBlock(World::Impl& w, const StepContext& ctx, ContactBlock8& block, const float (&present)[2][8]) {
+    deriveContactRows8(block, w.scratch.freeVelocities.data(), present, ctx);
+}
+#endif
+
 // Blocks of Block::lanes constraints of one colour, in colour order (the last block of a colour
-// may have empty lanes); `pack(lanes, block)` writes a block's rows.
-template <class Block, class Pack>
-void layOutBlocks(World::Impl& w, const ColorStarts& start, std::vector<Block>& blocks, Pack pack) {
+// may have empty lanes): each lane's contact values gathered straight into it, then the block's
+// rows derived lanes at once (contact_prepare.hpp).
+template <class Block>
+void layOutBlocks(World::Impl& w, const StepContext& ctx, const ColorStarts& start, std::vector<Block>& blocks) {
     constexpr int overflow = GraphColoring::overflow;
     constexpr int width = Block::lanes;
     StepScratch& s = w.scratch;
@@ -89,24 +104,30 @@ void layOutBlocks(World::Impl& w, const ColorStarts& start, std::vector<Block>& 
     for (int color = 0; color <= overflow; ++color)
         blockStart[color + 1] = blockStart[color] + (color < overflow ? (start[color + 1] - start[color] + width - 1) / width : 0);
     blocks.resize(static_cast<size_t>(blockStart[overflow]));  // reused memory: every field is rewritten
-    static const ContactRows<float> emptyLane;  // no mass, no impulse: leaves the bodies alone
     // Block b of colour c holds the constraints contactOrder[start[c] + width (b − blockStart[c]) ...].
     w.workers.parallelFor(static_cast<int>(blocks.size()), 128 / width, [&](int begin, int stop, int) {
         int color = static_cast<int>(std::upper_bound(blockStart.begin(), blockStart.end(), begin) - blockStart.begin()) - 1;
         for (int b = begin; b < stop; ++b) {
             while (b >= blockStart[color + 1]) ++color;
             Block& block = blocks[b];
-            const ContactRows<float>* lanes[width];
+            const int lanes = std::min(width, start[color + 1] - start[color] - width * (b - blockStart[color]));
+            alignas(32) float present[2][width];  // 1 where a lane's point is a manifold point
             for (int lane = 0; lane < width; ++lane) {
-                const int position = start[color] + width * (b - blockStart[color]) + lane;
-                const int index = position < start[color + 1] ? s.contactOrder[position] : -1;
-                const ContactConstraint* c = index < 0 ? nullptr : &s.constraints[index];
-                block.contact[lane] = c ? c->contact : -1;
-                block.bodyA[lane] = c ? c->indexA : 0;
-                block.bodyB[lane] = c ? c->indexB : 0;
-                lanes[lane] = c ? c : &emptyLane;
+                const bool used = lane < lanes;
+                ContactConstraint* c = used ? &s.constraints[s.contactOrder[start[color] + width * (b - blockStart[color]) + lane]] : nullptr;
+                block.contact[lane] = used ? c->contact : -1;
+                block.bodyA[lane] = used ? c->indexA : 0;  // an empty lane: the static slot
+                block.bodyB[lane] = used ? c->indexB : 0;
+                for (int i = 0; i < 2; ++i) present[i][lane] = used && i < c->pointCount ? 1.0f : 0.0f;
+                if (!used) continue;
+                c->block = b;
+                c->lane = lane;
+                gatherContactLane(w, *c, block.rowData() + lane, width);
             }
-            pack(lanes, block);
+            deriveBlock(w, ctx, block, present);
+            // An empty lane: no mass, no impulse, nothing at all.
+            for (int lane = lanes; lane < width; ++lane)
+                for (std::size_t field = 0; field < rowFloats; ++field) block.rowData()[field * width + static_cast<std::size_t>(lane)] = 0.0f;
         }
     });
 }
@@ -116,10 +137,10 @@ void layOutBlocks(World::Impl& w, const ColorStarts& start, std::vector<Block>& 
 // Colour the constraints in order, in the colouring the joints began (prepareJoints: one graph, so
 // a colour's joints and contacts share no moving body either), then lay them out colour by colour
 // (Box2D v3's solve order: it keeps stacks as stiff as the plain constraint order does), four or
-// eight to a block; overflow last. The lane width changes no result: a colour's constraints share
-// no moving body. The constraints of contact groups solved directly (contact_groups.hpp) take no
-// colour.
-void prepareContactBlocks(World::Impl& w) {
+// eight to a block; overflow last, prepared into their own rows. The lane width changes no result:
+// a colour's constraints share no moving body. The constraints of contact groups solved directly
+// (contact_groups.hpp) take no colour: their groups prepared them.
+void prepareContactBlocks(World::Impl& w, const StepContext& ctx) {
     StepScratch& s = w.scratch;
     constexpr int overflow = GraphColoring::overflow;
     const int count = static_cast<int>(s.constraints.size());
@@ -131,18 +152,26 @@ void prepareContactBlocks(World::Impl& w) {
     }
     const ColorStarts start = sortByColor(s.contactColors, s.contactOrder);
 #ifdef PERPDOT_AVX2
-    if (s.contactLanes == 8)
-        layOutBlocks(w, start, s.contactBlocks8, [](const ContactRows<float>* const (&lanes)[8], ContactBlock8& block) {
-            packContactRows8(lanes, block);
-        });
+    if (s.contactLanes == 8) layOutBlocks(w, ctx, start, s.contactBlocks8);
     else
 #endif
-        layOutBlocks(w, start, s.contactBlocks, [](const ContactRows<float>* const (&lanes)[4], ContactBlock& block) {
-            packLanes(lanes, block.rows);
-        });
+        layOutBlocks(w, ctx, start, s.contactBlocks);
     s.overflowConstraints.clear();
-    for (int position = start[overflow]; position < count; ++position)
-        if (!direct[s.contactOrder[position]]) s.overflowConstraints.push_back(s.contactOrder[position]);
+    for (int position = start[overflow]; position < count; ++position) {
+        const int index = s.contactOrder[position];
+        if (direct[index]) continue;
+        s.overflowConstraints.push_back(index);
+        prepareContactRows(w, ctx, s.constraints[index]);
+    }
+}
+
+// Field `field` (a float index, pointField) of constraint c's rows, in its lane or its own rows.
+float contactRowField(const World::Impl& w, const ContactConstraint& c, std::size_t field) {
+    if (c.block < 0) return c.rowData()[field];
+#ifdef PERPDOT_AVX2
+    if (w.scratch.contactLanes == 8) return w.scratch.contactBlocks8[c.block].rowData()[field * ContactBlock8::lanes + c.lane];
+#endif
+    return w.scratch.contactBlocks[c.block].rowData()[field * ContactBlock::lanes + c.lane];
 }
 
 int contactBlockCount(const World::Impl& w, int color) {
@@ -163,13 +192,8 @@ void serialContactRows(World::Impl& w, const StepContext& ctx, RowPass pass) { p
 
 namespace {
 
-// Where a field of ContactRows<float> is, in floats: in a block of N lanes, lane l of it is float
-// (that index)·N + l of the rows (contact_solver_wide.hpp).
+// Where the rolling impulse is, in floats (as pointField, contact_solver_wide.hpp).
 constexpr std::size_t rollingField = offsetof(ContactRows<float>, rollingImpulse) / sizeof(float);
-constexpr std::size_t pointField(int point, std::size_t memberOffset) {
-    return (offsetof(ContactRows<float>, points) + static_cast<std::size_t>(point) * sizeof(ContactPointRows<float>) +
-            memberOffset) / sizeof(float);
-}
 
 // A block's accumulated impulses straight from its lanes into its contacts.
 template <class Block>

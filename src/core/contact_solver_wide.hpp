@@ -63,6 +63,49 @@ inline Vec2T<F> relativeVelocity(const BodyLanes<F>& a, const BodyLanes<F>& b, V
     return pointVelocity(b.v, b.w, rB) - pointVelocity(a.v, a.w, rA);
 }
 
+// 1 / (1/mA + 1/mB + perpDot(rA,d)²/IA + perpDot(rB,d)²/IB): the effective mass along d, 0 if
+// nothing can move. `m` has the rows' invMassA, invIA, invMassB and invIB.
+template <class F, class Masses>
+F effectiveMass(const Masses& m, Vec2T<F> rA, Vec2T<F> rB, Vec2T<F> d) {
+    const F rnA = perpDot(rA, d), rnB = perpDot(rB, d);
+    const F k = m.invMassA + m.invMassB + m.invIA * rnA * rnA + m.invIB * rnB * rnB;
+    return simd::select(k > F(0.0f), F(1.0f) / k, F(0.0f));
+}
+
+// The rows' fields computed from the others, for one constraint (F = float) or a block's lanes at
+// once, after the contact's values were gathered into them (prepareContactRows, contact_prepare.hpp):
+// each point's separation in baseSeparation and its last accumulated impulses, zeros for no point.
+// a, b: the bodies' velocities without contacts (v, ω); present[i]: 1 where point i is a manifold
+// point, else 0. Warm start, rolling mass, softness (against a body that cannot move: the static
+// one), and per point base separation, approach speed and effective masses.
+template <class F>
+void deriveContactRows(ContactRows<F>& c, const BodyLanes<F>& a, const BodyLanes<F>& b, const F (&present)[2], const StepContext& ctx) {
+    using simd::select;
+    if (!ctx.enableWarmStarting) c.rollingImpulse = F(0.0f);
+    const F kRolling = c.invIA + c.invIB;
+    c.rollingMass = select(c.rollingResistance > F(0.0f), select(kRolling > F(0.0f), F(1.0f) / kRolling, F(0.0f)), F(0.0f));
+    auto soft = [&](float contactValue, float staticValue) {
+        return select(c.invMassA != F(0.0f), select(c.invMassB != F(0.0f), F(contactValue), F(staticValue)), F(staticValue));
+    };
+    c.biasRate = soft(ctx.contactSoftness.biasRate, ctx.staticSoftness.biasRate);
+    c.massScale = soft(ctx.contactSoftness.massScale, ctx.staticSoftness.massScale);
+    c.impulseScale = soft(ctx.contactSoftness.impulseScale, ctx.staticSoftness.impulseScale);
+    const Vec2T<F> n = c.normal, t = perp(n);
+    const F scale = ctx.enableWarmStarting ? 1.0f : 0.0f;
+    for (int i = 0; i < 2; ++i) {
+        ContactPointRows<F>& cp = c.points[i];
+        const simd::MaskOf<F> point = present[i] > F(0.0f);
+        const Vec2T<F> rA = cp.anchorA, rB = cp.anchorB;
+        cp.baseSeparation = select(point, cp.baseSeparation - dot(rB - rA, n), F(0.0f));
+        cp.relativeVelocity = select(point, dot(relativeVelocity(a, b, rA, rB), n), F(0.0f));
+        cp.normalImpulse = scale * cp.normalImpulse;
+        cp.tangentImpulse = scale * cp.tangentImpulse;
+        cp.maxNormalImpulse = F(0.0f);
+        cp.normalMass = select(point, effectiveMass<F>(c, rA, rB, n), F(0.0f));
+        cp.tangentMass = select(point, effectiveMass<F>(c, rA, rB, t), F(0.0f));
+    }
+}
+
 // Re-apply last step's accumulated impulses: λn n + λt perp(n) at each point, λr on the angle.
 template <class F>
 void warmStartContact(const ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b) {
@@ -183,6 +226,13 @@ void restituteContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, Vec2T
 // N floats each, in the same order: field i of lane l is float i·N + l of the rows (pack_lanes.hpp).
 constexpr std::size_t rowFloats = rowFloatsOf<ContactRows>();
 
+// Where a point's field of ContactRows<float> is, in floats (memberOffset: its offsetof in
+// ContactPointRows<float>): in a block of N lanes, lane l of it is float (that index)·N + l.
+constexpr std::size_t pointField(int point, std::size_t memberOffset) {
+    return (offsetof(ContactRows<float>, points) + static_cast<std::size_t>(point) * sizeof(ContactPointRows<float>) + memberOffset) /
+           sizeof(float);
+}
+
 // Whether any lane of a block's rows (rowData(), `lanes` wide) has restitution: blocks without
 // any skip the restitution pass, gathers and all.
 inline bool anyElastic(const float* rows, int lanes) {
@@ -199,6 +249,7 @@ struct ContactBlock {
     int contact[4] = {-1, -1, -1, -1};     // index in World::Impl::contacts; -1: an empty lane
     int bodyA[4] = {}, bodyB[4] = {};      // solver slots; an empty lane uses the static slot 0
     const float* rowData() const { return reinterpret_cast<const float*>(&rows); }
+    float* rowData() { return reinterpret_cast<float*>(&rows); }
 };
 
 // Eight constraints of one colour, for CPUs with AVX2 (contact_solver_avx2.cpp): the rows are
@@ -209,6 +260,7 @@ struct ContactBlock8 {
     int contact[8] = {-1, -1, -1, -1, -1, -1, -1, -1};
     int bodyA[8] = {}, bodyB[8] = {};
     const float* rowData() const { return rows; }
+    float* rowData() { return rows; }
 };
 
 
@@ -218,9 +270,10 @@ bool contactLanes8Available();
 int chooseContactLanes();
 
 // The eight-lane rows (src/core/avx2/contact_solver_avx2.cpp, built where PERPDOT_AVX2 is defined):
-// packContactRows8 packs eight constraints' rows into a block's lanes; contactRows8 is one pass
-// over blocks [begin, end), as contactRows is over four-lane blocks.
-void packContactRows8(const ContactRows<float>* const (&lanes)[8], ContactBlock8& block);
+// contactRows8 is one pass over blocks [begin, end), as contactRows is over four-lane blocks;
+// deriveContactRows8 is deriveContactRows on a block's lanes, its bodies' velocities without contacts
+// in freeVelocities (by solver slot).
+void deriveContactRows8(ContactBlock8& block, const BodyState* freeVelocities, const float (&present)[2][8], const StepContext& ctx);
 void contactRows8(ContactBlock8* blocks, int begin, int end, BodyState* states, const SubstepForces* forces, const StepContext& ctx,
                   RowPass pass);
 

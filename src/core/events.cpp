@@ -1,6 +1,7 @@
 // Contact, sensor and hit events raised by the step into the world's EventBuffers
 // (event_buffers.hpp), and read after it through spans.
 #include <algorithm>
+#include <cstddef>
 
 #include "core/world_impl.hpp"
 
@@ -40,10 +41,10 @@ void reportHitEvents(World::Impl& w) {
     for (const ContactConstraint& c : w.scratch.constraints) {
         const Contact& contact = w.contactCache.contacts[c.contact];
         if (!w.shapes[contact.a.shape].enableHitEvents && !w.shapes[contact.b.shape].enableHitEvents) continue;
-        ContactHitEvent event{w.shapeId(contact.a.shape), w.shapeId(contact.b.shape), {}, c.normal, w.def.hitEventThreshold};
+        ContactHitEvent event{w.shapeId(contact.a.shape), w.shapeId(contact.b.shape), {}, contact.normal, w.def.hitEventThreshold};
         bool hit = false;
         for (int i = 0; i < c.pointCount; ++i) {
-            const float approachSpeed = -c.points[i].relativeVelocity;
+            const float approachSpeed = -contactRowField(w, c, pointField(i, offsetof(ContactPointRows<float>, relativeVelocity)));
             if (approachSpeed > event.approachSpeed && contact.points[i].maxNormalImpulse > 0.0f) {
                 event.approachSpeed = approachSpeed;
                 event.point = contact.points[i].point;

@@ -1,6 +1,5 @@
 #include "core/graph_color.hpp"
 
-#include <bit>
 #include <cstddef>
 
 namespace perpdot {
@@ -8,17 +7,6 @@ namespace perpdot {
 static_assert(GraphColoring::colorCount <= 16, "one bit per colour in a uint16_t");
 
 void GraphColoring::reset(int bodyCount) { used_.assign(static_cast<size_t>(bodyCount), 0); }
-
-int GraphColoring::assign(int bodyA, int bodyB) {
-    const unsigned usedA = bodyA == 0 ? 0u : used_[bodyA];
-    const unsigned usedB = bodyB == 0 ? 0u : used_[bodyB];
-    const int color = std::countr_one(usedA | usedB);  // lowest colour free at both
-    if (color >= colorCount) return overflow;
-    const auto bit = static_cast<uint16_t>(1u << color);
-    if (bodyA != 0) used_[bodyA] |= bit;
-    if (bodyB != 0) used_[bodyB] |= bit;
-    return color;
-}
 
 ColorStarts sortByColor(const std::vector<int>& colors, std::vector<int>& order) {
     ColorStarts start{};

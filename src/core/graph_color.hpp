@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <vector>
 
@@ -17,8 +18,18 @@ public:
     // Forget all colours; bodies are solver slots 0..bodyCount-1, slot 0 the shared static body.
     void reset(int bodyCount);
     // The lowest colour used by neither body (0 for a static one), now taken at both; overflow if
-    // every colour is taken. Deterministic: depends only on the order of the calls.
-    int assign(int bodyA, int bodyB);
+    // every colour is taken. Deterministic: depends only on the order of the calls. Inline: it
+    // runs once for every constraint of a step.
+    int assign(int bodyA, int bodyB) {
+        const unsigned usedA = bodyA == 0 ? 0u : used_[bodyA];
+        const unsigned usedB = bodyB == 0 ? 0u : used_[bodyB];
+        const int color = std::countr_one(usedA | usedB);  // lowest colour free at both
+        if (color >= colorCount) return overflow;
+        const auto bit = static_cast<uint16_t>(1u << color);
+        if (bodyA != 0) used_[bodyA] |= bit;
+        if (bodyB != 0) used_[bodyB] |= bit;
+        return color;
+    }
 
 private:
     std::vector<uint16_t> used_;  // per body: bit k set when a constraint of colour k touches it

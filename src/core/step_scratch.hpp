@@ -17,12 +17,16 @@
 
 namespace perpdot {
 
-// A contact's rows for this step (ContactRows<float>, contact_solver_wide.hpp) and where they
-// came from: the bodies' solver slots and the contact.
+// A contact's constraint for this step: where it came from (the contact, the bodies' solver
+// slots) and where its rows are (ContactRows<float>, contact_solver_wide.hpp): a lane of a block
+// (contactBlocks or contactBlocks8), or these rows when it has no colour (overflow, contact groups).
 struct ContactConstraint : ContactRows<float> {
     int indexA = 0, indexB = 0;  // solver slots
     int contact = -1;
     int pointCount = 0;
+    int block = -1, lane = 0;  // block -1: these rows
+    const float* rowData() const { return reinterpret_cast<const float*>(static_cast<const ContactRows<float>*>(this)); }
+    float* rowData() { return reinterpret_cast<float*>(static_cast<ContactRows<float>*>(this)); }
 };
 
 // A body's path over the rest of a step, for continuous collision between moving bodies
@@ -60,6 +64,7 @@ struct StepScratch {
     std::vector<float> stepRotation;    // Δθ of states[i], summed over substeps
     std::vector<uint8_t> bodyMotion;    // finalizeBodies scratch, by awake body: its Motion (integrate.cpp)
     std::vector<SubstepForces> substepForces;  // of states[i]
+    std::vector<BodyState> freeVelocities;     // of states[i]: v and ω at the step's end without contacts (contact_solver.cpp)
     std::vector<ContactConstraint> constraints;
     std::vector<std::array<int, 2>> constraintSlots;  // by constraint: its bodies' solver slots, for colouring
     GraphColoring coloring;  // one constraint graph: the colours of joints, then of `constraints` (graph_color.hpp)

@@ -3,6 +3,7 @@
 // step's working arrays (step_scratch.hpp).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -74,7 +75,7 @@ struct World::Impl {
 // Contact solver stages (contact_solver.cpp, and contact_solver_wide.cpp for the rows solved in
 // graph-coloured blocks of four).
 void prepareContacts(World::Impl& world, const StepContext& ctx);
-void prepareContactBlocks(World::Impl& world);
+void prepareContactBlocks(World::Impl& world, const StepContext& ctx);
 // The blocks of colour `color` (below GraphColoring::overflow) in a pass: they share no moving
 // body, so they run in any order or side by side; then the overflow constraints, one by one.
 int contactBlockCount(const World::Impl& world, int color);
@@ -83,6 +84,8 @@ void serialContactRows(World::Impl& world, const StepContext& ctx, RowPass pass)
 // The accumulated impulses, restitution's included, into the contacts (the blocks' straight from
 // their lanes).
 void storeContactImpulses(World::Impl& world);
+// Field `field` (a float index of ContactRows<float>, pointField) of constraint c's rows.
+float contactRowField(const World::Impl& world, const ContactConstraint& c, std::size_t field);
 void reportHitEvents(World::Impl& world);
 
 }  // namespace perpdot

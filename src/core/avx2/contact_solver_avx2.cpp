@@ -58,18 +58,11 @@ namespace {
 
 }  // namespace
 
-void packContactRows8(const ContactRows<float>* const (&lanes)[8], ContactBlock8& block) {
-    for (std::size_t k = 0; k < rowFloats; k += 4) {
-        const std::size_t first = k + 4 <= rowFloats ? k : rowFloats - 4;  // the last run overlaps the one before
-        __m128 low[4], high[4];
-        for (int i = 0; i < 4; ++i) {
-            low[i] = _mm_loadu_ps(reinterpret_cast<const float*>(lanes[i]) + first);
-            high[i] = _mm_loadu_ps(reinterpret_cast<const float*>(lanes[i + 4]) + first);
-        }
-        _MM_TRANSPOSE4_PS(low[0], low[1], low[2], low[3]);
-        _MM_TRANSPOSE4_PS(high[0], high[1], high[2], high[3]);
-        for (int j = 0; j < 4; ++j) Float8::join(low[j], high[j]).store(block.rows + (first + j) * 8);
-    }
+void deriveContactRows8(ContactBlock8& block, const BodyState* freeVelocities, const float (&present)[2][8], const StepContext& ctx) {
+    const BodyLanes<Float8> a = gatherBodies8(freeVelocities, block.bodyA);
+    const BodyLanes<Float8> b = gatherBodies8(freeVelocities, block.bodyB);
+    const Float8 points[2] = {Float8(_mm256_loadu_ps(present[0])), Float8(_mm256_loadu_ps(present[1]))};
+    deriveContactRows(*reinterpret_cast<ContactRows<Float8>*>(block.rows), a, b, points, ctx);
 }
 
 namespace {

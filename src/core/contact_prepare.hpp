@@ -1,0 +1,35 @@
+// Preparing a contact constraint's rows (contact_solver.cpp): the contact's values gathered into
+// its own ContactRows<float> (the overflow colour, contact groups) or straight into its lane of a
+// block once the colouring has placed it, then the fields computed from them (deriveContactRows,
+// contact_solver_wide.hpp) for one constraint or for a block's lanes at once. The masses, warm
+// start and effective mass are shared with the contact groups' load test, which reads them before
+// any rows exist.
+#pragma once
+
+#include "core/body_store.hpp"
+#include "core/contact_solver_wide.hpp"
+#include "core/step_context.hpp"
+#include "perpdot/world.hpp"
+
+namespace perpdot {
+
+struct ContactConstraint;
+
+// The inverse masses and inertias of a constraint's bodies.
+struct RowMasses {
+    float invMassA, invIA, invMassB, invIB;
+};
+
+inline RowMasses rowMasses(const Body& a, const Body& b) { return {a.invMass, a.invInertia, b.invMass, b.invInertia}; }
+
+// Last step's accumulated impulse, the warm start of this step's (0 without warm starting).
+inline float warmStartImpulse(const StepContext& ctx, float impulse) { return (ctx.enableWarmStarting ? 1.0f : 0.0f) * impulse; }
+
+// The rows of constraint c (its contact and solver slots set, StepScratch::freeVelocities filled):
+// its own rows, gathered and derived (deriveContactRows, contact_solver_wide.hpp); or the gather
+// alone into its lane of a block of `lanes` (4 or 8), field i at lane[i · lanes] (pack_lanes.hpp),
+// the block's lanes to be derived together.
+void prepareContactRows(const World::Impl& world, const StepContext& ctx, ContactConstraint& c);
+void gatherContactLane(const World::Impl& world, const ContactConstraint& c, float* lane, int lanes);
+
+}  // namespace perpdot
