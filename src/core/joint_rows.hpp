@@ -89,6 +89,34 @@ inline void solveMotorRow(JointPairT<F>& p, const RowT<F>& r, F mass, F speed, F
     lambda = newLambda;
 }
 
+// A row that only some of a joint's instances have (a motor, a limit). One joint: solved if it has
+// it. Four joints in lanes: solved on all four, then the lanes without it take back their
+// velocities and impulses bit for bit, as if the row had been skipped (even applying a zero
+// impulse would turn a velocity of −0 into +0).
+template <class Solve, class... Lambda>
+inline void solveWhere(bool enabled, JointPair&, Solve solve, Lambda&...) {
+    if (enabled) solve();
+}
+
+template <class Solve, class... Lambda>
+inline void solveWhere(simd::Mask4 enabled, JointPairT<simd::Float4>& p, Solve solve, Lambda&... lambdas) {
+    using simd::select;
+    if (simd::noLane(enabled)) return;
+    if (simd::allLanes(enabled)) {
+        solve();
+        return;
+    }
+    const BodyLanes<simd::Float4> a = p.a, b = p.b;
+    const simd::Float4 before[] = {lambdas...};
+    solve();
+    p.a.v = {select(enabled, p.a.v.x, a.v.x), select(enabled, p.a.v.y, a.v.y)};
+    p.a.w = select(enabled, p.a.w, a.w);
+    p.b.v = {select(enabled, p.b.v.x, b.v.x), select(enabled, p.b.v.y, b.v.y)};
+    p.b.w = select(enabled, p.b.w, b.w);
+    int i = 0;
+    ((lambdas = select(enabled, lambdas, before[i++])), ...);
+}
+
 // --- Point rows: B's anchor held on A's, both directions at once. ---
 
 template <class F>
