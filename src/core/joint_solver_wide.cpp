@@ -48,15 +48,6 @@ RevoluteBlock packRevoluteBlock(const std::array<const PreparedJoint*, 4>& lanes
     return block;
 }
 
-simd::Float4 laneRotation(const RevoluteBlock& block, const std::vector<float>& stepRotation) {
-    float a[4], b[4];
-    for (int lane = 0; lane < 4; ++lane) {
-        a[lane] = stepRotation[block.bodyA[lane]];
-        b[lane] = stepRotation[block.bodyB[lane]];
-    }
-    return simd::Float4::load(b) - simd::Float4::load(a);
-}
-
 void unpackRevoluteImpulses(const RevoluteBlock& block, std::span<Joint> joints) {
     float x[4], y[4], motor[4], lower[4], upper[4];
     block.rows.linearImpulse.x.store(x);

@@ -45,8 +45,8 @@ inline RevoluteRows<float> revoluteRows(const PreparedJoint& j) {
 }
 inline RevoluteAngleRows<float> revoluteAngleRows(const PreparedJoint& j) {
     const RevoluteJoint& r = j.data.as<RevoluteJoint>();
-    return {j.deltaAngle,   r.axialMass,  r.motorSpeed, r.maxMotorTorque, r.lowerAngle,
-            r.upperAngle, r.enableMotor ? 1.0f : 0.0f, r.enableLimit ? 1.0f : 0.0f};
+    return {j.deltaAngle, r.axialMass, r.motorSpeed, r.maxMotorTorque, r.lowerAngle, r.upperAngle,
+            r.enableMotor ? 1.0f : 0.0f, r.enableLimit ? 1.0f : 0.0f};
 }
 inline void storeImpulses(const RevoluteRows<float>& rows, RevoluteJoint& r) {
     r.linearImpulse = rows.linearImpulse;
@@ -107,14 +107,22 @@ struct RevoluteBlock {
     int joint[4] = {-1, -1, -1, -1};   // index in JointStore::joints; -1: an empty lane
     int bodyA[4] = {}, bodyB[4] = {};  // solver slots; an empty lane uses the static slot 0
     bool angleRows = false;            // whether a lane has a motor or a limit
-    RevoluteAngleRows<simd::Float4> angle;  // packed only where angleRows: last, out of the point rows' way
+    // Packed only where angleRows; last, away from what every block reads.
+    RevoluteAngleRows<simd::Float4> angle;
 };
 
 // Four prepared joints as lanes; joints[i] = -1 marks an empty lane, whose PreparedJoint should
 // have no mass (it then moves nothing).
 RevoluteBlock packRevoluteBlock(const std::array<const PreparedJoint*, 4>& lanes, const std::array<int, 4>& joints);
 // (θB − θA) turned since the step began, of each lane's bodies.
-simd::Float4 laneRotation(const RevoluteBlock& block, const std::vector<float>& stepRotation);
+inline simd::Float4 laneRotation(const RevoluteBlock& block, const std::vector<float>& stepRotation) {
+    float a[4], b[4];
+    for (int lane = 0; lane < 4; ++lane) {
+        a[lane] = stepRotation[block.bodyA[lane]];
+        b[lane] = stepRotation[block.bodyB[lane]];
+    }
+    return simd::Float4::load(b) - simd::Float4::load(a);
+}
 // One pass of a block's rows (p.rotation is set here): all of them where a lane has a motor or a
 // limit, else the point rows alone.
 inline void solveRevoluteBlock(RevoluteBlock& block, JointPairT<simd::Float4>& p, const std::vector<float>& stepRotation,
