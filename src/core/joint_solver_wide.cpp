@@ -48,13 +48,17 @@ RevoluteBlock packRevoluteBlock(const std::array<const PreparedJoint*, 4>& lanes
     return block;
 }
 
+// The point rows' λ back to each lane's joint; where the block has angle rows, theirs too, and for
+// a joint with a motor or a limit the axial mass prepareRevolute wrote, which snapshots carry and
+// such a joint has always kept (one with the point rows alone never has).
 void unpackRevoluteImpulses(const RevoluteBlock& block, std::span<Joint> joints) {
-    float x[4], y[4], motor[4], lower[4], upper[4];
+    float x[4], y[4], motor[4], lower[4], upper[4], axialMass[4];
     block.rows.linearImpulse.x.store(x);
     block.rows.linearImpulse.y.store(y);
     block.rows.motorImpulse.store(motor);
     block.rows.lowerImpulse.store(lower);
     block.rows.upperImpulse.store(upper);
+    block.angle.axialMass.store(axialMass);
     for (int lane = 0; lane < 4; ++lane) {
         if (block.joint[lane] < 0) continue;
         RevoluteJoint& r = joints[block.joint[lane]].data.as<RevoluteJoint>();
@@ -63,6 +67,7 @@ void unpackRevoluteImpulses(const RevoluteBlock& block, std::span<Joint> joints)
         r.motorImpulse = motor[lane];
         r.lowerImpulse = lower[lane];
         r.upperImpulse = upper[lane];
+        if (r.enableMotor || r.enableLimit) r.axialMass = axialMass[lane];
     }
 }
 
