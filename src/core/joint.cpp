@@ -203,17 +203,17 @@ void prepareJoints(World::Impl& w, const StepContext& ctx) {
     coloring.reset(static_cast<int>(w.scratch.states.size()));
     // Joints of revolute trees take no colour: they are solved directly (joint_tree.hpp).
     findRevoluteTrees(d.trees, d.prepared, static_cast<int>(w.scratch.states.size()));
-    std::array<int, overflow + 1> laneCount{}, pointLaneCount{}, scalarCount{};
+    std::array<int, overflow + 1> pointLaneCount{}, angleLaneCount{}, scalarCount{};
     for (int k = 0; k < count; ++k) {
         if (d.trees.inTree[k]) continue;
         const PreparedJoint& j = d.prepared[k];
         const int color = d.colors[k] = coloring.assign(j.indexA, j.indexB);
-        ++(inLanes(color, j) ? laneCount[color] : scalarCount[color]);
-        if (inLanes(color, j) && pointRowsOnly(j)) ++pointLaneCount[color];
+        if (!inLanes(color, j)) ++scalarCount[color];
+        else ++(pointRowsOnly(j) ? pointLaneCount[color] : angleLaneCount[color]);
     }
 
     for (int color = 0; color <= overflow; ++color) {
-        d.blockStart[color + 1] = d.blockStart[color] + (laneCount[color] + 3) / 4;
+        d.blockStart[color + 1] = d.blockStart[color] + (pointLaneCount[color] + angleLaneCount[color] + 3) / 4;
         d.scalarStart[color + 1] = d.scalarStart[color] + scalarCount[color];
     }
     const int blocks = d.blockStart[overflow + 1];

@@ -52,9 +52,13 @@ RevoluteBlock packRevoluteBlock(const std::array<const PreparedJoint*, 4>& lanes
 // a joint with a motor or a limit the axial mass prepareRevolute wrote, which snapshots carry and
 // such a joint has always kept (one with the point rows alone never has).
 void unpackRevoluteImpulses(const RevoluteBlock& block, std::span<Joint> joints) {
-    float x[4], y[4], motor[4], lower[4], upper[4], axialMass[4];
+    float x[4], y[4];
     block.rows.linearImpulse.x.store(x);
     block.rows.linearImpulse.y.store(y);
+    for (int lane = 0; lane < 4; ++lane)
+        if (block.joint[lane] >= 0) joints[block.joint[lane]].data.as<RevoluteJoint>().linearImpulse = {x[lane], y[lane]};
+    if (!block.angleRows) return;  // the point rows alone leave the angle rows' λ as they were
+    float motor[4], lower[4], upper[4], axialMass[4];
     block.rows.motorImpulse.store(motor);
     block.rows.lowerImpulse.store(lower);
     block.rows.upperImpulse.store(upper);
@@ -62,8 +66,6 @@ void unpackRevoluteImpulses(const RevoluteBlock& block, std::span<Joint> joints)
     for (int lane = 0; lane < 4; ++lane) {
         if (block.joint[lane] < 0) continue;
         RevoluteJoint& r = joints[block.joint[lane]].data.as<RevoluteJoint>();
-        r.linearImpulse = {x[lane], y[lane]};
-        if (!block.angleRows) continue;  // the point rows alone leave the angle rows' λ as they were
         r.motorImpulse = motor[lane];
         r.lowerImpulse = lower[lane];
         r.upperImpulse = upper[lane];
