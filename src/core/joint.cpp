@@ -1,7 +1,7 @@
 // The joint store and the World's joint API: creation and destruction with generational ids,
 // per-body joint lists (for collideConnected and destroyBody), and the solver stages, which
-// dispatch to the joint types' stages (joint_registry.cpp), revolute joints without motor or
-// limit four at a time (joint_solver_wide.hpp).
+// dispatch to the joint types' stages (joint_registry.cpp), revolute joints four at a time
+// (joint_solver_wide.hpp).
 #include <cmath>
 #include <string>
 
@@ -119,7 +119,7 @@ void prepareJoint(PreparedJoint& j, const World::Impl& w, const Joint& joint, co
     stagesOf(j.type).prepare(j, ctx, a, b);
 }
 
-// Units [begin, end) of colour `color`: its revolute blocks, then its other joints, `wide(rows,
+// Units [begin, end) of colour `color`: its revolute blocks, then its other joints, `wide(block,
 // pair)` on a block and `scalar(joint, pair)` on a joint. Joints of one colour share no moving
 // body, so their order within it is free and workers may run its units side by side.
 template <class Wide, class Scalar>
@@ -131,7 +131,7 @@ void forJointUnits(World::Impl& w, int color, int begin, int end, Wide wide, Sca
         RevoluteBlock& block = d.revoluteBlocks[d.blockStart[color] + unit];
         BodyLanes<Float4> a = gatherBodies(states, block.bodyA), b = gatherBodies(states, block.bodyB);
         JointPairT<Float4> p{a, b, block.mass};
-        wide(block.rows, p);
+        wide(block, p);
         scatterVelocities(states, block.bodyA, a);
         scatterVelocities(states, block.bodyB, b);
     }
@@ -150,20 +150,21 @@ void forJointUnits(World::Impl& w, int color, int begin, int end, Wide wide, Sca
 void jointRows(World::Impl& w, const StepContext& ctx, RowPass pass, int color, int begin, int end) {
     if (pass == RowPass::WarmStart) {
         forJointUnits(
-            w, color, begin, end, [](RevoluteRows<Float4>& rows, JointPairT<Float4>& p) { warmStartRevoluteRows(rows, p); },
+            w, color, begin, end, [](RevoluteBlock& block, JointPairT<Float4>& p) { warmStartRevoluteRows(block.rows, p); },
             [](PreparedJoint& j, JointPair& p) { stagesOf(j.type).warmStart(j, p); });
         return;
     }
     const bool useBias = pass == RowPass::Solve;
-    const Softness soft = rigidSoftness(ctx, useBias);
+    const std::vector<float>& stepRotation = w.scratch.stepRotation;
     forJointUnits(
-        w, color, begin, end, [&](RevoluteRows<Float4>& rows, JointPairT<Float4>& p) { solveRevolutePoint(rows, p, soft); },
+        w, color, begin, end,
+        [&](RevoluteBlock& block, JointPairT<Float4>& p) { solveRevoluteBlock(block, p, stepRotation, ctx, useBias); },
         [&](PreparedJoint& j, JointPair& p) { stagesOf(j.type).solve(j, p, ctx, useBias); });
 }
 
 namespace {
 
-// Revolute joints without motor or limit go to the blocks, unless no colour could take them.
+// Revolute joints go to the blocks, unless no colour could take them.
 bool inLanes(int color, const PreparedJoint& j) { return color != GraphColoring::overflow && solvesInLanes(j); }
 
 }  // namespace
@@ -202,16 +203,17 @@ void prepareJoints(World::Impl& w, const StepContext& ctx) {
     coloring.reset(static_cast<int>(w.scratch.states.size()));
     // Joints of revolute trees take no colour: they are solved directly (joint_tree.hpp).
     findRevoluteTrees(d.trees, d.prepared, static_cast<int>(w.scratch.states.size()));
-    std::array<int, overflow + 1> laneCount{}, scalarCount{};
+    std::array<int, overflow + 1> pointLaneCount{}, angleLaneCount{}, scalarCount{};
     for (int k = 0; k < count; ++k) {
         if (d.trees.inTree[k]) continue;
         const PreparedJoint& j = d.prepared[k];
-        d.colors[k] = coloring.assign(j.indexA, j.indexB);
-        ++(inLanes(d.colors[k], j) ? laneCount[d.colors[k]] : scalarCount[d.colors[k]]);
+        const int color = d.colors[k] = coloring.assign(j.indexA, j.indexB);
+        if (!inLanes(color, j)) ++scalarCount[color];
+        else ++(pointRowsOnly(j) ? pointLaneCount[color] : angleLaneCount[color]);
     }
 
     for (int color = 0; color <= overflow; ++color) {
-        d.blockStart[color + 1] = d.blockStart[color] + (laneCount[color] + 3) / 4;
+        d.blockStart[color + 1] = d.blockStart[color] + (pointLaneCount[color] + angleLaneCount[color] + 3) / 4;
         d.scalarStart[color + 1] = d.scalarStart[color] + scalarCount[color];
     }
     const int blocks = d.blockStart[overflow + 1];
@@ -219,7 +221,10 @@ void prepareJoints(World::Impl& w, const StepContext& ctx) {
     d.blockLanes.assign(blocks, {-1, -1, -1, -1});
     d.scalarOrder.resize(d.scalarStart[overflow + 1]);
     ColorStarts nextScalar = d.scalarStart;
-    std::array<int, overflow + 1> nextLane{};
+    // A colour's joints with the point rows alone take its first lanes and those with a motor or a
+    // limit the lanes after them, so that at most one block of the colour solves angle rows in
+    // lanes that have none.
+    std::array<int, overflow + 1> nextPointLane{}, nextAngleLane = pointLaneCount;
     for (int k = 0; k < count; ++k) {
         const int color = d.colors[k];
         if (d.trees.inTree[k]) continue;
@@ -227,7 +232,7 @@ void prepareJoints(World::Impl& w, const StepContext& ctx) {
             d.scalarOrder[nextScalar[color]++] = k;
             continue;
         }
-        const int lane = nextLane[color]++;
+        const int lane = pointRowsOnly(d.prepared[k]) ? nextPointLane[color]++ : nextAngleLane[color]++;
         d.blockLanes[d.blockStart[color] + lane / 4][lane % 4] = k;
     }
     static const PreparedJoint emptyLane;  // static slots, no mass

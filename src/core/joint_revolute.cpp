@@ -1,6 +1,7 @@
-// Revolute joint: B's anchor held on A's by two point rows (the 2x2 K of joint_rows.hpp, shared
-// with the 4-wide blocks through joint_solver_wide.hpp), plus on the angle θB − θA − θref an
-// optional motor row and two one-sided limit rows, each with effective mass 1/(1/IA + 1/IB).
+// Revolute joint: B's anchor held on A's by two point rows (the 2x2 K of joint_rows.hpp), plus on
+// the angle θB − θA − θref an optional motor row and two one-sided limit rows, each with effective
+// mass 1/(1/IA + 1/IB); all written once, for one joint and for the 4-wide blocks, in
+// joint_solver_wide.hpp.
 #include <cmath>
 
 #include "core/joint_revolute.hpp"
@@ -39,17 +40,9 @@ void prepareRevolute(PreparedJoint& j, const StepContext& ctx, const Body&, cons
 void warmStartRevolute(PreparedJoint& j, JointPair& p) { warmStartRevoluteRows(revoluteRows(j), p); }
 
 void solveRevolute(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool useBias) {
-    RevoluteJoint& r = j.data.as<RevoluteJoint>();
-    if (r.enableMotor) solveMotorRow(p, angularRow, r.axialMass, r.motorSpeed, r.maxMotorTorque * ctx.hs, r.motorImpulse);
-    if (r.enableLimit) {
-        const float angle = currentAngle(j, p);
-        solveLimitRow(p, angularRow, r.axialMass, angle - r.lowerAngle, ctx, useBias, r.lowerImpulse);
-        solveLimitRow(p, negated(angularRow), r.axialMass, r.upperAngle - angle, ctx, useBias, r.upperImpulse);
-    }
-    // Solved last so that the point, the stiffest part, wins.
-    RevoluteRows<float> point = revoluteRows(j);
-    solveRevolutePoint(point, p, rigidSoftness(ctx, useBias));
-    r.linearImpulse = point.linearImpulse;
+    RevoluteRows<float> rows = revoluteRows(j);
+    solveRevoluteRows(rows, revoluteAngleRows(j), p, ctx, useBias);
+    storeImpulses(rows, j.data.as<RevoluteJoint>());
 }
 
 JointReaction reactionRevolute(const Joint& j) {

@@ -6,8 +6,6 @@
 // and every impulse is solved soft-step style: Δλ = −m_eff·massScale·(Ċ + biasRate·C) − impulseScale·λ.
 #pragma once
 
-#include <algorithm>
-
 #include "core/joint_store.hpp"
 
 namespace perpdot {
@@ -29,14 +27,20 @@ constexpr RowT<F> angularRowOf() {
     return {{}, F(1.0f), F(1.0f)};
 }
 inline constexpr Row angularRow = angularRowOf<float>();
-inline Row negated(Row r) { return {-r.n, -r.sA, -r.sB}; }
+template <class F>
+inline RowT<F> negated(const RowT<F>& r) {
+    return {-r.n, -r.sA, -r.sB};
+}
 
 inline float effectiveMass(const JointMass& m, Row r) {
     const float k = (m.mA + m.mB) * dot(r.n, r.n) + m.iA * r.sA * r.sA + m.iB * r.sB * r.sB;
     return k > 0.0f ? 1.0f / k : 0.0f;
 }
 
-inline float rowVelocity(const JointPair& p, Row r) { return dot(r.n, p.b.v - p.a.v) + r.sB * p.b.w - r.sA * p.a.w; }
+template <class F>
+inline F rowVelocity(const JointPairT<F>& p, const RowT<F>& r) {
+    return dot(r.n, p.b.v - p.a.v) + r.sB * p.b.w - r.sA * p.a.w;
+}
 
 // λ along the row: B gets +λ, A gets −λ (vA −= λ n/mA, ωA −= λ sA/IA).
 template <class F>
@@ -59,23 +63,58 @@ inline void solveRow(JointPair& p, Row r, float mass, float C, const Softness& s
 }
 
 // A one-sided row C ≥ 0 with λ ≥ 0 (limits). While C > 0 it is speculative: it lets the gap
-// close this substep and no further.
-inline void solveLimitRow(JointPair& p, Row r, float mass, float C, const StepContext& ctx, bool useBias, float& lambda) {
-    Softness soft;
-    if (C > 0.0f) soft.biasRate = ctx.invHs;
-    else soft = rigidSoftness(ctx, useBias);
-    const float impulse = -mass * soft.massScale * (rowVelocity(p, r) + soft.biasRate * C) - soft.impulseScale * lambda;
-    const float newLambda = std::max(lambda + impulse, 0.0f);
+// close this substep and no further (bias = C/hs, rigid).
+template <class F>
+inline void solveLimitRow(JointPairT<F>& p, const RowT<F>& r, F mass, F C, const StepContext& ctx, bool useBias, F& lambda) {
+    using simd::select;
+    const Softness rigid = rigidSoftness(ctx, useBias);
+    const simd::MaskOf<F> speculative = C > F(0.0f);
+    const F biasRate = select(speculative, F(ctx.invHs), F(rigid.biasRate));
+    const F massScale = select(speculative, F(1.0f), F(rigid.massScale));
+    const F impulseScale = select(speculative, F(0.0f), F(rigid.impulseScale));
+    const F impulse = -mass * massScale * (rowVelocity(p, r) + biasRate * C) - impulseScale * lambda;
+    const F newLambda = simd::max(F(0.0f), lambda + impulse);  // std::max(λ + Δλ, 0), −0 and NaN as it keeps them
     applyRow(p, r, newLambda - lambda);
     lambda = newLambda;
 }
 
 // A motor drives Ċ to `speed` with |λ| ≤ maxImpulse (max torque or force × hs).
-inline void solveMotorRow(JointPair& p, Row r, float mass, float speed, float maxImpulse, float& lambda) {
-    const float impulse = -mass * (rowVelocity(p, r) - speed);
-    const float newLambda = std::clamp(lambda + impulse, -maxImpulse, maxImpulse);
+template <class F>
+inline void solveMotorRow(JointPairT<F>& p, const RowT<F>& r, F mass, F speed, F maxImpulse, F& lambda) {
+    const F impulse = -mass * (rowVelocity(p, r) - speed);
+    // std::clamp(λ + Δλ, −maxImpulse, maxImpulse) as libstdc++ writes it, min(max(x, lo), hi), with
+    // its choice among equal zeros and for NaN: std::max(x, lo) is simd::max(lo, x).
+    const F newLambda = simd::min(maxImpulse, simd::max(-maxImpulse, lambda + impulse));
     applyRow(p, r, newLambda - lambda);
     lambda = newLambda;
+}
+
+// A row that only some of a joint's instances have (a motor, a limit). One joint: solved if it has
+// it. Four joints in lanes: solved on all four, then the lanes without it take back their
+// velocities and impulses bit for bit, as if the row had been skipped (even applying a zero
+// impulse would turn a velocity of −0 into +0).
+template <class Solve, class... Lambda>
+inline void solveWhere(bool enabled, JointPair&, Solve solve, Lambda&...) {
+    if (enabled) solve();
+}
+
+template <class Solve, class... Lambda>
+inline void solveWhere(simd::Mask4 enabled, JointPairT<simd::Float4>& p, Solve solve, Lambda&... lambdas) {
+    using simd::select;
+    if (simd::noLane(enabled)) return;
+    if (simd::allLanes(enabled)) {
+        solve();
+        return;
+    }
+    const BodyLanes<simd::Float4> a = p.a, b = p.b;
+    const simd::Float4 before[] = {lambdas...};
+    solve();
+    p.a.v = {select(enabled, p.a.v.x, a.v.x), select(enabled, p.a.v.y, a.v.y)};
+    p.a.w = select(enabled, p.a.w, a.w);
+    p.b.v = {select(enabled, p.b.v.x, b.v.x), select(enabled, p.b.v.y, b.v.y)};
+    p.b.w = select(enabled, p.b.w, b.w);
+    int i = 0;
+    ((lambdas = select(enabled, lambdas, before[i++])), ...);
 }
 
 // --- Point rows: B's anchor held on A's, both directions at once. ---

@@ -37,7 +37,7 @@ struct JointPairT {
     BodyLanes<F>& a;
     BodyLanes<F>& b;
     JointMassT<F> m;
-    F rotation{};   // (θB − θA) turned since the step began
+    F rotation{};   // (θB − θA) turned since the step began (in SIMD lanes: set for the angle rows only)
     F rotationA{};  // θA turned since the step began (gear joints; not set in SIMD lanes)
 };
 using JointPair = JointPairT<float>;

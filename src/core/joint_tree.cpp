@@ -58,7 +58,7 @@ void findRevoluteTrees(RevoluteTrees& t, const std::vector<PreparedJoint>& prepa
     t.fixedAnchors.assign(slots, 0);
     t.cyclic.assign(slots, 0);
     for (const PreparedJoint& j : prepared) {
-        if (!solvesInLanes(j)) continue;
+        if (!pointRowsOnly(j)) continue;
         const bool a = movesA(j), b = movesB(j);
         if (a && b) {
             int ra = findRoot(t.root, j.indexA), rb = findRoot(t.root, j.indexB);
@@ -89,7 +89,7 @@ void findRevoluteTrees(RevoluteTrees& t, const std::vector<PreparedJoint>& prepa
     int inTrees = 0;
     for (int k = 0; k < count; ++k) {
         const PreparedJoint& j = prepared[k];
-        if (!solvesInLanes(j) || (!movesA(j) && !movesB(j))) continue;
+        if (!pointRowsOnly(j) || (!movesA(j) && !movesB(j))) continue;
         const int r = findRoot(t.root, movesA(j) ? j.indexA : j.indexB);
         if (!isTree(r)) continue;
         t.treeOf[k] = r;

@@ -34,6 +34,10 @@ Vec2Lanes<F> operator-(Vec2Lanes<F> a, Vec2Lanes<F> b) {
     return {a.x - b.x, a.y - b.y};
 }
 template <class F>
+Vec2Lanes<F> operator-(Vec2Lanes<F> a) {
+    return {-a.x, -a.y};
+}
+template <class F>
 Vec2Lanes<F> operator*(F s, Vec2Lanes<F> a) {
     return {s * a.x, s * a.y};
 }

@@ -60,6 +60,9 @@ inline Float4 sqrt(Float4 a) { return Float4(_mm_sqrt_ps(a.v)); }
 inline Float4 select(Mask4 mask, Float4 ifTrue, Float4 ifFalse) {
     return Float4(_mm_or_ps(_mm_and_ps(mask.m, ifTrue.v), _mm_andnot_ps(mask.m, ifFalse.v)));
 }
+// Whether a mask holds in no lane, in every lane.
+inline bool noLane(Mask4 mask) { return _mm_movemask_ps(mask.m) == 0; }
+inline bool allLanes(Mask4 mask) { return _mm_movemask_ps(mask.m) == 0xF; }
 
 // Rows to columns: afterwards lane i of m[j] is what lane j of m[i] was.
 inline void transpose(Float4 (&m)[4]) { _MM_TRANSPOSE4_PS(m[0].v, m[1].v, m[2].v, m[3].v); }
@@ -123,6 +126,8 @@ inline Float4 select(Mask4 mask, Float4 ifTrue, Float4 ifFalse) {
     for (int i = 0; i < 4; ++i) r.v[i] = mask.m[i] ? ifTrue.v[i] : ifFalse.v[i];
     return r;
 }
+inline bool noLane(Mask4 mask) { return !(mask.m[0] || mask.m[1] || mask.m[2] || mask.m[3]); }
+inline bool allLanes(Mask4 mask) { return mask.m[0] && mask.m[1] && mask.m[2] && mask.m[3]; }
 
 // Rows to columns: afterwards lane i of m[j] is what lane j of m[i] was.
 inline void transpose(Float4 (&m)[4]) {
