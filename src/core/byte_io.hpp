@@ -58,16 +58,16 @@ public:
     [[gnu::always_inline]] float f32() { return std::bit_cast<float>(u32()); }
     // Body state, settings and broadphase boxes must be finite (the step keeps them so, and
     // Box2D's time of impact asserts on NaN).
-    float finite() {
+    [[gnu::always_inline]] float finite() {
         const float v = f32();
         if (!std::isfinite(v)) [[unlikely]] notFinite();
         return v;
     }
-    Vec2 finiteVec2() {
+    [[gnu::always_inline]] Vec2 finiteVec2() {
         const float x = finite();
         return {x, finite()};
     }
-    Vec2 vec2() {
+    [[gnu::always_inline]] Vec2 vec2() {
         const float x = f32();
         return {x, f32()};
     }
