@@ -22,9 +22,6 @@ struct RowMasses {
 
 inline RowMasses rowMasses(const Body& a, const Body& b) { return {a.invMass, a.invInertia, b.invMass, b.invInertia}; }
 
-// Last step's accumulated impulse, the warm start of this step's (0 without warm starting).
-inline float warmStartImpulse(const StepContext& ctx, float impulse) { return (ctx.enableWarmStarting ? 1.0f : 0.0f) * impulse; }
-
 // The rows of constraint c (its contact and solver slots set, StepScratch::freeVelocities filled):
 // its own rows, gathered and derived (deriveContactRows, contact_solver_wide.hpp); or the gather
 // alone into its lane of a block of `lanes` (4 or 8), field i at lane[i · lanes] (pack_lanes.hpp),

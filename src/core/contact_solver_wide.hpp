@@ -63,6 +63,12 @@ inline Vec2T<F> relativeVelocity(const BodyLanes<F>& a, const BodyLanes<F>& b, V
     return pointVelocity(b.v, b.w, rB) - pointVelocity(a.v, a.w, rA);
 }
 
+// Last step's accumulated impulse, the warm start of this step's (0 without warm starting).
+template <class F>
+F warmStartImpulse(const StepContext& ctx, F impulse) {
+    return F(ctx.enableWarmStarting ? 1.0f : 0.0f) * impulse;
+}
+
 // 1 / (1/mA + 1/mB + perpDot(rA,d)²/IA + perpDot(rB,d)²/IB): the effective mass along d, 0 if
 // nothing can move. `m` has the rows' invMassA, invIA, invMassB and invIB.
 template <class F, class Masses>
@@ -91,15 +97,14 @@ void deriveContactRows(ContactRows<F>& c, const BodyLanes<F>& a, const BodyLanes
     c.massScale = soft(ctx.contactSoftness.massScale, ctx.staticSoftness.massScale);
     c.impulseScale = soft(ctx.contactSoftness.impulseScale, ctx.staticSoftness.impulseScale);
     const Vec2T<F> n = c.normal, t = perp(n);
-    const F scale = ctx.enableWarmStarting ? 1.0f : 0.0f;
     for (int i = 0; i < 2; ++i) {
         ContactPointRows<F>& cp = c.points[i];
         const simd::MaskOf<F> point = present[i] > F(0.0f);
         const Vec2T<F> rA = cp.anchorA, rB = cp.anchorB;
         cp.baseSeparation = select(point, cp.baseSeparation - dot(rB - rA, n), F(0.0f));
         cp.relativeVelocity = select(point, dot(relativeVelocity(a, b, rA, rB), n), F(0.0f));
-        cp.normalImpulse = scale * cp.normalImpulse;
-        cp.tangentImpulse = scale * cp.tangentImpulse;
+        cp.normalImpulse = warmStartImpulse(ctx, cp.normalImpulse);
+        cp.tangentImpulse = warmStartImpulse(ctx, cp.tangentImpulse);
         cp.maxNormalImpulse = F(0.0f);
         cp.normalMass = select(point, effectiveMass<F>(c, rA, rB, n), F(0.0f));
         cp.tangentMass = select(point, effectiveMass<F>(c, rA, rB, t), F(0.0f));
@@ -262,7 +267,6 @@ struct ContactBlock8 {
     const float* rowData() const { return rows; }
     float* rowData() { return rows; }
 };
-
 
 // The lane width of a new world's contact blocks: 8 where contactLanes8Available() (this build
 // has the AVX2 rows and the CPU runs AVX2), else 4; the environment's PERPDOT_CONTACT_LANES=4 picks 4.

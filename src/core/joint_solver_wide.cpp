@@ -7,7 +7,7 @@
 
 namespace perpdot {
 
-// Rows and masses by the one packing idiom of the wide rows (pack_lanes.hpp); the angle rows only
+// Rows and masses packed by the 4x4 transposes of pack_lanes.hpp; the angle rows only
 // for a block that has a motor or a limit.
 RevoluteBlock packRevoluteBlock(const std::array<const PreparedJoint*, 4>& lanes, const std::array<int, 4>& joints) {
     RevoluteBlock block;

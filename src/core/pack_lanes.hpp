@@ -1,7 +1,7 @@
-// The one packing idiom of the wide rows: a row set written over a lane type (contact rows,
-// revolute joint rows, joint masses) is nothing but floats, so Rows<float> of four constraints
-// become the lanes of Rows<simd::Float4> by 4x4 transposes: field i of lane l is float i·4 + l.
-// (The eight-lane contact blocks do the same with AVX registers, contact_solver_avx2.cpp.)
+// The lane layout of the wide rows: a row set written over a lane type (contact rows, revolute
+// joint rows, joint masses) is nothing but floats, and in Rows<F> of N lanes field i of lane l is
+// float i·N + l. Revolute rows and joint masses are packed into it by 4x4 transposes (packLanes);
+// contact rows are gathered into their lanes field by field (contact_solver.cpp).
 #pragma once
 
 #include <algorithm>

@@ -57,7 +57,7 @@ void World::step(float timeStep) {
     storeJointImpulses(w, ctx);
     reportHitEvents(w);
     finalizeBodies(w, ctx);  // positions back into the bodies; continuous collision
-    breakJoints(w);               // joints whose reaction passed their break limits
+    breakJoints(w);          // joints whose reaction passed their break limits
 
     updateSleep(w, timeStep);  // sleep: islands at rest
     w.events.endStep();
