@@ -17,6 +17,7 @@
 #include <cmath>
 
 #include <cstdint>
+#include <optional>
 #include <variant>
 #include <vector>
 
@@ -78,6 +79,24 @@ struct CollisionSystem::Impl {
     b2DynamicTree tree;
     b2DynamicTree staticTree;         // static proxies again; a leaf's user data is its proxy id in `tree`
     std::vector<int> staticLeaf;      // by proxy id: its leaf in staticTree, or -1
+    // By proxy id, what is known of its fat AABB when pairs were last updated (overlappedBefore):
+    // unchanged since, moved from the box in priorFat, or unknown (created, restored, requeried).
+    enum class Since : uint8_t { Kept, Moved, New };
+    std::vector<Since> since;
+    std::vector<AABB> priorFat;  // that box, where since is Moved
+
+    // The proxy's fat AABB at the last pair update, or nullopt where it is not known.
+    std::optional<AABB> priorOf(int proxy) const {
+        switch (since[proxy]) {
+            case Since::Kept: {
+                const b2AABB& box = tree.GetFatAABB(proxy);
+                return AABB{fromB2(box.lowerBound), fromB2(box.upperBound)};
+            }
+            case Since::Moved: return priorFat[proxy];
+            case Since::New: break;
+        }
+        return std::nullopt;
+    }
 
     Geometry& slot(int shape) {
         if (static_cast<size_t>(shape) >= geometry.size()) geometry.resize(shape + 1);
@@ -134,7 +153,12 @@ int CollisionSystem::createProxy(const AABB& aabb, ChildKey key, bool isStatic) 
     // userData packs the child key: shape in the high 32 bits, child in the low.
     const uint64_t packed = (static_cast<uint64_t>(static_cast<uint32_t>(key.shape)) << 32) | static_cast<uint32_t>(key.child);
     const int proxy = impl_->tree.CreateProxy(box, reinterpret_cast<void*>(static_cast<uintptr_t>(packed)));
-    if (static_cast<size_t>(proxy) >= impl_->staticLeaf.size()) impl_->staticLeaf.resize(proxy + 1, -1);
+    if (static_cast<size_t>(proxy) >= impl_->staticLeaf.size()) {
+        impl_->staticLeaf.resize(proxy + 1, -1);
+        impl_->since.resize(proxy + 1);
+        impl_->priorFat.resize(proxy + 1);
+    }
+    impl_->since[proxy] = Impl::Since::New;
     impl_->staticLeaf[proxy] = isStatic ? impl_->staticTree.CreateProxy(box, reinterpret_cast<void*>(static_cast<uintptr_t>(proxy))) : -1;
     return proxy;
 }
@@ -148,7 +172,13 @@ void CollisionSystem::destroyProxy(int proxy) {
 bool CollisionSystem::moveProxy(int proxy, const AABB& aabb, Vec2 displacement) {
     const b2AABB box{toB2(aabb.lower), toB2(aabb.upper)};
     if (const int leaf = impl_->staticLeaf[proxy]; leaf >= 0) impl_->staticTree.MoveProxy(leaf, box, toB2(displacement));
-    return impl_->tree.MoveProxy(proxy, box, toB2(displacement));
+    const AABB before = fatAABB(proxy);
+    if (!impl_->tree.MoveProxy(proxy, box, toB2(displacement))) return false;
+    if (impl_->since[proxy] == Impl::Since::Kept) {
+        impl_->since[proxy] = Impl::Since::Moved;
+        impl_->priorFat[proxy] = before;
+    }
+    return true;
 }
 
 bool CollisionSystem::proxyKeeps(int proxy, const AABB& aabb, Vec2 displacement) const {
@@ -199,7 +229,16 @@ bool CollisionSystem::proxyIs(int proxy, const AABB& fat, ChildKey key, bool isS
 }
 
 bool CollisionSystem::wasMoved(int proxy) const { return impl_->tree.WasMoved(proxy); }
-void CollisionSystem::clearMoved(int proxy) { impl_->tree.ClearMoved(proxy); }
+void CollisionSystem::clearMoved(int proxy) {
+    impl_->tree.ClearMoved(proxy);
+    impl_->since[proxy] = Impl::Since::Kept;
+}
+void CollisionSystem::requery(int proxy) { impl_->since[proxy] = Impl::Since::New; }
+
+bool CollisionSystem::overlappedBefore(int proxyA, int proxyB) const {
+    const std::optional<AABB> a = impl_->priorOf(proxyA), b = impl_->priorOf(proxyB);
+    return a && b && overlaps(*a, *b);
+}
 
 ChildKey CollisionSystem::proxyKey(int proxy) const {
     const auto packed = static_cast<uint64_t>(reinterpret_cast<uintptr_t>(impl_->tree.GetUserData(proxy)));
@@ -230,6 +269,8 @@ void CollisionSystem::queryStaticImpl(const AABB& aabb, void* context, bool (*vi
 void CollisionSystem::shiftOrigin(Vec2 newOrigin) {
     impl_->tree.ShiftOrigin(toB2(newOrigin));
     impl_->staticTree.ShiftOrigin(toB2(newOrigin));
+    for (Impl::Since& s : impl_->since)
+        if (s == Impl::Since::Moved) s = Impl::Since::New;  // the boxes before are in the old frame
 }
 
 namespace {

@@ -107,7 +107,13 @@ public:
     // fat AABB bit for bit (in the static tree too) and the same tree membership.
     bool proxyIs(int proxy, const AABB& fat, ChildKey key, bool isStatic) const;
     bool wasMoved(int proxy) const;
+    // Ends the proxy's move: its fat AABB now is what the next pair update compares with.
     void clearMoved(int proxy);
+    // The proxy's box at the last pair update is forgotten (it is looked for as a new one).
+    void requery(int proxy);
+    // Whether both proxies' fat AABBs were known to overlap when pairs were last updated (clearMoved):
+    // then the pair has its contact already, or was not wanted, and finding it again adds nothing.
+    bool overlappedBefore(int proxyA, int proxyB) const;
     ChildKey proxyKey(int proxy) const;
     // Calls visit(proxy) for every proxy whose fat AABB overlaps `aabb`; visit returns false to stop.
     template <class Visit>

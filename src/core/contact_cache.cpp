@@ -156,6 +156,9 @@ void updatePairs(World::Impl& w) {
                 // When both moved, only the pair's lower proxy reports it. Pairs that have a contact
                 // are most of what a large moving proxy finds: they are dropped here, before the sort.
                 if (other == proxy || (other < proxy && collision.wasMoved(other))) return true;
+                // A pair whose boxes overlapped at the last update has its contact (updateContacts
+                // destroys only those whose boxes are apart) or is not wanted: no lookup needed.
+                if (collision.overlappedBefore(proxy, other)) return true;
                 if (cache.pairs.contains(proxyPairKey(proxy, other)) || !pairWanted(w, proxy, other)) return true;
                 NewPair p{collision.proxyKey(proxy), collision.proxyKey(other), proxy, other};
                 if (std::tie(p.b.shape, p.b.child) < std::tie(p.a.shape, p.a.child)) {

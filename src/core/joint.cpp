@@ -49,7 +49,10 @@ void removeJoint(World::Impl& w, int index) {
     // The broadphase skipped this pair while the joint forbade it: let it look again.
     if (!j.collideConnected)
         for (int shape : b.shapes)
-            for (int proxy : w.shapes[shape].proxies) w.movedProxies.push_back(proxy);
+            for (int proxy : w.shapes[shape].proxies) {
+                w.collision.requery(proxy);
+                w.movedProxies.push_back(proxy);
+            }
     s.joints.destroy(index);
 }
 

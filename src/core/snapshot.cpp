@@ -515,7 +515,12 @@ void World::restore(std::span<const uint8_t> bytes) {
         if (!w.contactCache.pairs.insert(c.pairKey)) in.fail("two contacts for one pair");
     }
 
-    if (keepBroadphase) fresh->collision = std::move(impl_->collision);
+    if (keepBroadphase) {
+        fresh->collision = std::move(impl_->collision);
+        // Its moved proxies are looked for as new ones (restoreProxy's): the boxes they moved from
+        // are this world's, not the snapshot's.
+        for (int proxy : fresh->movedProxies) fresh->collision.requery(proxy);
+    }
     fresh->preSolve = std::move(impl_->preSolve);  // a setting of this World, not of the state
     // The threads are the restoring machine's, not the snapshot's: the world keeps its own workers.
     fresh->def.workerCount = impl_->def.workerCount;
