@@ -71,7 +71,7 @@ bool pairWanted(const World::Impl& w, int proxyA, int proxyB) {
 void addPair(World::Impl& w, int proxyA, int proxyB) {
     ContactCache& cache = w.contactCache;
     const uint64_t key = proxyPairKey(proxyA, proxyB);
-    if (cache.pairs.contains(key)) return;
+    if (!cache.pairs.insert(key)) return;  // one lookup: found twice, or has its contact
     collide::ChildKey keyA = w.collision.proxyKey(proxyA), keyB = w.collision.proxyKey(proxyB);
     const ShapeData* sa = &w.shapes[keyA.shape];
     const ShapeData* sb = &w.shapes[keyB.shape];
@@ -93,7 +93,6 @@ void addPair(World::Impl& w, int proxyA, int proxyB) {
     c.sensor = sa->sensor || sb->sensor;
     cache.bodyLists.link(cache.contacts, index, 0, c.bodyA);
     cache.bodyLists.link(cache.contacts, index, 1, c.bodyB);
-    cache.pairs.insert(key);
 }
 
 // The narrowphase of one contact, with the bodies' poses alone: whether its fat AABBs still
