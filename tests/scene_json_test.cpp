@@ -111,7 +111,8 @@ TEST(SceneJson, EveryFieldRoundTrips) {
         "bodies": [
           {"name": "ground", "type": "static", "shapes": [{"type": "chain", "vertices": [[-5, 0], [0, -1], [5, 0]], "loop": true},
                                                           {"type": "segment", "v1": [-5, 2], "v2": [5, 2.5], "friction": 0.2}]},
-          {"name": "a", "type": "kinematic", "position": [1, 2], "angle": 0.3, "linear_velocity": [1, 0], "angular_velocity": -1},
+          {"name": "a", "type": "kinematic", "position": [1, 2], "angle": 0.3, "linear_velocity": [1, 0], "angular_velocity": -1,
+           "awake": false},
           {"name": "b", "position": [3, 2], "linear_damping": 0.1, "angular_damping": 0.2, "gravity_scale": 0.5,
            "fixed_rotation": true, "bullet": true, "allow_sleep": false,
            "shapes": [{"type": "box", "half_extents": [1, 0.25], "center": [0.1, 0.2], "angle": 0.5, "density": 2,
@@ -138,6 +139,8 @@ TEST(SceneJson, EveryFieldRoundTrips) {
     EXPECT_EQ(s.solver.substeps, 6);
     ASSERT_EQ(s.bodies.size(), 3u);
     EXPECT_EQ(s.bodies[1].type, BodyType::Kinematic);
+    EXPECT_FALSE(s.bodies[1].awake);
+    EXPECT_TRUE(s.bodies[2].awake);
     EXPECT_EQ(s.bodies[2].shapes[0].filter, (Filter{2, 5, -3}));
     EXPECT_TRUE(s.bodies[0].shapes[0].loop);
     ASSERT_EQ(s.joints.size(), 6u);

@@ -151,6 +151,24 @@ TEST(SceneWorld, HandBuiltMistakesAreRefused) {
     }
 }
 
+// A body the scene starts asleep hangs where it is until something touches it: a ball dropped
+// from 1 m lands on it after √(2h/g) = 0.45 s and wakes it, and from then both fall.
+TEST(SceneWorld, ABodyStartedAsleepWaitsForATouch) {
+    Scene s;
+    s.gravity = {0.0f, -9.8f};
+    addBody(s, {.name = "sleeper", .position = {0.0f, 0.0f}, .awake = false, .shapes = {boxShape(0.5f, 0.5f)}});
+    addBody(s, {.name = "ball", .position = {0.0f, 1.75f}, .shapes = {SceneShape{.kind = SceneShape::Kind::Circle, .radius = 0.25f}}});
+    SceneWorld built = buildWorld(s);
+    const BodyId sleeper = built.bodies[0];
+    EXPECT_FALSE(built.world.isAwake(sleeper));
+    for (int i = 0; i < 20; ++i) built.step();  // 0.33 s: the ball is still falling
+    EXPECT_FALSE(built.world.isAwake(sleeper));
+    EXPECT_EQ(built.world.position(sleeper), (Vec2{0.0f, 0.0f}));
+    for (int i = 0; i < 40; ++i) built.step();
+    EXPECT_TRUE(built.world.isAwake(sleeper));
+    EXPECT_LT(built.world.position(sleeper).y, -0.1f);
+}
+
 TEST(SceneWorld, StateHashIsDeterministicAndSensitive) {
     SceneWorld a = buildWorld(findScene("pyramid")), b = buildWorld(findScene("pyramid"));
     EXPECT_EQ(stateHash(a.world), stateHash(b.world));

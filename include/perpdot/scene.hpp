@@ -55,6 +55,7 @@ struct SceneBody {
     bool fixedRotation = false;  ///< BodyDef::fixedRotation
     bool bullet = false;  ///< BodyDef::bullet
     bool allowSleep = true;  ///< BodyDef::allowSleep
+    bool awake = true;  ///< BodyDef::awake: false starts it asleep (where allowSleep)
     std::vector<SceneShape> shapes{};  ///< its shapes
     /// Equal in every field (a scene that round-trips through JSON compares equal).
     friend bool operator==(const SceneBody&, const SceneBody&) = default;

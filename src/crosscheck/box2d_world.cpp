@@ -38,7 +38,7 @@ b2BodyDef bodyDef(const SceneBody& b) {
     def.fixedRotation = b.fixedRotation;
     def.bullet = b.bullet;
     def.allowSleep = b.allowSleep;
-    def.awake = true;
+    def.awake = b.awake;
     return def;
 }
 

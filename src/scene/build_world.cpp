@@ -23,7 +23,8 @@ BodyDef bodyDef(const SceneBody& b) {
             .gravityScale = b.gravityScale,
             .fixedRotation = b.fixedRotation,
             .bullet = b.bullet,
-            .allowSleep = b.allowSleep};
+            .allowSleep = b.allowSleep,
+            .awake = b.awake};
 }
 
 ShapeId createShape(World& world, BodyId body, const SceneShape& s) {

@@ -288,6 +288,7 @@ SceneBody readBody(const Object& o, size_t index) {
     b.fixedRotation = o.boolean("fixed_rotation", false);
     b.bullet = o.boolean("bullet", false);
     b.allowSleep = o.boolean("allow_sleep", true);
+    b.awake = o.boolean("awake", true);
     for (const auto& [item, path] : o.array("shapes")) b.shapes.push_back(readShape(Object(*item, path)));
     return b;
 }

@@ -143,6 +143,7 @@ Json bodyJson(const SceneBody& b, size_t index) {
     put(o, "fixed_rotation", b.fixedRotation, d.fixedRotation);
     put(o, "bullet", b.bullet, d.bullet);
     put(o, "allow_sleep", b.allowSleep, d.allowSleep);
+    put(o, "awake", b.awake, d.awake);
     if (!b.shapes.empty()) {
         Json shapes = Json::array();
         for (const SceneShape& s : b.shapes) shapes.push_back(shapeJson(s));

@@ -16,7 +16,7 @@ inline constexpr std::string_view root[] = {"format", "name",   "description", "
 inline constexpr std::string_view solver[] = {"substeps", "velocity_iterations", "position_iterations", "box2d_skin"};
 inline constexpr std::string_view body[] = {"name", "type", "position", "angle", "linear_velocity", "angular_velocity",
                                             "linear_damping", "angular_damping", "gravity_scale", "fixed_rotation",
-                                            "bullet", "allow_sleep", "shapes"};
+                                            "bullet", "allow_sleep", "awake", "shapes"};
 
 inline constexpr std::string_view filter[] = {"category", "mask", "group"};
 inline constexpr std::string_view shape[] = {"type", "density", "friction", "restitution", "sensor", "filter"};
