@@ -112,6 +112,10 @@ void layOutBlocks(World::Impl& w, const StepContext& ctx, const ColorStarts& sta
             Block& block = blocks[b];
             const int lanes = std::min(width, start[color + 1] - start[color] - width * (b - blockStart[color]));
             alignas(32) float present[2][width];  // 1 where a lane's point is a manifold point
+            // The lanes' contacts lie anywhere in the pool: ask for all of them before gathering
+            // any, so that their cache misses overlap.
+            for (int lane = 0; lane < lanes; ++lane)
+                prefetchContact(w, s.constraints[s.contactOrder[start[color] + width * (b - blockStart[color]) + lane]]);
             for (int lane = 0; lane < width; ++lane) {
                 const bool used = lane < lanes;
                 ContactConstraint* c = used ? &s.constraints[s.contactOrder[start[color] + width * (b - blockStart[color]) + lane]] : nullptr;
