@@ -28,7 +28,5 @@ inline RowMasses rowMasses(const Body& a, const Body& b) { return {a.invMass, a.
 // the block's lanes to be derived together.
 void prepareContactRows(const World::Impl& world, const StepContext& ctx, ContactConstraint& c);
 void gatherContactLane(const World::Impl& world, const ContactConstraint& c, float* lane, int lanes);
-// Starts loading what gatherContactLane reads of c's contact.
-void prefetchContact(const World::Impl& world, const ContactConstraint& c);
 
 }  // namespace perpdot

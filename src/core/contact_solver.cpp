@@ -75,11 +75,6 @@ void prepareContactRows(const World::Impl& w, const StepContext& ctx, ContactCon
                       present, ctx);
 }
 
-void prefetchContact(const World::Impl& w, const ContactConstraint& c) {
-    const auto* bytes = reinterpret_cast<const char*>(&w.contactCache.contacts[c.contact]);
-    for (std::size_t line = 0; line < offsetof(Contact, reuseValid); line += 64) __builtin_prefetch(bytes + line);
-}
-
 void gatherContactLane(const World::Impl& w, const ContactConstraint& c, float* lane, int lanes) {
     if (lanes == 8) gatherRows<8>(w, c, lane);
     else gatherRows<4>(w, c, lane);

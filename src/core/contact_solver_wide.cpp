@@ -114,8 +114,10 @@ void layOutBlocks(World::Impl& w, const StepContext& ctx, const ColorStarts& sta
             alignas(32) float present[2][width];  // 1 where a lane's point is a manifold point
             // The lanes' contacts lie anywhere in the pool: ask for all of them before gathering
             // any, so that their cache misses overlap.
-            for (int lane = 0; lane < lanes; ++lane)
-                prefetchContact(w, s.constraints[s.contactOrder[start[color] + width * (b - blockStart[color]) + lane]]);
+            for (int lane = 0; lane < lanes; ++lane) {
+                const int constraint = s.contactOrder[start[color] + width * (b - blockStart[color]) + lane];
+                prefetchSolverFields<0>(w.contactCache.contacts[s.constraints[constraint].contact]);
+            }
             for (int lane = 0; lane < width; ++lane) {
                 const bool used = lane < lanes;
                 ContactConstraint* c = used ? &s.constraints[s.contactOrder[start[color] + width * (b - blockStart[color]) + lane]] : nullptr;
@@ -220,7 +222,12 @@ void storeBlockImpulses(World::Impl& w, const Block& block) {
 template <class Block>
 void storeBlocks(World::Impl& w, const std::vector<Block>& blocks) {
     w.workers.parallelFor(static_cast<int>(blocks.size()), 256 / Block::lanes, [&](int begin, int end, int) {
-        for (int k = begin; k < end; ++k) storeBlockImpulses(w, blocks[k]);
+        for (int k = begin; k < end; ++k) {
+            if (k + 1 < end)  // the next block's contacts load while this one's are written
+                for (int contact : blocks[k + 1].contact)
+                    if (contact >= 0) prefetchSolverFields<1>(w.contactCache.contacts[contact]);
+            storeBlockImpulses(w, blocks[k]);
+        }
     });
 }
 
