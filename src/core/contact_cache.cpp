@@ -88,8 +88,7 @@ void addPair(World::Impl& w, int proxyA, int proxyB) {
     c.proxyB = proxyB;
     c.a = keyA;
     c.b = keyB;
-    c.bodyA = sa->body;
-    c.bodyB = sb->body;
+    bindShapes(c, *sa, *sb);
     c.sensor = sa->sensor || sb->sensor;
     cache.bodyLists.link(cache.contacts, index, 0, c.bodyA);
     cache.bodyLists.link(cache.contacts, index, 1, c.bodyB);
@@ -182,6 +181,13 @@ void updatePairs(World::Impl& w) {
         return std::tie(x.a.shape, x.a.child, x.b.shape, x.b.child) < std::tie(y.a.shape, y.a.child, y.b.shape, y.b.child);
     });
     for (const NewPair& p : newPairs) addPair(w, p.proxyA, p.proxyB);
+}
+
+void bindShapes(Contact& c, const ShapeData& a, const ShapeData& b) {
+    c.bodyA = a.body;
+    c.bodyB = b.body;
+    c.turnsA = isFlat(a);
+    c.turnsB = isFlat(b);
 }
 
 void destroyContact(World::Impl& w, int index) {

@@ -30,6 +30,9 @@ struct Contact {
     bool touching = false;     // has manifold points and takes part in the solve (never for sensors)
     bool sensor = false;       // a sensor and a visitor: overlap test only, no constraint
     bool overlapping = false;  // sensor contacts: the shapes overlap
+    // Whether the contact point is a point of A's (B's) body, turning with it: a surface without
+    // rounding (the rows' turnsA, turnsB). Set from the shapes by bindShapes.
+    bool turnsA = false, turnsB = false;
     uint64_t pairKey = 0;
     int proxyA = -1, proxyB = -1;
     collide::ChildKey a, b;
@@ -56,6 +59,8 @@ inline void prefetchSolverFields(const Contact& c) {
     const auto* bytes = reinterpret_cast<const char*>(&c);
     for (std::size_t line = 0; line < offsetof(Contact, reuseValid); line += 64) __builtin_prefetch(bytes + line, forWrite);
 }
+
+struct ShapeData;
 
 // Identity of a broadphase pair in ContactCache::pairs (never 0: the two proxies differ).
 inline uint64_t proxyPairKey(int proxyA, int proxyB) {
@@ -91,6 +96,9 @@ void updatePairs(World::Impl& world);
 void updateContacts(World::Impl& world);
 
 void destroyContact(World::Impl& world, int contact);  // with its end event
+// What a contact takes from its two shapes for its whole life: their bodies and whether its
+// points turn with them (a shape's geometry never changes).
+void bindShapes(Contact& c, const ShapeData& a, const ShapeData& b);
 void destroyContactsOf(World::Impl& world, int body, int shape);  // shape = -1: all of the body's contacts
 
 }  // namespace perpdot

@@ -49,8 +49,8 @@ void gatherRows(const World::Impl& w, const ContactConstraint& c, float* rows) {
     set(offsetof(Rows, rollingResistance), contact.rollingResistance);
     set(offsetof(Rows, tangentSpeed), contact.tangentSpeed);
     set(offsetof(Rows, rollingImpulse), contact.rollingImpulse);
-    set(offsetof(Rows, turnsA), roundingRadius(w.shapes[contact.a.shape]) == 0.0f ? 1.0f : 0.0f);
-    set(offsetof(Rows, turnsB), roundingRadius(w.shapes[contact.b.shape]) == 0.0f ? 1.0f : 0.0f);
+    set(offsetof(Rows, turnsA), contact.turnsA ? 1.0f : 0.0f);
+    set(offsetof(Rows, turnsB), contact.turnsB ? 1.0f : 0.0f);
     for (int i = 0; i < 2; ++i) {
         const std::size_t point = offsetof(Rows, points) + static_cast<std::size_t>(i) * sizeof(PointRows);
         if (i >= contact.pointCount) {

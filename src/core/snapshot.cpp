@@ -452,8 +452,7 @@ void World::restore(std::span<const uint8_t> bytes) {
         if (sa.body == sb.body || !collide::CollisionSystem::canCollide(sa.type, sb.type) ||
             collide::CollisionSystem::mustSwap(sa.type, sb.type))
             in.fail("contact " + std::to_string(i) + " pairs shapes that cannot collide");
-        c.bodyA = sa.body;
-        c.bodyB = sb.body;
+        bindShapes(c, sa, sb);
     }
     w.contactCache.contacts.restoreFreeList(readFreeList(in, contactAlive, "free contact"));
     std::vector<bool> edgeSeen(2 * static_cast<size_t>(contactCount), false);
