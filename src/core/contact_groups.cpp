@@ -34,10 +34,10 @@ struct RowSide {
 };
 
 // −n, −perpDot(rA, n) for A; n, perpDot(rB, n) for B.
-std::array<RowSide, 2> sidesOf(const ContactConstraint& c, const ContactPointRows<float>& cp) {
-    const Vec2 n = c.normal;
-    return {RowSide{c.indexA, -n, -perpDot(cp.anchorA, n), c.invMassA, c.invIA},
-            RowSide{c.indexB, n, perpDot(cp.anchorB, n), c.invMassB, c.invIB}};
+std::array<RowSide, 2> sidesOf(const ContactConstraint& c, const ContactRows<float>& rows, const ContactPointRows<float>& cp) {
+    const Vec2 n = rows.normal;
+    return {RowSide{c.indexA, -n, -perpDot(cp.anchorA, n), rows.invMassA, rows.invIA},
+            RowSide{c.indexB, n, perpDot(cp.anchorB, n), rows.invMassB, rows.invIB}};
 }
 
 // K_rs = Σ over the bodies rows r and s share: lin_r·lin_s / m + ang_r ang_s / I.
@@ -57,8 +57,8 @@ bool assemble(World::Impl& w, ContactGroups& g, int group) {
     double* L = &g.L[g.matrixStart[group]];
     auto sides = [&](int row) {
         const auto [k, i] = g.rows[first + row];
-        const ContactConstraint& c = w.scratch.constraints[k];
-        return sidesOf(c, c.points[i]);
+        const ContactRows<float>& rows = w.scratch.constraintRows[k];
+        return sidesOf(w.scratch.constraints[k], rows, rows.points[i]);
     };
     for (int r = 0; r < n; ++r) {
         const std::array<RowSide, 2> sr = sides(r);
@@ -191,7 +191,7 @@ void findContactGroups(World::Impl& w, const StepContext& ctx) {
         if (const int group = groupOf(k); group >= 0) g.constraints[g.start[group] + g.rowCount[group]++] = k;
 
     // Each group's rows, K and factor; a group whose K does not factor stays with the sequential rows.
-    for (int k : g.constraints) prepareContactRows(w, ctx, w.scratch.constraints[k]);
+    for (int k : g.constraints) prepareContactRows(w, ctx, w.scratch.constraints[k], w.scratch.constraintRows[k]);
     int kept = 0;
     for (int group = 0; group < groups; ++group) {
         const int rowsBefore = static_cast<int>(g.rows.size());
@@ -278,14 +278,15 @@ bool solveGroupNormals(World::Impl& w, ContactGroups& g, int group, const StepCo
     const double* K = &g.K[g.matrixStart[group]];
     const double* L = &g.L[g.matrixStart[group]];
     const Softness& soft = ctx.contactSoftness;  // one softness for all rows: the rest state C = K F / ω²
-    for (int r = 0; r < n; ++r) g.lambda[r] = w.scratch.constraints[g.rows[first + r][0]].points[g.rows[first + r][1]].normalImpulse;
+    for (int r = 0; r < n; ++r) g.lambda[r] = w.scratch.constraintRows[g.rows[first + r][0]].points[g.rows[first + r][1]].normalImpulse;
     for (int r = 0; r < n; ++r) {
         const auto [k, i] = g.rows[first + r];
         const ContactConstraint& c = w.scratch.constraints[k];
-        const ContactPointRows<float>& cp = c.points[i];
+        const ContactRows<float>& rows = w.scratch.constraintRows[k];
+        const ContactPointRows<float>& cp = rows.points[i];
         const BodyState &a = w.scratch.states[c.indexA], &b = w.scratch.states[c.indexB];
-        const float s = currentSeparation(c, cp, a, b);
-        const float vn = dot(relativeVelocity(a, b, cp.anchorA, cp.anchorB), c.normal);
+        const float s = currentSeparation(rows, cp, a, b);
+        const float vn = dot(relativeVelocity(a, b, cp.anchorA, cp.anchorB), rows.normal);
         if (s > 0.0f) {
             g.y[r] = -(vn + s * ctx.invHs);
         } else if (useBias) {
@@ -300,13 +301,14 @@ bool solveGroupNormals(World::Impl& w, ContactGroups& g, int group, const StepCo
     if (!solveComplementarity(g, n, K, L)) return false;
     for (int r = 0; r < n; ++r) {
         const auto [k, i] = g.rows[first + r];
-        ContactConstraint& c = w.scratch.constraints[k];
-        ContactPointRows<float>& cp = c.points[i];
+        const ContactConstraint& c = w.scratch.constraints[k];
+        ContactRows<float>& rows = w.scratch.constraintRows[k];
+        ContactPointRows<float>& cp = rows.points[i];
         const float newImpulse = std::max(cp.normalImpulse + static_cast<float>(g.x[r]), 0.0f);
         const float impulse = newImpulse - cp.normalImpulse;
         cp.normalImpulse = newImpulse;
         cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, impulse);
-        applyImpulse(c, w.scratch.states[c.indexA], w.scratch.states[c.indexB], cp.anchorA, cp.anchorB, impulse * c.normal);
+        applyImpulse(rows, w.scratch.states[c.indexA], w.scratch.states[c.indexB], cp.anchorA, cp.anchorB, impulse * rows.normal);
     }
     return true;
 }
@@ -318,8 +320,8 @@ void contactGroupRows(World::Impl& w, const StepContext& ctx, RowPass pass) {
     if (pass == RowPass::Restitution) {  // the bounce is row by row, as for every constraint
         const std::vector<SubstepForces>& forces = w.scratch.substepForces;
         for (int index : g.constraints) {
-            ContactConstraint& c = w.scratch.constraints[index];
-            restituteContact(c, w.scratch.states[c.indexA], w.scratch.states[c.indexB], substepVelocityChange(forces, c.indexA),
+            const ContactConstraint& c = w.scratch.constraints[index];
+            restituteContact(w.scratch.constraintRows[index], w.scratch.states[c.indexA], w.scratch.states[c.indexB], substepVelocityChange(forces, c.indexA),
                              substepVelocityChange(forces, c.indexB), ctx);
         }
         return;
@@ -328,13 +330,14 @@ void contactGroupRows(World::Impl& w, const StepContext& ctx, RowPass pass) {
         const bool useBias = pass == RowPass::Solve;
         const bool solved = pass != RowPass::WarmStart && solveGroupNormals(w, g, group, ctx, useBias);
         for (int s = g.start[group]; s < g.start[group + 1]; ++s) {
-            ContactConstraint& c = w.scratch.constraints[g.constraints[s]];
+            const ContactConstraint& c = w.scratch.constraints[g.constraints[s]];
+            ContactRows<float>& rows = w.scratch.constraintRows[g.constraints[s]];
             BodyState &a = w.scratch.states[c.indexA], &b = w.scratch.states[c.indexB];
-            if (pass == RowPass::WarmStart) warmStartContact(c, a, b);
-            else if (solved && useBias) solveContact<true, false>(c, a, b, ctx);  // its tangent rows
-            else if (solved) solveContact<false, false>(c, a, b, ctx);
-            else if (useBias) solveContact<true>(c, a, b, ctx);
-            else solveContact<false>(c, a, b, ctx);
+            if (pass == RowPass::WarmStart) warmStartContact(rows, a, b);
+            else if (solved && useBias) solveContact<true, false>(rows, a, b, ctx);  // its tangent rows
+            else if (solved) solveContact<false, false>(rows, a, b, ctx);
+            else if (useBias) solveContact<true>(rows, a, b, ctx);
+            else solveContact<false>(rows, a, b, ctx);
         }
     }
 }

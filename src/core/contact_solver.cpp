@@ -68,11 +68,10 @@ void gatherRows(const World::Impl& w, const ContactConstraint& c, float* rows) {
 
 }  // namespace
 
-void prepareContactRows(const World::Impl& w, const StepContext& ctx, ContactConstraint& c) {
-    gatherRows<1>(w, c, c.rowData());
+void prepareContactRows(const World::Impl& w, const StepContext& ctx, const ContactConstraint& c, ContactRows<float>& rows) {
+    gatherRows<1>(w, c, rowData(rows));
     const float present[2] = {c.pointCount > 0 ? 1.0f : 0.0f, c.pointCount > 1 ? 1.0f : 0.0f};
-    deriveContactRows(static_cast<ContactRows<float>&>(c), w.scratch.freeVelocities[c.indexA], w.scratch.freeVelocities[c.indexB],
-                      present, ctx);
+    deriveContactRows(rows, w.scratch.freeVelocities[c.indexA], w.scratch.freeVelocities[c.indexB], present, ctx);
 }
 
 void gatherContactLane(const World::Impl& w, const ContactConstraint& c, float* lane, int lanes) {
@@ -93,6 +92,7 @@ void prepareContacts(World::Impl& w, const StepContext& ctx) {
         w.contactCache.contacts.capacity(), constrains,
         [&](int total) {
             s.constraints.resize(total);
+            s.constraintRows.resize(total);
             s.constraintSlots.resize(total);
         },
         [&](int k, int index) {

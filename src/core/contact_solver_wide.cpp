@@ -51,8 +51,8 @@ void forContacts(World::Impl& w, int begin, int end, bool overflow, Rows rows,
     }
     if (!overflow) return;
     for (int index : w.scratch.overflowConstraints) {
-        ContactConstraint& c = w.scratch.constraints[index];
-        rows(c, states[c.indexA], states[c.indexB], c.indexA, c.indexB);
+        const ContactConstraint& c = w.scratch.constraints[index];
+        rows(w.scratch.constraintRows[index], states[c.indexA], states[c.indexB], c.indexA, c.indexB);
     }
 }
 
@@ -167,13 +167,14 @@ void prepareContactBlocks(World::Impl& w, const StepContext& ctx) {
         const int index = s.contactOrder[position];
         if (direct[index]) continue;
         s.overflowConstraints.push_back(index);
-        prepareContactRows(w, ctx, s.constraints[index]);
+        prepareContactRows(w, ctx, s.constraints[index], s.constraintRows[index]);
     }
 }
 
-// Field `field` (a float index, pointField) of constraint c's rows, in its lane or its own rows.
-float contactRowField(const World::Impl& w, const ContactConstraint& c, std::size_t field) {
-    if (c.block < 0) return c.rowData()[field];
+// Field `field` (a float index, pointField) of constraint k's rows, in its lane or its own rows.
+float contactRowField(const World::Impl& w, int k, std::size_t field) {
+    const ContactConstraint& c = w.scratch.constraints[k];
+    if (c.block < 0) return rowData(w.scratch.constraintRows[k])[field];
 #ifdef PERPDOT_AVX2
     if (w.scratch.contactLanes == 8) return w.scratch.contactBlocks8[c.block].rowData()[field * ContactBlock8::lanes + c.lane];
 #endif
@@ -245,12 +246,13 @@ void storeContactImpulses(World::Impl& w) {
         storeBlocks(w, s.contactBlocks);
     auto storeRows = [&](int index) {
         const ContactConstraint& c = s.constraints[index];
+        const ContactRows<float>& rows = s.constraintRows[index];
         Contact& contact = w.contactCache.contacts[c.contact];
-        contact.rollingImpulse = c.rollingImpulse;
+        contact.rollingImpulse = rows.rollingImpulse;
         for (int i = 0; i < c.pointCount; ++i) {
-            contact.points[i].normalImpulse = c.points[i].normalImpulse;
-            contact.points[i].tangentImpulse = c.points[i].tangentImpulse;
-            contact.points[i].maxNormalImpulse = c.points[i].maxNormalImpulse;
+            contact.points[i].normalImpulse = rows.points[i].normalImpulse;
+            contact.points[i].tangentImpulse = rows.points[i].tangentImpulse;
+            contact.points[i].maxNormalImpulse = rows.points[i].maxNormalImpulse;
         }
     };
     for (int index : s.overflowConstraints) storeRows(index);

@@ -38,13 +38,14 @@ void World::Impl::reportTouch(const Contact& c, bool begin) {
 // approached faster than the threshold and actually pushed (λn > 0 at some substep).
 void reportHitEvents(World::Impl& w) {
     if (!w.shapes.anyHitEvents) return;
-    for (const ContactConstraint& c : w.scratch.constraints) {
+    for (int k = 0; k < static_cast<int>(w.scratch.constraints.size()); ++k) {
+        const ContactConstraint& c = w.scratch.constraints[k];
         const Contact& contact = w.contactCache.contacts[c.contact];
         if (!w.shapes[contact.a.shape].enableHitEvents && !w.shapes[contact.b.shape].enableHitEvents) continue;
         ContactHitEvent event{w.shapeId(contact.a.shape), w.shapeId(contact.b.shape), {}, contact.normal, w.def.hitEventThreshold};
         bool hit = false;
         for (int i = 0; i < c.pointCount; ++i) {
-            const float approachSpeed = -contactRowField(w, c, pointField(i, offsetof(ContactPointRows<float>, relativeVelocity)));
+            const float approachSpeed = -contactRowField(w, k, pointField(i, offsetof(ContactPointRows<float>, relativeVelocity)));
             if (approachSpeed > event.approachSpeed && contact.points[i].maxNormalImpulse > 0.0f) {
                 event.approachSpeed = approachSpeed;
                 event.point = contact.points[i].point;

@@ -19,15 +19,17 @@ namespace perpdot {
 
 // A contact's constraint for this step: where it came from (the contact, the bodies' solver
 // slots) and where its rows are (ContactRows<float>, contact_solver_wide.hpp): a lane of a block
-// (contactBlocks or contactBlocks8), or these rows when it has no colour (overflow, contact groups).
-struct ContactConstraint : ContactRows<float> {
+// (contactBlocks or contactBlocks8), or its own rows in StepScratch::constraintRows when it has no
+// colour (overflow, contact groups). Kept small: the blocks' preparation reads these in colour order.
+struct ContactConstraint {
     int indexA = 0, indexB = 0;  // solver slots
     int contact = -1;
     int pointCount = 0;
-    int block = -1, lane = 0;  // block -1: these rows
-    const float* rowData() const { return reinterpret_cast<const float*>(static_cast<const ContactRows<float>*>(this)); }
-    float* rowData() { return reinterpret_cast<float*>(static_cast<ContactRows<float>*>(this)); }
+    int block = -1, lane = 0;  // block -1: its own rows
 };
+
+inline const float* rowData(const ContactRows<float>& rows) { return reinterpret_cast<const float*>(&rows); }
+inline float* rowData(ContactRows<float>& rows) { return reinterpret_cast<float*>(&rows); }
 
 // A body's path over the rest of a step, for continuous collision between moving bodies
 // (continuous_impacts.cpp): centre of mass and angle go linearly from (c0, a0) at time t0 to
@@ -65,6 +67,7 @@ struct StepScratch {
     std::vector<SubstepForces> substepForces;  // of states[i]
     std::vector<BodyState> freeVelocities;     // of states[i]: v and ω at the step's end without contacts (contact_solver.cpp)
     std::vector<ContactConstraint> constraints;
+    std::vector<ContactRows<float>> constraintRows;  // by constraint: the rows of those outside the blocks
     std::vector<std::array<int, 2>> constraintSlots;  // by constraint: its bodies' solver slots, for colouring
     GraphColoring coloring;  // one constraint graph: the colours of joints, then of `constraints` (graph_color.hpp)
     int contactLanes = chooseContactLanes();     // constraints per block: 4, or 8 with AVX2

@@ -84,8 +84,8 @@ void serialContactRows(World::Impl& world, const StepContext& ctx, RowPass pass)
 // The accumulated impulses, restitution's included, into the contacts (the blocks' straight from
 // their lanes).
 void storeContactImpulses(World::Impl& world);
-// Field `field` (a float index of ContactRows<float>, pointField) of constraint c's rows.
-float contactRowField(const World::Impl& world, const ContactConstraint& c, std::size_t field);
+// Field `field` (a float index of ContactRows<float>, pointField) of a constraint's rows.
+float contactRowField(const World::Impl& world, int constraint, std::size_t field);
 void reportHitEvents(World::Impl& world);
 
 }  // namespace perpdot
