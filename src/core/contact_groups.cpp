@@ -106,7 +106,7 @@ void findContactGroups(World::Impl& w, const StepContext& ctx) {
     // From the contact: the rows are prepared once the groups are known (contact_prepare.hpp).
     auto loaded = [&](const ContactConstraint& c) {
         const Contact& contact = w.contactCache.contacts[c.contact];
-        const RowMasses m = rowMasses(w.bodies[contact.bodyA], w.bodies[contact.bodyB]);
+        const RowMasses m = rowMasses(w.scratch, c.indexA, c.indexB);
         for (int i = 0; i < c.pointCount; ++i) {
             const ContactPointState& p = contact.points[i];
             const float normalMass = effectiveMass<float>(m, p.anchorA, p.anchorB, contact.normal);

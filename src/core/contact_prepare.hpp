@@ -7,6 +7,7 @@
 #pragma once
 
 #include "core/body_store.hpp"
+#include "core/step_scratch.hpp"
 #include "core/contact_solver_wide.hpp"
 #include "core/step_context.hpp"
 #include "perpdot/world.hpp"
@@ -20,7 +21,11 @@ struct RowMasses {
     float invMassA, invIA, invMassB, invIB;
 };
 
-inline RowMasses rowMasses(const Body& a, const Body& b) { return {a.invMass, a.invInertia, b.invMass, b.invInertia}; }
+// Read from the solver slots (StepScratch::inverseMasses): a dense array, where the bodies are not.
+inline RowMasses rowMasses(const StepScratch& s, int slotA, int slotB) {
+    const InverseMass a = s.inverseMasses[slotA], b = s.inverseMasses[slotB];
+    return {a.invMass, a.invInertia, b.invMass, b.invInertia};
+}
 
 // The rows of constraint c (its contact and solver slots set, StepScratch::freeVelocities filled):
 // its own `rows`, gathered and derived (deriveContactRows, contact_solver_wide.hpp); or the gather

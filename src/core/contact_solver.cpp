@@ -38,7 +38,7 @@ void gatherRows(const World::Impl& w, const ContactConstraint& c, float* rows) {
         set(offset + offsetof(Vec2, y), value.y);
     };
     const Contact& contact = w.contactCache.contacts[c.contact];
-    const RowMasses m = rowMasses(w.bodies[contact.bodyA], w.bodies[contact.bodyB]);
+    const RowMasses m = rowMasses(w.scratch, c.indexA, c.indexB);
     set(offsetof(Rows, invMassA), m.invMassA);
     set(offsetof(Rows, invIA), m.invIA);
     set(offsetof(Rows, invMassB), m.invMassB);

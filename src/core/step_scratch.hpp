@@ -65,6 +65,7 @@ struct StepScratch {
     std::vector<float> stepRotation;    // Δθ of states[i], summed over substeps
     std::vector<uint8_t> bodyMotion;    // finalizeBodies scratch, by awake body: its Motion (integrate.cpp)
     std::vector<SubstepForces> substepForces;  // of states[i]
+    std::vector<InverseMass> inverseMasses;    // of states[i] (slot 0: none): dense, for gathering rows
     std::vector<BodyState> freeVelocities;     // of states[i]: v and ω at the step's end without contacts (contact_solver.cpp)
     std::vector<ContactConstraint> constraints;
     std::vector<ContactRows<float>> constraintRows;  // by constraint: the rows of those outside the blocks
