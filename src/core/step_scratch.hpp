@@ -25,8 +25,8 @@ struct ContactConstraint : ContactRows<float> {
     int contact = -1;
     int pointCount = 0;
     int block = -1, lane = 0;  // block -1: these rows
-    const float* rowData() const { return reinterpret_cast<const float*>(static_cast<const ContactRows<float>*>(this)); }
-    float* rowData() { return reinterpret_cast<float*>(static_cast<ContactRows<float>*>(this)); }
+    const float* rowData() const { return floatsOf(static_cast<const ContactRows<float>&>(*this)); }
+    float* rowData() { return floatsOf(static_cast<ContactRows<float>&>(*this)); }
 };
 
 // A body's path over the rest of a step, for continuous collision between moving bodies
