@@ -26,9 +26,7 @@ struct PrismaticRowSet {
         F motorImpulse{}, lowerImpulse{}, upperImpulse{};  // λ of the axis rows
         F deltaAngle{};             // θB − θA − θref at step start
         F axialMass{};              // of the row along the axis
-        // The axis rows' constants, gathered where optionalRows.
-        F lower{}, upper{}, motorSpeed{}, maxMotorForce{};
-        F motor{}, limit{};  // 1 where enabled, else 0
+        MotorLimitsT<F> axial;      // motor force, limits: gathered where optionalRows
     };
 
     static bool optionalRows(const PreparedJoint& j) {
@@ -50,12 +48,8 @@ struct PrismaticRowSet {
         out.set(offsetof(R, deltaAngle), j.deltaAngle);
         out.set(offsetof(R, axialMass), s.axialMass);
         if (!optionalRows) return;
-        out.set(offsetof(R, lower), s.lower);
-        out.set(offsetof(R, upper), s.upper);
-        out.set(offsetof(R, motorSpeed), s.motorSpeed);
-        out.set(offsetof(R, maxMotorForce), s.maxMotorForce);
-        out.set(offsetof(R, motor), s.enableMotor ? 1.0f : 0.0f);
-        out.set(offsetof(R, limit), s.enableLimit ? 1.0f : 0.0f);
+        gatherMotorLimits(out, offsetof(R, axial),
+                          {s.motorSpeed, s.maxMotorForce, s.lower, s.upper, s.enableMotor ? 1.0f : 0.0f, s.enableLimit ? 1.0f : 0.0f});
     }
 
     // Re-apply last step's impulses: motor + lower − upper along the axis, then the block's.
@@ -67,25 +61,14 @@ struct PrismaticRowSet {
         applyRow(p, angularRowOf<F>(), r.impulse.y);
     }
 
-    // One pass: the motor drives the slide to motorSpeed (|λ| ≤ maxMotorForce·hs), the limits keep
-    // translation − lower ≥ 0 and upper − translation ≥ 0; then the perpendicular and angle rows
-    // (θ = (θB − θA − θref)₀ + p.rotation) as one block.
+    // One pass: the motor and the limits on the translation along the axis; then the
+    // perpendicular and angle rows (θ = (θB − θA − θref)₀ + p.rotation) as one block.
     template <class F>
     static void solve(Rows<F>& r, JointPairT<F>& p, const StepContext& ctx, bool useBias, bool optionalRows) {
         const AxisRowsT<F> rows = axisRows(p, r.anchorA, r.anchorB, r.deltaCenter, r.axisA);
-        if (optionalRows) {
-            solveWhere(
-                r.motor != F(0.0f), p,
-                [&] { solveMotorRow(p, rows.axial, r.axialMass, r.motorSpeed, r.maxMotorForce * F(ctx.hs), r.motorImpulse); },
-                r.motorImpulse);
-            solveWhere(
-                r.limit != F(0.0f), p,
-                [&] {
-                    solveLimitRow(p, rows.axial, r.axialMass, rows.translation - r.lower, ctx, useBias, r.lowerImpulse);
-                    solveLimitRow(p, negated(rows.axial), r.axialMass, r.upper - rows.translation, ctx, useBias, r.upperImpulse);
-                },
-                r.lowerImpulse, r.upperImpulse);
-        }
+        if (optionalRows)
+            solveMotorAndLimits(p, rows.axial, r.axialMass, rows.translation, r.axial, ctx, useBias, r.motorImpulse, r.lowerImpulse,
+                                r.upperImpulse);
         solveRowPair(p, rows.perpendicular, angularRowOf<F>(), Vec2T<F>{rows.offset, r.deltaAngle + p.rotation},
                      rigidSoftness(ctx, useBias), r.impulse);
     }

@@ -26,9 +26,7 @@ struct RevoluteRowSet {
         // The angle rows' constants, gathered where optionalRows: last, away from what every block reads.
         F deltaAngle{};  // θB − θA − θref at step start
         F axialMass{};   // 1 / (1/IA + 1/IB)
-        F motorSpeed{}, maxMotorTorque{};
-        F lowerAngle{}, upperAngle{};
-        F motor{}, limit{};  // 1 where enabled, else 0
+        MotorLimitsT<F> angle;  // motor torque, limit angles
     };
 
     static bool optionalRows(const PreparedJoint& j) { return !pointRowsOnly(j); }
@@ -46,12 +44,9 @@ struct RevoluteRowSet {
         if (!optionalRows) return;
         out.set(offsetof(R, deltaAngle), j.deltaAngle);
         out.set(offsetof(R, axialMass), r.axialMass);
-        out.set(offsetof(R, motorSpeed), r.motorSpeed);
-        out.set(offsetof(R, maxMotorTorque), r.maxMotorTorque);
-        out.set(offsetof(R, lowerAngle), r.lowerAngle);
-        out.set(offsetof(R, upperAngle), r.upperAngle);
-        out.set(offsetof(R, motor), r.enableMotor ? 1.0f : 0.0f);
-        out.set(offsetof(R, limit), r.enableLimit ? 1.0f : 0.0f);
+        gatherMotorLimits(out, offsetof(R, angle),
+                          {r.motorSpeed, r.maxMotorTorque, r.lowerAngle, r.upperAngle, r.enableMotor ? 1.0f : 0.0f,
+                           r.enableLimit ? 1.0f : 0.0f});
     }
 
     // Re-apply last step's impulses: λ at the anchors, then motor + lower − upper on ωB − ωA.
@@ -62,26 +57,13 @@ struct RevoluteRowSet {
         applyRow(p, angularRowOf<F>(), r.motorImpulse + r.lowerImpulse - r.upperImpulse);
     }
 
-    // One pass: the motor drives ωB − ωA to motorSpeed (|λ| ≤ maxMotorTorque·hs), the limits keep
-    // θ − lower ≥ 0 and upper − θ ≥ 0, θ = (θB − θA − θref)₀ + p.rotation; then the point rows on
-    // C = pB − pA, solved last so that the stiffest part wins.
+    // One pass: the motor and the limits on θ = (θB − θA − θref)₀ + p.rotation, row ωB − ωA; then
+    // the point rows on C = pB − pA, solved last so that the stiffest part wins.
     template <class F>
     static void solve(Rows<F>& r, JointPairT<F>& p, const StepContext& ctx, bool useBias, bool optionalRows) {
-        if (optionalRows) {
-            const RowT<F> angular = angularRowOf<F>();
-            solveWhere(
-                r.motor != F(0.0f), p,
-                [&] { solveMotorRow(p, angular, r.axialMass, r.motorSpeed, r.maxMotorTorque * F(ctx.hs), r.motorImpulse); },
-                r.motorImpulse);
-            solveWhere(
-                r.limit != F(0.0f), p,
-                [&] {
-                    const F angle = r.deltaAngle + p.rotation;
-                    solveLimitRow(p, angular, r.axialMass, angle - r.lowerAngle, ctx, useBias, r.lowerImpulse);
-                    solveLimitRow(p, negated(angular), r.axialMass, r.upperAngle - angle, ctx, useBias, r.upperImpulse);
-                },
-                r.lowerImpulse, r.upperImpulse);
-        }
+        if (optionalRows)
+            solveMotorAndLimits(p, angularRowOf<F>(), r.axialMass, r.deltaAngle + p.rotation, r.angle, ctx, useBias, r.motorImpulse,
+                                r.lowerImpulse, r.upperImpulse);
         const JointFrameT<F> f = currentFrame(p, r.anchorA, r.anchorB, r.deltaCenter);
         solvePointRows(p, f.rA, f.rB, f.d, rigidSoftness(ctx, useBias), r.linearImpulse);
     }

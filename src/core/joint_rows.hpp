@@ -147,6 +147,31 @@ inline void solveWhere(simd::Mask4 enabled, JointPairT<simd::Float4>& p, Solve s
     ((lambdas = select(enabled, lambdas, before[i++])), ...);
 }
 
+// A motor and two limits on one coordinate of a joint (the revolute joint's angle, the prismatic
+// joint's translation), as its rows carry them.
+template <class F>
+struct MotorLimitsT {
+    F motorSpeed{}, maxMotor{};  // maxMotor: torque or force
+    F lower{}, upper{};
+    F motor{}, limit{};  // 1 where enabled, else 0
+};
+
+// One pass of them along `row` (effective mass `mass`), each where a joint has it: the motor drives
+// Ċ to motorSpeed (|λ| ≤ maxMotor·hs), the limits keep position − lower ≥ 0 and upper − position ≥ 0.
+template <class F>
+inline void solveMotorAndLimits(JointPairT<F>& p, const RowT<F>& row, F mass, F position, const MotorLimitsT<F>& c,
+                                const StepContext& ctx, bool useBias, F& motorImpulse, F& lowerImpulse, F& upperImpulse) {
+    solveWhere(
+        c.motor != F(0.0f), p, [&] { solveMotorRow(p, row, mass, c.motorSpeed, c.maxMotor * F(ctx.hs), motorImpulse); }, motorImpulse);
+    solveWhere(
+        c.limit != F(0.0f), p,
+        [&] {
+            solveLimitRow(p, row, mass, position - c.lower, ctx, useBias, lowerImpulse);
+            solveLimitRow(p, negated(row), mass, c.upper - position, ctx, useBias, upperImpulse);
+        },
+        lowerImpulse, upperImpulse);
+}
+
 // --- Point rows: B's anchor held on A's, both directions at once. ---
 
 template <class F>

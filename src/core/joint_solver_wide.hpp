@@ -88,6 +88,18 @@ void gatherFrame(const PreparedJoint& j, RowLane<lanes> out) {
     out.set(offsetof(R, deltaCenter), j.deltaCenter);
 }
 
+// A motor's and limits' constants (joint_rows.hpp), gathered at `offset` in the rows.
+template <std::size_t lanes>
+void gatherMotorLimits(RowLane<lanes> out, std::size_t offset, const MotorLimitsT<float>& c) {
+    using M = MotorLimitsT<float>;
+    out.set(offset + offsetof(M, motorSpeed), c.motorSpeed);
+    out.set(offset + offsetof(M, maxMotor), c.maxMotor);
+    out.set(offset + offsetof(M, lower), c.lower);
+    out.set(offset + offsetof(M, upper), c.upper);
+    out.set(offset + offsetof(M, motor), c.motor);
+    out.set(offset + offsetof(M, limit), c.limit);
+}
+
 namespace joint_lanes {
 
 template <class RowSet>
