@@ -10,15 +10,16 @@
 // they agree bit for bit.
 //
 // A row set RowSet (joint_revolute.cpp, joint_weld.cpp, joint_prismatic.cpp, joint_wheel.cpp) has
-//   template <class F> using Rows = ...;   its fields, floats only (row_lanes.hpp)
+//   template <class F> struct Rows;                  its fields, floats only (row_lanes.hpp)
 //   static bool optionalRows(const PreparedJoint&);   whether the joint has rows others of its type lack
 //   static bool usesRotation(bool optionalRows);      whether solve reads p.rotation
 //   template <std::size_t lanes> static void gather(const PreparedJoint&, RowLane<lanes>, bool optionalRows);
 //   template <class F> static void warmStart(const Rows<F>&, JointPairT<F>&);
 //   template <class F> static void solve(Rows<F>&, JointPairT<F>&, const StepContext&, bool useBias, bool optionalRows);
 //   template <std::size_t lanes> static void store(RowLane<lanes, const float>, JointData&, bool optionalRows);
-// where optionalRows says, for a block, whether any lane has such rows (gather and solve may leave
-// them out where none has), and is true for one joint.
+// store writes the impulses back, and what the type's prepare wrote where the joint's snapshots
+// have carried it (the bytes a scalar solve leaves). optionalRows says, for a block, whether any
+// lane has such rows (gather and solve may leave them out where none has); it is true for one joint.
 #pragma once
 
 #include <array>
