@@ -85,8 +85,7 @@ TEST(ContactSolverWide, FourLanesEqualFourScalarSolves) {
             restituteContact(scalarRows[lane], scalar[bodyA[lane]], scalar[bodyB[lane]], substepVelocityChange(forces, bodyA[lane]),
                              substepVelocityChange(forces, bodyB[lane]), ctx);
 
-        ContactRows<simd::Float4> wide;
-        packLanes<ContactRows>({&rows[0], &rows[1], &rows[2], &rows[3]}, wide);
+        ContactRows<simd::Float4> wide = lanes_test::lanesOf<ContactRows>(rows);
         for (const bool useBias : {true, false}) {
             BodyLanes<simd::Float4> a = gatherBodies(states, bodyA), b = gatherBodies(states, bodyB);
             warmStartContact(wide, a, b);
@@ -143,8 +142,7 @@ TEST(ContactSolverWide, DerivedRowsInFourLanesEqualFourScalarDerivations) {
         const int bodyA[4] = {1, 3, 0, 7};
         const int bodyB[4] = {2, 4, 5, 8};
 
-        ContactRows<simd::Float4> wide;
-        packLanes<ContactRows>({&rows[0], &rows[1], &rows[2], &rows[3]}, wide);
+        ContactRows<simd::Float4> wide = lanes_test::lanesOf<ContactRows>(rows);
         float present[2][4];
         for (int lane = 0; lane < 4; ++lane)
             for (int i = 0; i < 2; ++i) present[i][lane] = i < pointCounts[lane] ? 1.0f : 0.0f;

@@ -1,15 +1,22 @@
-// The revolute rows of src/core/joint_solver_wide.hpp solve four joints in simd::Float4 lanes (a
-// RevoluteBlock) with bit for bit the results of the scalar revolute joint (warmStartRevolute,
-// solveRevolute) solving them one at a time: point rows alone, and motors and limits on or off
-// lane by lane, mixed in one block, with a joint on a static body, warm-started impulses and an
-// empty lane.
+// The joint rows of src/core/joint_solver_wide.hpp solve four joints of a type in simd::Float4
+// lanes (a JointBlock) with bit for bit the results of the type's scalar stages solving them one
+// at a time: revolute point rows alone; revolute and prismatic motors and limits, weld springs,
+// wheel motors and springs on or off lane by lane, mixed in one block; with a joint on a static
+// body, warm-started impulses and an empty lane.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <cstdint>
+#include <cstring>
 #include <string>
 #include <vector>
 
+#include "core/joint_prismatic.hpp"
+#include "core/joint_revolute.hpp"
 #include "core/joint_solver_wide.hpp"
+#include "core/joint_weld.hpp"
+#include "core/joint_wheel.hpp"
 #include "lanes_helpers.hpp"
 
 namespace perpdot {
@@ -20,31 +27,94 @@ using lanes_test::randomBody;
 using lanes_test::sameBits;
 using simd::Float4;
 
-// A revolute joint prepared between solver slots a and b, with a motor and a limit if asked. The
-// impulses are warm-started ones, also those of rows it lacks (left from when it had them: the
-// warm start re-applies them). The limits are sometimes reached, sometimes speculative, and the
-// motor's torque sometimes caps its impulse.
-PreparedJoint randomJoint(Random& r, int a, int b, bool motor, bool limit) {
+// A joint of `type` prepared between solver slots a and b (a = 0: body A static, no mass), its
+// frame at step start random.
+PreparedJoint randomFrame(Random& r, JointType type, int a, int b) {
     PreparedJoint j;
+    j.type = type;
     j.indexA = a;
     j.indexB = b;
     j.mass = {r(0.1f, 2.0f), r(0.1f, 4.0f), r(0.1f, 2.0f), r(0.1f, 4.0f)};
+    if (a == 0) j.mass.mA = j.mass.iA = 0.0f;
     j.anchorA = {r(-0.5f, 0.5f), r(-0.5f, 0.5f)};
     j.anchorB = {r(-0.5f, 0.5f), r(-0.5f, 0.5f)};
     j.deltaCenter = {r(-1.0f, 1.0f), r(-1.0f, 1.0f)};
     j.deltaAngle = r(-1.0f, 1.0f);
-    RevoluteJoint& rev = j.data.as<RevoluteJoint>();
+    return j;
+}
+
+Vec2 randomAxis(Random& r) { return normalize(Vec2{r(-1.0f, 1.0f), r(0.1f, 1.0f)}); }
+
+// The joints below have warm-started impulses, also those of rows they lack (left from when they
+// had them: the warm start re-applies them). Limits are sometimes reached, sometimes speculative,
+// and a motor's torque or force sometimes caps its impulse (60·hs = 0.25 at most).
+
+// A revolute joint, with a motor (flags bit 0) and a limit (bit 1) if asked.
+PreparedJoint randomRevolute(Random& r, int a, int b, int flags, const StepContext&) {
+    PreparedJoint j = randomFrame(r, JointType::Revolute, a, b);
+    RevoluteJoint& rev = j.data.emplace<RevoluteJoint>();
     rev.linearImpulse = {r(-2.0f, 2.0f), r(-2.0f, 2.0f)};
     rev.motorImpulse = r(-0.3f, 0.3f);
     rev.lowerImpulse = r(0.0f, 0.3f);
     rev.upperImpulse = r(0.0f, 0.3f);
-    rev.enableMotor = motor;
+    rev.enableMotor = flags & 1;
     rev.motorSpeed = r(-5.0f, 5.0f);
-    rev.maxMotorTorque = r(0.0f, 60.0f);  // |λ| ≤ 60·hs = 0.25 at most
-    rev.enableLimit = limit;
+    rev.maxMotorTorque = r(0.0f, 60.0f);
+    rev.enableLimit = flags & 2;
     rev.lowerAngle = r(-0.8f, 0.0f);
     rev.upperAngle = r(0.0f, 0.8f);
     rev.axialMass = effectiveMass(j.mass, angularRow);
+    return j;
+}
+
+// A weld joint, its angle a spring (flags bit 0) or rigid.
+PreparedJoint randomWeld(Random& r, int a, int b, int flags, const StepContext& ctx) {
+    PreparedJoint j = randomFrame(r, JointType::Weld, a, b);
+    WeldJoint& weld = j.data.emplace<WeldJoint>();
+    weld.hertz = flags & 1 ? r(1.0f, 30.0f) : 0.0f;
+    weld.dampingRatio = r(0.0f, 2.0f);
+    weld.angularSoftness = makeSoftness(weld.hertz, weld.dampingRatio, ctx.hs);
+    weld.axialMass = effectiveMass(j.mass, angularRow);
+    weld.linearImpulse = {r(-2.0f, 2.0f), r(-2.0f, 2.0f)};
+    weld.angularImpulse = r(-0.3f, 0.3f);
+    return j;
+}
+
+// A prismatic joint, with a motor (flags bit 0) and a limit (bit 1) if asked.
+PreparedJoint randomPrismatic(Random& r, int a, int b, int flags, const StepContext&) {
+    PreparedJoint j = randomFrame(r, JointType::Prismatic, a, b);
+    PrismaticJoint& slider = j.data.emplace<PrismaticJoint>();
+    slider.axisA = randomAxis(r);
+    slider.enableMotor = flags & 1;
+    slider.motorSpeed = r(-5.0f, 5.0f);
+    slider.maxMotorForce = r(0.0f, 60.0f);
+    slider.enableLimit = flags & 2;
+    slider.lower = r(-1.5f, 0.0f);
+    slider.upper = r(0.0f, 1.5f);
+    slider.axialMass = axialMass(j, slider.axisA);
+    slider.impulse = {r(-2.0f, 2.0f), r(-0.3f, 0.3f)};
+    slider.motorImpulse = r(-0.3f, 0.3f);
+    slider.lowerImpulse = r(0.0f, 0.3f);
+    slider.upperImpulse = r(0.0f, 0.3f);
+    return j;
+}
+
+// A wheel joint, with a motor (flags bit 0) and a spring suspension (bit 1) if asked.
+PreparedJoint randomWheel(Random& r, int a, int b, int flags, const StepContext& ctx) {
+    PreparedJoint j = randomFrame(r, JointType::Wheel, a, b);
+    WheelJoint& wheel = j.data.emplace<WheelJoint>();
+    wheel.axisA = randomAxis(r);
+    wheel.enableMotor = flags & 1;
+    wheel.motorSpeed = r(-5.0f, 5.0f);
+    wheel.maxMotorTorque = r(0.0f, 60.0f);
+    wheel.hertz = flags & 2 ? r(1.0f, 30.0f) : 0.0f;
+    wheel.dampingRatio = r(0.0f, 2.0f);
+    wheel.spring = makeSoftness(wheel.hertz, wheel.dampingRatio, ctx.hs);
+    wheel.axialMass = axialMass(j, wheel.axisA);
+    wheel.motorMass = effectiveMass(j.mass, angularRow);
+    wheel.perpImpulse = r(-2.0f, 2.0f);
+    wheel.springImpulse = r(-2.0f, 2.0f);
+    wheel.motorImpulse = r(-0.3f, 0.3f);
     return j;
 }
 
@@ -56,9 +126,36 @@ StepContext substepContext() {
     return ctx;
 }
 
+// A prepared joint's data as the store holds it before the step: what prepare writes is last
+// step's (-1 here).
+JointData lastStep(const PreparedJoint& j) {
+    JointData data = j.data;
+    const Softness stale{-1.0f, -1.0f, -1.0f};
+    switch (j.type) {
+        case JointType::Revolute: data.as<RevoluteJoint>().axialMass = -1.0f; break;
+        case JointType::Weld:
+            data.as<WeldJoint>().axialMass = -1.0f;
+            data.as<WeldJoint>().angularSoftness = stale;
+            break;
+        case JointType::Prismatic:
+            data.as<PrismaticJoint>().axisA = {-1.0f, -1.0f};
+            data.as<PrismaticJoint>().axialMass = -1.0f;
+            break;
+        case JointType::Wheel: {
+            WheelJoint& wheel = data.as<WheelJoint>();
+            wheel.axisA = {-1.0f, -1.0f};
+            wheel.axialMass = wheel.motorMass = -1.0f;
+            wheel.spring = stale;
+            break;
+        }
+        default: break;
+    }
+    return data;
+}
+
 // Joints [0, count) (count < 4: the last lane empty) solved both ways from the same bodies, a warm
 // start and a pass with bias, then a warm start and the relax pass: the bodies' velocities and
-// the joints' impulses must agree bit for bit.
+// the joints' data (impulses and all) must agree bit for bit.
 void expectLanesEqualScalar(std::array<PreparedJoint, 4> joints, int count, std::vector<BodyState> states,
                             const std::vector<float>& stepRotation, const StepContext& ctx, const std::string& what) {
     std::vector<BodyState> scalar = states;
@@ -67,20 +164,21 @@ void expectLanesEqualScalar(std::array<PreparedJoint, 4> joints, int count, std:
         for (int lane = 0; lane < count; ++lane) {
             PreparedJoint& j = scalarJoints[lane];
             JointPair p = pairOf(scalar, stepRotation, j);
-            warmStartRevolute(j, p);
-            solveRevolute(j, p, ctx, useBias);
+            stagesOf(j.type).warmStart(j, p);
+            stagesOf(j.type).solve(j, p, ctx, useBias);
         }
     }
 
-    RevoluteBlock block = packRevoluteBlock({&joints[0], &joints[1], &joints[2], &joints[3]},
-                                            {0, 1, 2, count == 4 ? 3 : -1});
+    const JointLaneStages& lanes = *stagesOf(joints[0].type).lanes;
+    JointBlock block;
+    // An empty lane takes the first joint's rows, as prepareJoints gives it.
+    bool optionalRows = false;
+    for (int lane = 0; lane < count; ++lane) optionalRows = optionalRows || lanes.optionalRows(joints[lane]);
+    packJointBlock(block, {&joints[0], &joints[1], &joints[2], count == 4 ? &joints[3] : &joints[0]},
+                   {0, 1, 2, count == 4 ? 3 : -1}, optionalRows);
     for (const bool useBias : {true, false}) {
-        BodyLanes<Float4> a = gatherBodies(states, block.bodyA), b = gatherBodies(states, block.bodyB);
-        JointPairT<Float4> p{a, b, block.mass};
-        warmStartRevoluteRows(block.rows, p);
-        solveRevoluteBlock(block, p, stepRotation, ctx, useBias);
-        scatterVelocities(states, block.bodyA, a);
-        scatterVelocities(states, block.bodyB, b);
+        lanes.warmStart(&block, 1, states);
+        lanes.solve(&block, 1, states, stepRotation, ctx, useBias);
     }
 
     for (size_t i = 0; i < states.size(); ++i) {
@@ -88,25 +186,17 @@ void expectLanesEqualScalar(std::array<PreparedJoint, 4> joints, int count, std:
         EXPECT_TRUE(sameBits(states[i].v.y, scalar[i].v.y)) << what << " body " << i;
         EXPECT_TRUE(sameBits(states[i].w, scalar[i].w)) << what << " body " << i;
     }
-    // The impulses go back to the joints (an empty lane's to none), and the axial mass to those
-    // with a motor or a limit, as their whole data went back when they were solved one by one
-    // (-1: a value the rows did not write).
+    // The impulses go back to the joints (an empty lane's to none), with what prepare wrote, which
+    // the store still holds as last step's (-1 here): each joint's data is then the bytes the scalar
+    // solves left in its prepared copy. Revolute joints with the point rows alone keep their axial
+    // mass as it was (they never stored it).
     std::vector<Joint> stored(4);
+    for (int lane = 0; lane < 4; ++lane) stored[lane].data = lastStep(joints[lane]);
+    lanes.store(block, stored);
     for (int lane = 0; lane < 4; ++lane) {
-        stored[lane].data = joints[lane].data;
-        stored[lane].data.as<RevoluteJoint>().axialMass = -1.0f;
-    }
-    unpackRevoluteImpulses(block, stored);
-    for (int lane = 0; lane < 4; ++lane) {
-        const RevoluteJoint& got = stored[lane].data.as<RevoluteJoint>();
-        const RevoluteJoint& expected = (lane < count ? scalarJoints[lane] : joints[lane]).data.as<RevoluteJoint>();
-        EXPECT_TRUE(sameBits(got.linearImpulse.x, expected.linearImpulse.x)) << what << " lane " << lane;
-        EXPECT_TRUE(sameBits(got.linearImpulse.y, expected.linearImpulse.y)) << what << " lane " << lane;
-        EXPECT_TRUE(sameBits(got.motorImpulse, expected.motorImpulse)) << what << " lane " << lane;
-        EXPECT_TRUE(sameBits(got.lowerImpulse, expected.lowerImpulse)) << what << " lane " << lane;
-        EXPECT_TRUE(sameBits(got.upperImpulse, expected.upperImpulse)) << what << " lane " << lane;
-        const bool angleRows = lane < count && (expected.enableMotor || expected.enableLimit);
-        EXPECT_TRUE(sameBits(got.axialMass, angleRows ? expected.axialMass : -1.0f)) << what << " lane " << lane;
+        JointData expected = lane < count ? scalarJoints[lane].data : lastStep(joints[lane]);
+        if (lane < count && pointRowsOnly(joints[lane])) expected.as<RevoluteJoint>().axialMass = -1.0f;
+        EXPECT_EQ(std::memcmp(&stored[lane].data, &expected, sizeof(JointData)), 0) << what << " lane " << lane;
     }
 }
 
@@ -121,44 +211,47 @@ std::vector<BodyState> randomBodies(Random& r, std::vector<float>& stepRotation)
     return states;
 }
 
-TEST(JointSolverWide, FourLanesEqualFourScalarSolves) {
+// Every combination of a joint type's `bits` flags over the four lanes (bits·lane up of the
+// round's flags): none, all, and mixed in one block; at least 25 times each, and as often again
+// with the last lane empty. Lane 2's body A is static.
+template <class Make>
+void expectEveryCombinationToEqualScalarSolves(int bits, uint32_t seed, Make make) {
     const StepContext ctx = substepContext();
-    Random r{123456789u};
-    for (int round = 0; round < 50; ++round) {
-        // Point rows alone: two joints between moving bodies, one whose body A is static (slot 0,
-        // no mass), and an empty lane (round % 2 == 0: joint -1, slots 0, no mass) or a fourth joint.
-        const int count = round % 2 == 0 ? 3 : 4;
+    Random r{seed};
+    const int combinations = 1 << (4 * bits), rounds = std::max(combinations, 25);
+    for (int round = 0; round < 2 * rounds; ++round) {
+        const int flags = round % combinations;
+        const int count = round < rounds ? 4 : 3;
         std::vector<float> stepRotation;
         const std::vector<BodyState> states = randomBodies(r, stepRotation);
         std::array<PreparedJoint, 4> joints;
-        for (int lane = 0; lane < count; ++lane) joints[lane] = randomJoint(r, 2 * lane + 1, 2 * lane + 2, false, false);
-        joints[2].indexA = 0;
-        joints[2].mass.mA = joints[2].mass.iA = 0.0f;
-        expectLanesEqualScalar(joints, count, states, stepRotation, ctx, "round " + std::to_string(round));
+        for (int lane = 0; lane < count; ++lane)
+            joints[lane] = make(r, lane == 2 ? 0 : 2 * lane + 1, 2 * lane + 2, (flags >> (bits * lane)) & ((1 << bits) - 1), ctx);
+        expectLanesEqualScalar(joints, count, states, stepRotation, ctx,
+                               "flags " + std::to_string(flags) + " joints " + std::to_string(count));
+        if (::testing::Test::HasFailure()) return;
     }
 }
 
+TEST(JointSolverWide, FourLanesEqualFourScalarSolves) {
+    // Revolute point rows alone.
+    expectEveryCombinationToEqualScalarSolves(0, 123456789u, randomRevolute);
+}
+
 TEST(JointSolverWide, MotorAndLimitLanesEqualScalarSolves) {
-    const StepContext ctx = substepContext();
-    Random r{987654321u};
-    // Every combination of motor and limit over the four lanes (bits 2·lane and 2·lane + 1 of the
-    // round): none, all, and mixed in one block; twice, the second time with the last lane empty.
-    for (int round = 0; round < 512; ++round) {
-        const int flags = round % 256;
-        const int count = round < 256 ? 4 : 3;
-        std::vector<float> stepRotation;
-        const std::vector<BodyState> states = randomBodies(r, stepRotation);
-        std::array<PreparedJoint, 4> joints;
-        for (int lane = 0; lane < count; ++lane) {
-            const bool motor = (flags >> (2 * lane)) & 1, limit = (flags >> (2 * lane + 1)) & 1;
-            joints[lane] = randomJoint(r, 2 * lane + 1, 2 * lane + 2, motor, limit);
-        }
-        joints[2].indexA = 0;
-        joints[2].mass.mA = joints[2].mass.iA = 0.0f;
-        joints[2].data.as<RevoluteJoint>().axialMass = effectiveMass(joints[2].mass, angularRow);
-        expectLanesEqualScalar(joints, count, states, stepRotation, ctx,
-                               "flags " + std::to_string(flags) + " joints " + std::to_string(count));
-    }
+    expectEveryCombinationToEqualScalarSolves(2, 987654321u, randomRevolute);
+}
+
+TEST(JointSolverWide, WeldLanesEqualScalarSolves) {
+    expectEveryCombinationToEqualScalarSolves(1, 192837465u, randomWeld);
+}
+
+TEST(JointSolverWide, PrismaticMotorAndLimitLanesEqualScalarSolves) {
+    expectEveryCombinationToEqualScalarSolves(2, 564738291u, randomPrismatic);
+}
+
+TEST(JointSolverWide, WheelMotorAndSpringLanesEqualScalarSolves) {
+    expectEveryCombinationToEqualScalarSolves(2, 918273645u, randomWheel);
 }
 
 // A lane without the row keeps its velocities and λ bit for bit, even −0, which a zero impulse

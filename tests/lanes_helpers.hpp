@@ -2,9 +2,12 @@
 // (contact_solver_wide_test, joint_solver_wide_test): random inputs and a bitwise comparison.
 #pragma once
 
+#include <array>
 #include <bit>
+#include <cstddef>
 #include <cstdint>
 
+#include "core/row_lanes.hpp"
 #include "core/step_context.hpp"
 
 namespace perpdot::lanes_test {
@@ -25,5 +28,14 @@ inline BodyState randomBody(Random& r) {
 }
 
 inline bool sameBits(float a, float b) { return std::bit_cast<uint32_t>(a) == std::bit_cast<uint32_t>(b); }
+
+// Four row sets as the lanes of one: field i of lane l at float 4i + l (row_lanes.hpp).
+template <template <class> class Rows>
+Rows<simd::Float4> lanesOf(const std::array<Rows<float>, 4>& rows) {
+    Rows<simd::Float4> wide;
+    for (std::size_t lane = 0; lane < 4; ++lane)
+        for (std::size_t field = 0; field < rowFloatsOf<Rows>(); ++field) floatsOf(wide)[field * 4 + lane] = floatsOf(rows[lane])[field];
+    return wide;
+}
 
 }  // namespace perpdot::lanes_test

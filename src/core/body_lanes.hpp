@@ -1,5 +1,5 @@
 // The state of four solver bodies as simd::Float4 lanes, for the rows that solve four
-// constraints of one graph colour at once (contacts: contact_solver_wide.hpp, revolute joints:
+// constraints of one graph colour at once (contacts: contact_solver_wide.hpp, joints:
 // joint_solver_wide.hpp). No two lanes hold the same dynamic body, so the lanes can be written
 // back in any order.
 #pragma once

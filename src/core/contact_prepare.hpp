@@ -29,7 +29,7 @@ inline RowMasses rowMasses(const StepScratch& s, int slotA, int slotB) {
 
 // The rows of constraint c (its contact and solver slots set, StepScratch::freeVelocities filled):
 // its own `rows`, gathered and derived (deriveContactRows, contact_solver_wide.hpp); or the gather
-// alone into its lane of a block of `lanes` (4 or 8), field i at lane[i · lanes] (pack_lanes.hpp),
+// alone into its lane of a block of `lanes` (4 or 8), field i at lane[i · lanes] (row_lanes.hpp),
 // the block's lanes to be derived together.
 void prepareContactRows(const World::Impl& world, const StepContext& ctx, const ContactConstraint& c, ContactRows<float>& rows);
 void gatherContactLane(const World::Impl& world, const ContactConstraint& c, float* lane, int lanes);

@@ -23,60 +23,55 @@ BodyState velocityWithoutContact(const World::Impl& w, const StepContext& ctx, i
     return s;
 }
 
-// The contact's values of constraint c's rows, field i of ContactRows<float> written to
-// rows[i · stride] (its own rows: stride 1; its lane of a block: stride = the block's lanes), as
-// deriveContactRows (contact_solver_wide.hpp) takes them: the separation in baseSeparation, last
-// step's impulses as they were, zeros for no manifold point. With deriveContactRows every field is
-// written: a reused block or slot keeps nothing old.
-template <std::size_t stride>
-void gatherRows(const World::Impl& w, const ContactConstraint& c, float* rows) {
+// The contact's values of constraint c's rows, gathered field by field into `rows` (row_lanes.hpp:
+// its own rows, lanes = 1, or its lane of a block), as deriveContactRows (contact_solver_wide.hpp)
+// takes them: the separation in baseSeparation, last step's impulses as they were, zeros for no
+// manifold point. With deriveContactRows every field is written: a reused block or slot keeps
+// nothing old.
+template <std::size_t lanes>
+void gatherRows(const World::Impl& w, const ContactConstraint& c, RowLane<lanes> rows) {
     using Rows = ContactRows<float>;
     using PointRows = ContactPointRows<float>;
-    auto set = [&](std::size_t offset, float value) { rows[offset / sizeof(float) * stride] = value; };
-    auto setVec = [&](std::size_t offset, Vec2 value) {
-        set(offset + offsetof(Vec2, x), value.x);
-        set(offset + offsetof(Vec2, y), value.y);
-    };
     const Contact& contact = w.contactCache.contacts[c.contact];
     const RowMasses m = rowMasses(w.scratch, c.indexA, c.indexB);
-    set(offsetof(Rows, invMassA), m.invMassA);
-    set(offsetof(Rows, invIA), m.invIA);
-    set(offsetof(Rows, invMassB), m.invMassB);
-    set(offsetof(Rows, invIB), m.invIB);
-    setVec(offsetof(Rows, normal), contact.normal);
-    set(offsetof(Rows, friction), contact.friction);
-    set(offsetof(Rows, restitution), contact.restitution);
-    set(offsetof(Rows, rollingResistance), contact.rollingResistance);
-    set(offsetof(Rows, tangentSpeed), contact.tangentSpeed);
-    set(offsetof(Rows, rollingImpulse), contact.rollingImpulse);
-    set(offsetof(Rows, turnsA), contact.turnsA ? 1.0f : 0.0f);
-    set(offsetof(Rows, turnsB), contact.turnsB ? 1.0f : 0.0f);
+    rows.set(offsetof(Rows, invMassA), m.invMassA);
+    rows.set(offsetof(Rows, invIA), m.invIA);
+    rows.set(offsetof(Rows, invMassB), m.invMassB);
+    rows.set(offsetof(Rows, invIB), m.invIB);
+    rows.set(offsetof(Rows, normal), contact.normal);
+    rows.set(offsetof(Rows, friction), contact.friction);
+    rows.set(offsetof(Rows, restitution), contact.restitution);
+    rows.set(offsetof(Rows, rollingResistance), contact.rollingResistance);
+    rows.set(offsetof(Rows, tangentSpeed), contact.tangentSpeed);
+    rows.set(offsetof(Rows, rollingImpulse), contact.rollingImpulse);
+    rows.set(offsetof(Rows, turnsA), contact.turnsA ? 1.0f : 0.0f);
+    rows.set(offsetof(Rows, turnsB), contact.turnsB ? 1.0f : 0.0f);
     for (int i = 0; i < 2; ++i) {
         const std::size_t point = offsetof(Rows, points) + static_cast<std::size_t>(i) * sizeof(PointRows);
         if (i >= contact.pointCount) {
-            for (std::size_t field = 0; field < sizeof(PointRows); field += sizeof(float)) set(point + field, 0.0f);
+            for (std::size_t field = 0; field < sizeof(PointRows); field += sizeof(float)) rows.set(point + field, 0.0f);
             continue;
         }
         const ContactPointState& p = contact.points[i];
-        setVec(point + offsetof(PointRows, anchorA), p.anchorA);
-        setVec(point + offsetof(PointRows, anchorB), p.anchorB);
-        set(point + offsetof(PointRows, baseSeparation), p.separation);
-        set(point + offsetof(PointRows, normalImpulse), p.normalImpulse);
-        set(point + offsetof(PointRows, tangentImpulse), p.tangentImpulse);
+        rows.set(point + offsetof(PointRows, anchorA), p.anchorA);
+        rows.set(point + offsetof(PointRows, anchorB), p.anchorB);
+        rows.set(point + offsetof(PointRows, baseSeparation), p.separation);
+        rows.set(point + offsetof(PointRows, normalImpulse), p.normalImpulse);
+        rows.set(point + offsetof(PointRows, tangentImpulse), p.tangentImpulse);
     }
 }
 
 }  // namespace
 
 void prepareContactRows(const World::Impl& w, const StepContext& ctx, const ContactConstraint& c, ContactRows<float>& rows) {
-    gatherRows<1>(w, c, rowData(rows));
+    gatherRows<1>(w, c, {floatsOf(rows)});
     const float present[2] = {c.pointCount > 0 ? 1.0f : 0.0f, c.pointCount > 1 ? 1.0f : 0.0f};
     deriveContactRows(rows, w.scratch.freeVelocities[c.indexA], w.scratch.freeVelocities[c.indexB], present, ctx);
 }
 
 void gatherContactLane(const World::Impl& w, const ContactConstraint& c, float* lane, int lanes) {
-    if (lanes == 8) gatherRows<8>(w, c, lane);
-    else gatherRows<4>(w, c, lane);
+    if (lanes == 8) gatherRows<8>(w, c, {lane});
+    else gatherRows<4>(w, c, {lane});
 }
 
 // The touching contacts with an awake body, in pool order, selected by the workers: their

@@ -174,7 +174,7 @@ void prepareContactBlocks(World::Impl& w, const StepContext& ctx) {
 // Field `field` (a float index, pointField) of constraint k's rows, in its lane or its own rows.
 float contactRowField(const World::Impl& w, int k, std::size_t field) {
     const ContactConstraint& c = w.scratch.constraints[k];
-    if (c.block < 0) return rowData(w.scratch.constraintRows[k])[field];
+    if (c.block < 0) return floatsOf(w.scratch.constraintRows[k])[field];
 #ifdef PERPDOT_AVX2
     if (w.scratch.contactLanes == 8) return w.scratch.contactBlocks8[c.block].rowData()[field * ContactBlock8::lanes + c.lane];
 #endif

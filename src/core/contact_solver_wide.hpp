@@ -14,7 +14,7 @@
 
 #include "collide/collision.hpp"
 #include "core/body_lanes.hpp"
-#include "core/pack_lanes.hpp"
+#include "core/row_lanes.hpp"
 
 namespace perpdot {
 
@@ -228,7 +228,7 @@ void restituteContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, Vec2T
 }
 
 // ContactRows<float> is nothing but floats, and ContactRows<F> of an N-lane F is the same fields as
-// N floats each, in the same order: field i of lane l is float i·N + l of the rows (pack_lanes.hpp).
+// N floats each, in the same order: field i of lane l is float i·N + l of the rows (row_lanes.hpp).
 constexpr std::size_t rowFloats = rowFloatsOf<ContactRows>();
 
 // Where a point's field of ContactRows<float> is, in floats (memberOffset: its offsetof in
@@ -253,8 +253,8 @@ struct ContactBlock {
     ContactRows<simd::Float4> rows;
     int contact[4] = {-1, -1, -1, -1};     // index in World::Impl::contacts; -1: an empty lane
     int bodyA[4] = {}, bodyB[4] = {};      // solver slots; an empty lane uses the static slot 0
-    const float* rowData() const { return reinterpret_cast<const float*>(&rows); }
-    float* rowData() { return reinterpret_cast<float*>(&rows); }
+    const float* rowData() const { return floatsOf(rows); }
+    float* rowData() { return floatsOf(rows); }
 };
 
 // Eight constraints of one colour, for CPUs with AVX2 (contact_solver_avx2.cpp): the rows are

@@ -1,7 +1,7 @@
 // The joint store and the World's joint API: creation and destruction with generational ids,
 // per-body joint lists (for collideConnected and destroyBody), and the solver stages, which
-// dispatch to the joint types' stages (joint_registry.cpp), revolute joints four at a time
-// (joint_solver_wide.hpp).
+// dispatch to the joint types' stages (joint_registry.cpp), four joints of a type at a time where
+// the type has lanes (joint_solver_wide.hpp).
 #include <cmath>
 #include <string>
 
@@ -102,8 +102,6 @@ JointId jointId(const World::Impl& w, const Joint& joint) {
 
 namespace {
 
-using simd::Float4;
-
 // The frame at step start and a working copy of the type data, then the type's own prepare.
 void prepareJoint(PreparedJoint& j, const World::Impl& w, const Joint& joint, const StepContext& ctx) {
     const Body& a = w.bodies[joint.bodyA];
@@ -122,21 +120,21 @@ void prepareJoint(PreparedJoint& j, const World::Impl& w, const Joint& joint, co
     stagesOf(j.type).prepare(j, ctx, a, b);
 }
 
-// Units [begin, end) of colour `color`: its revolute blocks, then its other joints, `wide(block,
-// pair)` on a block and `scalar(joint, pair)` on a joint. Joints of one colour share no moving
-// body, so their order within it is free and workers may run its units side by side.
+// Units [begin, end) of colour `color`: its blocks, then its other joints; `wide(stages, blocks,
+// count)` on a run of blocks of one type and `scalar(joint, pair)` on a joint. Joints of one
+// colour share no moving body, so their order within it is free and workers may run its units
+// side by side.
 template <class Wide, class Scalar>
 void forJointUnits(World::Impl& w, int color, int begin, int end, Wide wide, Scalar scalar) {
     JointScratch& d = jointScratch(w);
     std::vector<BodyState>& states = w.scratch.states;
     const int blocks = d.blockStart[color + 1] - d.blockStart[color];
-    for (int unit = begin; unit < std::min(end, blocks); ++unit) {
-        RevoluteBlock& block = d.revoluteBlocks[d.blockStart[color] + unit];
-        BodyLanes<Float4> a = gatherBodies(states, block.bodyA), b = gatherBodies(states, block.bodyB);
-        JointPairT<Float4> p{a, b, block.mass};
-        wide(block, p);
-        scatterVelocities(states, block.bodyA, a);
-        scatterVelocities(states, block.bodyB, b);
+    JointBlock* colorBlocks = d.blocks.data() + d.blockStart[color];
+    for (int unit = begin, last = std::min(end, blocks); unit < last;) {
+        const JointBlock& block = colorBlocks[unit];
+        const int run = std::min(last, block.typeEnd - d.blockStart[color]);
+        wide(*stagesOf(block.type).lanes, colorBlocks + unit, run - unit);
+        unit = run;
     }
     // The static slot 0 is shared by the colour's joints: each run writes (nothing) to its own copy.
     BodyState fixed = states[0];
@@ -151,9 +149,11 @@ void forJointUnits(World::Impl& w, int color, int begin, int end, Wide wide, Sca
 }  // namespace
 
 void jointRows(World::Impl& w, const StepContext& ctx, RowPass pass, int color, int begin, int end) {
+    std::vector<BodyState>& states = w.scratch.states;
     if (pass == RowPass::WarmStart) {
         forJointUnits(
-            w, color, begin, end, [](RevoluteBlock& block, JointPairT<Float4>& p) { warmStartRevoluteRows(block.rows, p); },
+            w, color, begin, end,
+            [&](const JointLaneStages& lanes, JointBlock* blocks, int count) { lanes.warmStart(blocks, count, states); },
             [](PreparedJoint& j, JointPair& p) { stagesOf(j.type).warmStart(j, p); });
         return;
     }
@@ -161,23 +161,30 @@ void jointRows(World::Impl& w, const StepContext& ctx, RowPass pass, int color, 
     const std::vector<float>& stepRotation = w.scratch.stepRotation;
     forJointUnits(
         w, color, begin, end,
-        [&](RevoluteBlock& block, JointPairT<Float4>& p) { solveRevoluteBlock(block, p, stepRotation, ctx, useBias); },
+        [&](const JointLaneStages& lanes, JointBlock* blocks, int count) {
+            lanes.solve(blocks, count, states, stepRotation, ctx, useBias);
+        },
         [&](PreparedJoint& j, JointPair& p) { stagesOf(j.type).solve(j, p, ctx, useBias); });
 }
 
 namespace {
 
-// Revolute joints go to the blocks, unless no colour could take them.
-bool inLanes(int color, const PreparedJoint& j) { return color != GraphColoring::overflow && solvesInLanes(j); }
+// The joints of a type with lanes go to the blocks, unless no colour could take them: -1 alone, 0
+// in lanes with the type's rows alone, 1 with optional rows (JointScratch::laneRows).
+int8_t laneRowsOf(int color, const PreparedJoint& j) {
+    const JointLaneStages* lanes = stagesOf(j.type).lanes;
+    if (color == GraphColoring::overflow || lanes == nullptr) return -1;
+    return lanes->optionalRows(j) ? 1 : 0;
+}
 
 }  // namespace
 
 // Store order, the order of the joints' and bodies' memory, throughout. The workers select the
 // awake joints and prepare them; then, one by one, the joints are coloured (graph_color.hpp:
 // joints of one colour share no moving body, so a pass never waits for the velocities the
-// previous joint wrote, and four can share SIMD lanes), the revolute trees leave the colours, and
-// each joint is sent to its colour's next lane or scalar slot (within a colour the order is
-// free); the workers pack the blocks' lanes.
+// previous joint wrote, and four of a type can share SIMD lanes), the revolute trees leave the
+// colours, and each joint is sent to the next lane of its colour and type or to its colour's next
+// scalar slot (within a colour the order is free); the workers pack the blocks' lanes.
 void prepareJoints(World::Impl& w, const StepContext& ctx) {
     constexpr int overflow = GraphColoring::overflow;
     JointStore& s = store(w);
@@ -194,6 +201,7 @@ void prepareJoints(World::Impl& w, const StepContext& ctx) {
             d.awake.resize(total);
             d.prepared.resize(total);
             d.colors.resize(total);
+            d.laneRows.resize(total);
         },
         [&](int k, int index) {
             d.awake[k] = index;
@@ -206,49 +214,65 @@ void prepareJoints(World::Impl& w, const StepContext& ctx) {
     coloring.reset(static_cast<int>(w.scratch.states.size()));
     // Joints of revolute trees take no colour: they are solved directly (joint_tree.hpp).
     findRevoluteTrees(d.trees, d.prepared, static_cast<int>(w.scratch.states.size()));
-    std::array<int, overflow + 1> pointLaneCount{}, angleLaneCount{}, scalarCount{};
+    // Lanes by colour and type: those of joints with the type's rows alone, and of joints with
+    // optional rows (a motor, a limit).
+    constexpr int types = jointTypeCount;
+    std::array<std::array<int, types>, overflow + 1> plainLanes{}, optionalLanes{};
+    std::array<int, overflow + 1> scalarCount{};
     for (int k = 0; k < count; ++k) {
         if (d.trees.inTree[k]) continue;
         const PreparedJoint& j = d.prepared[k];
         const int color = d.colors[k] = coloring.assign(j.indexA, j.indexB);
-        if (!inLanes(color, j)) ++scalarCount[color];
-        else ++(pointRowsOnly(j) ? pointLaneCount[color] : angleLaneCount[color]);
+        const int8_t rows = d.laneRows[k] = laneRowsOf(color, j);
+        if (rows < 0) ++scalarCount[color];
+        else ++(rows > 0 ? optionalLanes : plainLanes)[color][static_cast<int>(j.type)];
     }
 
+    // A colour's blocks by type; within a type the joints with its rows alone take the first
+    // lanes and those with optional rows the lanes after them, so that at most one block of the
+    // colour and type solves optional rows in lanes that have none.
+    std::array<std::array<int, types>, overflow + 1> nextPlain{}, nextOptional{}, typeEnd{};
     for (int color = 0; color <= overflow; ++color) {
-        d.blockStart[color + 1] = d.blockStart[color] + (pointLaneCount[color] + angleLaneCount[color] + 3) / 4;
+        int block = d.blockStart[color];
+        for (int type = 0; type < types; ++type) {
+            nextPlain[color][type] = 4 * block;
+            nextOptional[color][type] = 4 * block + plainLanes[color][type];
+            block += (plainLanes[color][type] + optionalLanes[color][type] + 3) / 4;
+            typeEnd[color][type] = block;
+        }
+        d.blockStart[color + 1] = block;
         d.scalarStart[color + 1] = d.scalarStart[color] + scalarCount[color];
     }
     const int blocks = d.blockStart[overflow + 1];
-    d.revoluteBlocks.resize(blocks);
+    d.blocks.resize(blocks);
     d.blockLanes.assign(blocks, {-1, -1, -1, -1});
     d.scalarOrder.resize(d.scalarStart[overflow + 1]);
     ColorStarts nextScalar = d.scalarStart;
-    // A colour's joints with the point rows alone take its first lanes and those with a motor or a
-    // limit the lanes after them, so that at most one block of the colour solves angle rows in
-    // lanes that have none.
-    std::array<int, overflow + 1> nextPointLane{}, nextAngleLane = pointLaneCount;
     for (int k = 0; k < count; ++k) {
         const int color = d.colors[k];
         if (d.trees.inTree[k]) continue;
-        if (!inLanes(color, d.prepared[k])) {
+        if (d.laneRows[k] < 0) {
             d.scalarOrder[nextScalar[color]++] = k;
             continue;
         }
-        const int lane = pointRowsOnly(d.prepared[k]) ? nextPointLane[color]++ : nextAngleLane[color]++;
-        d.blockLanes[d.blockStart[color] + lane / 4][lane % 4] = k;
+        const int type = static_cast<int>(d.prepared[k].type);
+        const int lane = d.laneRows[k] > 0 ? nextOptional[color][type]++ : nextPlain[color][type]++;
+        d.blockLanes[lane / 4][lane % 4] = k;
+        d.blocks[lane / 4].typeEnd = typeEnd[color][type];
     }
-    static const PreparedJoint emptyLane;  // static slots, no mass
     w.workers.parallelFor(blocks, 16, [&](int begin, int end, int) {
         for (int block = begin; block < end; ++block) {
             std::array<const PreparedJoint*, 4> lanes;
             std::array<int, 4> joints;
+            bool optionalRows = false;
+            const std::array<int, 4>& ks = d.blockLanes[block];
             for (int lane = 0; lane < 4; ++lane) {
-                const int k = d.blockLanes[block][lane];
-                lanes[lane] = k < 0 ? &emptyLane : &d.prepared[k];
-                joints[lane] = k < 0 ? -1 : d.awake[k];
+                const int k = ks[lane] < 0 ? ks[0] : ks[lane];  // an empty lane: the first joint's rows
+                lanes[lane] = &d.prepared[k];
+                joints[lane] = ks[lane] < 0 ? -1 : d.awake[k];
+                optionalRows = optionalRows || d.laneRows[k] > 0;
             }
-            d.revoluteBlocks[block] = packRevoluteBlock(lanes, joints);
+            packJointBlock(d.blocks[block], lanes, joints, optionalRows);
         }
     });
 }
@@ -282,8 +306,8 @@ void projectJoints(World::Impl& w) {
 void storeJointImpulses(World::Impl& w, const StepContext&) {
     JointStore& s = store(w);
     JointScratch& d = jointScratch(w);
-    w.workers.parallelFor(static_cast<int>(d.revoluteBlocks.size()), 64, [&](int begin, int end, int) {
-        for (int block = begin; block < end; ++block) unpackRevoluteImpulses(d.revoluteBlocks[block], s.joints.slots());
+    w.workers.parallelFor(static_cast<int>(d.blocks.size()), 64, [&](int begin, int end, int) {
+        for (int block = begin; block < end; ++block) stagesOf(d.blocks[block].type).lanes->store(d.blocks[block], s.joints.slots());
     });
     for (int position : d.scalarOrder) s.joints[d.awake[position]].data = d.prepared[position].data;
     for (int position : d.trees.joints) s.joints[d.awake[position]].data = d.prepared[position].data;

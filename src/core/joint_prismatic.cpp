@@ -1,10 +1,12 @@
 // Prismatic joint: B slides along an axis fixed in A. A block of two rows holds the anchor on
 // the line (row along perp(axis)) and the relative angle; along the axis there is an optional
-// motor row and two one-sided limit rows. The axis rows use A's arm to B's anchor, rA + d.
+// motor row and two one-sided limit rows. The axis rows use A's arm to B's anchor, rA + d. The rows
+// are written once over a lane type F, for one joint and for blocks of four (joint_solver_wide.hpp).
 #include <cmath>
+#include <cstddef>
 
 #include "core/joint_prismatic.hpp"
-#include "core/joint_rows.hpp"
+#include "core/joint_solver_wide.hpp"
 #include "core/joint_type.hpp"
 #include "core/world_impl.hpp"
 
@@ -12,34 +14,81 @@ namespace perpdot {
 
 namespace {
 
-struct PrismaticJoint {
-    Vec2 localAxisA;
-    bool enableLimit = false, enableMotor = false;
-    float lower = 0, upper = 0;
-    float motorSpeed = 0, maxMotorForce = 0;
-    Vec2 axisA;           // world axis at step start
-    float axialMass = 0;  // of the row along the axis
-    Vec2 impulse;         // (perpendicular, angular) rows
-    float motorImpulse = 0, lowerImpulse = 0, upperImpulse = 0;
+// The prismatic joint's rows: along the axis an optional motor and two limits (gathered and solved
+// where optionalRows), then the perpendicular and angle rows as one 2x2 block.
+struct PrismaticRowSet {
+    template <class F>
+    struct Rows {
+        Vec2T<F> anchorA, anchorB;  // rA, rB at step start
+        Vec2T<F> deltaCenter;       // cB − cA at step start
+        Vec2T<F> axisA;             // the axis in the world at step start
+        Vec2T<F> impulse;           // λ of the (perpendicular, angle) rows
+        F motorImpulse{}, lowerImpulse{}, upperImpulse{};  // λ of the axis rows
+        F deltaAngle{};             // θB − θA − θref at step start
+        F axialMass{};              // of the row along the axis
+        MotorLimitsT<F> axial;      // motor force, limits: gathered where optionalRows
+    };
+
+    static bool optionalRows(const PreparedJoint& j) {
+        const PrismaticJoint& s = j.data.as<PrismaticJoint>();
+        return s.enableMotor || s.enableLimit;
+    }
+    static bool usesRotation(bool) { return true; }
+
+    template <std::size_t lanes>
+    static void gather(const PreparedJoint& j, RowLane<lanes> out, bool optionalRows) {
+        using R = Rows<float>;
+        const PrismaticJoint& s = j.data.as<PrismaticJoint>();
+        gatherFrame<R>(j, out);
+        out.set(offsetof(R, axisA), s.axisA);
+        out.set(offsetof(R, impulse), s.impulse);
+        out.set(offsetof(R, motorImpulse), s.motorImpulse);
+        out.set(offsetof(R, lowerImpulse), s.lowerImpulse);
+        out.set(offsetof(R, upperImpulse), s.upperImpulse);
+        out.set(offsetof(R, deltaAngle), j.deltaAngle);
+        out.set(offsetof(R, axialMass), s.axialMass);
+        if (!optionalRows) return;
+        gatherMotorLimits(out, offsetof(R, axial),
+                          {s.motorSpeed, s.maxMotorForce, s.lower, s.upper, s.enableMotor ? 1.0f : 0.0f, s.enableLimit ? 1.0f : 0.0f});
+    }
+
+    // Re-apply last step's impulses: motor + lower − upper along the axis, then the block's.
+    template <class F>
+    static void warmStart(const Rows<F>& r, JointPairT<F>& p) {
+        const AxisRowsT<F> rows = axisRows(p, r.anchorA, r.anchorB, r.deltaCenter, r.axisA);
+        applyRow(p, rows.axial, r.motorImpulse + r.lowerImpulse - r.upperImpulse);
+        applyRow(p, rows.perpendicular, r.impulse.x);
+        applyRow(p, angularRowOf<F>(), r.impulse.y);
+    }
+
+    // One pass: the motor and the limits on the translation along the axis; then the
+    // perpendicular and angle rows (θ = (θB − θA − θref)₀ + p.rotation) as one block.
+    template <class F>
+    static void solve(Rows<F>& r, JointPairT<F>& p, const StepContext& ctx, bool useBias, bool optionalRows) {
+        const AxisRowsT<F> rows = axisRows(p, r.anchorA, r.anchorB, r.deltaCenter, r.axisA);
+        if (optionalRows)
+            solveMotorAndLimits(p, rows.axial, r.axialMass, rows.translation, r.axial, ctx, useBias, r.motorImpulse, r.lowerImpulse,
+                                r.upperImpulse);
+        solveRowPair(p, rows.perpendicular, angularRowOf<F>(), Vec2T<F>{rows.offset, r.deltaAngle + p.rotation},
+                     rigidSoftness(ctx, useBias), r.impulse);
+    }
+
+    // The impulses, and what preparePrismatic wrote (snapshots carry it).
+    template <std::size_t lanes>
+    static void store(RowLane<lanes, const float> rows, JointData& data, bool optionalRows) {
+        using R = Rows<float>;
+        PrismaticJoint& s = data.as<PrismaticJoint>();
+        s.axisA = rows.vec(offsetof(R, axisA));
+        s.axialMass = rows[offsetof(R, axialMass)];
+        s.impulse = rows.vec(offsetof(R, impulse));
+        if (!optionalRows) return;  // without motor or limit in a lane, their λ stay as they were
+        s.motorImpulse = rows[offsetof(R, motorImpulse)];
+        s.lowerImpulse = rows[offsetof(R, lowerImpulse)];
+        s.upperImpulse = rows[offsetof(R, upperImpulse)];
+    }
 };
 
-static_assert(reviewedLayout<PrismaticJoint, 60>);
-constexpr auto fields(const PrismaticJoint*) {
-    using J = PrismaticJoint;
-    return std::tuple{field("localAxisA", &J::localAxisA).anyBits(),
-                      field("enableLimit", &J::enableLimit),
-                      field("enableMotor", &J::enableMotor),
-                      field("lower", &J::lower).anyBits(),
-                      field("upper", &J::upper).anyBits(),
-                      field("motorSpeed", &J::motorSpeed).anyBits(),
-                      field("maxMotorForce", &J::maxMotorForce).anyBits(),
-                      field("axisA", &J::axisA).anyBits(),
-                      field("axialMass", &J::axialMass).anyBits(),
-                      field("impulse", &J::impulse).anyBits(),
-                      field("motorImpulse", &J::motorImpulse).anyBits(),
-                      field("lowerImpulse", &J::lowerImpulse).anyBits(),
-                      field("upperImpulse", &J::upperImpulse).anyBits()};
-}
+constexpr JointLaneStages prismaticLanes = jointLaneStages<PrismaticRowSet>();
 
 }  // namespace
 
@@ -69,48 +118,11 @@ void preparePrismatic(PreparedJoint& j, const StepContext& ctx, const Body& a, c
     const Rot qA = a.xf.q;
     PrismaticJoint& s = j.data.as<PrismaticJoint>();
     s.axisA = rotate(qA, s.localAxisA);
-    const Vec2 d = j.deltaCenter + j.anchorB - j.anchorA;
-    s.axialMass = effectiveMass(j.mass, linearRow(j.anchorA + d, j.anchorB, s.axisA));
+    s.axialMass = axialMass(j, s.axisA);
     if (!ctx.enableWarmStarting) {
         s.impulse = {};
         s.motorImpulse = s.lowerImpulse = s.upperImpulse = 0.0f;
     }
-}
-
-namespace {
-
-struct SliderRows {
-    Row axial, perpendicular;
-    float translation, offset;  // along the axis, and off it
-};
-
-SliderRows sliderRows(const PreparedJoint& j, const JointPair& p) {
-    const JointFrame f = currentFrame(j, p);
-    const Vec2 axis = rotate(p.a.dq, j.data.as<PrismaticJoint>().axisA);
-    return {linearRow(f.rA + f.d, f.rB, axis), linearRow(f.rA + f.d, f.rB, perp(axis)), dot(axis, f.d),
-            dot(perp(axis), f.d)};
-}
-
-}  // namespace
-
-void warmStartPrismatic(PreparedJoint& j, JointPair& p) {
-    const PrismaticJoint& s = j.data.as<PrismaticJoint>();
-    const SliderRows rows = sliderRows(j, p);
-    applyRow(p, rows.axial, s.motorImpulse + s.lowerImpulse - s.upperImpulse);
-    applyRow(p, rows.perpendicular, s.impulse.x);
-    applyRow(p, angularRow, s.impulse.y);
-}
-
-void solvePrismatic(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool useBias) {
-    PrismaticJoint& s = j.data.as<PrismaticJoint>();
-    const SliderRows rows = sliderRows(j, p);
-    if (s.enableMotor) solveMotorRow(p, rows.axial, s.axialMass, s.motorSpeed, s.maxMotorForce * ctx.hs, s.motorImpulse);
-    if (s.enableLimit) {
-        solveLimitRow(p, rows.axial, s.axialMass, rows.translation - s.lower, ctx, useBias, s.lowerImpulse);
-        solveLimitRow(p, negated(rows.axial), s.axialMass, s.upper - rows.translation, ctx, useBias, s.upperImpulse);
-    }
-    solveRowPair(p, rows.perpendicular, angularRow, {rows.offset, currentAngle(j, p)}, rigidSoftness(ctx, useBias),
-                 s.impulse);
 }
 
 JointReaction reactionPrismatic(const Joint& j) {
@@ -119,6 +131,7 @@ JointReaction reactionPrismatic(const Joint& j) {
 }
 
 template JointId World::createJoint(const PrismaticJointDef&);
-extern const JointKind prismaticKind = jointKind<PrismaticJoint, &PrismaticJoint::motorSpeed>({preparePrismatic, warmStartPrismatic, solvePrismatic, reactionPrismatic});
+extern const JointKind prismaticKind = jointKind<PrismaticJoint, &PrismaticJoint::motorSpeed>(
+    {preparePrismatic, warmStartJoint<PrismaticRowSet>, solveJoint<PrismaticRowSet>, reactionPrismatic, &prismaticLanes});
 
 }  // namespace perpdot

@@ -11,10 +11,10 @@ extern const JointKind revoluteKind, prismaticKind, distanceKind, weldKind, whee
 
 namespace {
 
-// In JointType's order. The assert names the last enumerator: a new type moves it there.
+// In JointType's order; jointTypeCount (joint_store.hpp) names the last enumerator.
 constexpr std::array registry{&revoluteKind, &prismaticKind, &distanceKind, &weldKind, &wheelKind,
                               &motorKind,    &mouseKind,     &gearKind,     &pulleyKind, &filterKind};
-static_assert(registry.size() == static_cast<size_t>(JointType::Filter) + 1, "a JointType without a kind");
+static_assert(registry.size() == jointTypeCount, "a JointType without a kind");
 
 }  // namespace
 

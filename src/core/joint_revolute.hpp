@@ -1,10 +1,11 @@
-// The revolute joint's data, shared by its file (joint_revolute.cpp) with the 4-wide rows
-// (joint_solver_wide.hpp) and the revolute trees (joint_tree.cpp), and its field list.
+// The revolute joint's data, shared by its file (joint_revolute.cpp) with the revolute trees
+// (joint_tree.cpp) and the tests, and its field list.
 #pragma once
 
 #include <tuple>
 
 #include "core/field_list.hpp"
+#include "core/joint_store.hpp"
 #include "perpdot/math.hpp"
 
 namespace perpdot {
@@ -32,6 +33,14 @@ constexpr auto fields(const RevoluteJoint*) {
                       field("motorImpulse", &J::motorImpulse).anyBits(),
                       field("lowerImpulse", &J::lowerImpulse).anyBits(),
                       field("upperImpulse", &J::upperImpulse).anyBits()};
+}
+
+// A revolute joint without motor or limit: its point rows alone, what revolute trees are made of
+// (joint_tree.hpp).
+inline bool pointRowsOnly(const PreparedJoint& j) {
+    if (j.type != JointType::Revolute) return false;
+    const RevoluteJoint& r = j.data.as<RevoluteJoint>();
+    return !r.enableMotor && !r.enableLimit;
 }
 
 }  // namespace perpdot

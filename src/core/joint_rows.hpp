@@ -6,6 +6,8 @@
 // and every impulse is solved soft-step style: Δλ = −m_eff·massScale·(Ċ + biasRate·C) − impulseScale·λ.
 #pragma once
 
+#include <type_traits>
+
 #include "core/joint_store.hpp"
 
 namespace perpdot {
@@ -20,7 +22,10 @@ struct RowT {
 };
 using Row = RowT<float>;
 
-inline Row linearRow(Vec2 rA, Vec2 rB, Vec2 n) { return {n, perpDot(rA, n), perpDot(rB, n)}; }
+template <class F = float>
+inline RowT<F> linearRow(Vec2T<F> rA, Vec2T<F> rB, Vec2T<F> n) {
+    return {n, perpDot(rA, n), perpDot(rB, n)};
+}
 // The angular row ωB − ωA: n = 0, sA = sB = 1.
 template <class F>
 constexpr RowT<F> angularRowOf() {
@@ -32,9 +37,10 @@ inline RowT<F> negated(const RowT<F>& r) {
     return {-r.n, -r.sA, -r.sB};
 }
 
-inline float effectiveMass(const JointMass& m, Row r) {
-    const float k = (m.mA + m.mB) * dot(r.n, r.n) + m.iA * r.sA * r.sA + m.iB * r.sB * r.sB;
-    return k > 0.0f ? 1.0f / k : 0.0f;
+template <class F>
+inline F effectiveMass(const JointMassT<F>& m, const RowT<F>& r) {
+    const F k = (m.mA + m.mB) * dot(r.n, r.n) + m.iA * r.sA * r.sA + m.iB * r.sB * r.sB;
+    return simd::select(k > F(0.0f), F(1.0f) / k, F(0.0f));
 }
 
 template <class F>
@@ -55,9 +61,33 @@ inline void applyRow(JointPairT<F>& p, const RowT<F>& r, F impulse) {
 // in the relax pass.
 inline Softness rigidSoftness(const StepContext& ctx, bool useBias) { return useBias ? ctx.jointSoftness : Softness{}; }
 
+// A Softness per lane (for F = float, Softness itself): a spring's where a lane's joint has one,
+// the rigid row's where not.
+template <class F>
+struct SoftnessLanes {
+    F biasRate{}, massScale{}, impulseScale{};
+};
+template <class F>
+using SoftnessT = std::conditional_t<std::is_same_v<F, float>, Softness, SoftnessLanes<F>>;
+
+// The same Softness in every lane.
+template <class F>
+inline SoftnessT<F> everyLane(const Softness& s) {
+    return {F(s.biasRate), F(s.massScale), F(s.impulseScale)};
+}
+
+// `spring` where `springy`, else `rigid`.
+template <class F>
+inline SoftnessT<F> selectSoftness(simd::MaskOf<F> springy, const SoftnessT<F>& spring, const Softness& rigid) {
+    using simd::select;
+    return {select(springy, spring.biasRate, F(rigid.biasRate)), select(springy, spring.massScale, F(rigid.massScale)),
+            select(springy, spring.impulseScale, F(rigid.impulseScale))};
+}
+
 // An equality row C = 0 (rigid or spring, by `soft`).
-inline void solveRow(JointPair& p, Row r, float mass, float C, const Softness& soft, float& lambda) {
-    const float impulse = -mass * soft.massScale * (rowVelocity(p, r) + soft.biasRate * C) - soft.impulseScale * lambda;
+template <class F>
+inline void solveRow(JointPairT<F>& p, const RowT<F>& r, F mass, F C, const SoftnessT<F>& soft, F& lambda) {
+    const F impulse = -mass * soft.massScale * (rowVelocity(p, r) + soft.biasRate * C) - soft.impulseScale * lambda;
     lambda += impulse;
     applyRow(p, r, impulse);
 }
@@ -115,6 +145,31 @@ inline void solveWhere(simd::Mask4 enabled, JointPairT<simd::Float4>& p, Solve s
     p.b.w = select(enabled, p.b.w, b.w);
     int i = 0;
     ((lambdas = select(enabled, lambdas, before[i++])), ...);
+}
+
+// A motor and two limits on one coordinate of a joint (the revolute joint's angle, the prismatic
+// joint's translation), as its rows carry them.
+template <class F>
+struct MotorLimitsT {
+    F motorSpeed{}, maxMotor{};  // maxMotor: torque or force
+    F lower{}, upper{};
+    F motor{}, limit{};  // 1 where enabled, else 0
+};
+
+// One pass of them along `row` (effective mass `mass`), each where a joint has it: the motor drives
+// Ċ to motorSpeed (|λ| ≤ maxMotor·hs), the limits keep position − lower ≥ 0 and upper − position ≥ 0.
+template <class F>
+inline void solveMotorAndLimits(JointPairT<F>& p, const RowT<F>& row, F mass, F position, const MotorLimitsT<F>& c,
+                                const StepContext& ctx, bool useBias, F& motorImpulse, F& lowerImpulse, F& upperImpulse) {
+    solveWhere(
+        c.motor != F(0.0f), p, [&] { solveMotorRow(p, row, mass, c.motorSpeed, c.maxMotor * F(ctx.hs), motorImpulse); }, motorImpulse);
+    solveWhere(
+        c.limit != F(0.0f), p,
+        [&] {
+            solveLimitRow(p, row, mass, position - c.lower, ctx, useBias, lowerImpulse);
+            solveLimitRow(p, negated(row), mass, c.upper - position, ctx, useBias, upperImpulse);
+        },
+        lowerImpulse, upperImpulse);
 }
 
 // --- Point rows: B's anchor held on A's, both directions at once. ---
@@ -184,18 +239,20 @@ inline void solvePointRows(JointPair& p, Vec2 rA, Vec2 rB, Vec2 C, const Softnes
 // Two coupled rows solved as a block (prismatic: perpendicular + angle). K_ij is Hecker's
 // denominator generalised: (1/mA + 1/mB) n_i·n_j + sA_i sA_j/IA + sB_i sB_j/IB. A row with no
 // mass (an angle between two bodies that cannot turn) gets K = 1 so the other still solves.
-inline void solveRowPair(JointPair& p, Row r1, Row r2, Vec2 C, const Softness& soft, Vec2& lambda) {
-    const JointMass& m = p.m;
-    const float ms = m.mA + m.mB;
-    float k11 = ms * dot(r1.n, r1.n) + m.iA * r1.sA * r1.sA + m.iB * r1.sB * r1.sB;
-    float k22 = ms * dot(r2.n, r2.n) + m.iA * r2.sA * r2.sA + m.iB * r2.sB * r2.sB;
-    const float k12 = ms * dot(r1.n, r2.n) + m.iA * r1.sA * r2.sA + m.iB * r1.sB * r2.sB;
-    if (k11 == 0.0f) k11 = 1.0f;
-    if (k22 == 0.0f) k22 = 1.0f;
-    const Vec2 v{rowVelocity(p, r1), rowVelocity(p, r2)};
-    const Vec2 b = solve22<float>({{k11, k12}, {k12, k22}}, v + soft.biasRate * C);
-    const Vec2 impulse = -soft.massScale * b - soft.impulseScale * lambda;
-    lambda += impulse;
+template <class F>
+inline void solveRowPair(JointPairT<F>& p, const RowT<F>& r1, const RowT<F>& r2, Vec2T<F> C, const Softness& soft, Vec2T<F>& lambda) {
+    using simd::select;
+    const JointMassT<F>& m = p.m;
+    const F ms = m.mA + m.mB;
+    F k11 = ms * dot(r1.n, r1.n) + m.iA * r1.sA * r1.sA + m.iB * r1.sB * r1.sB;
+    F k22 = ms * dot(r2.n, r2.n) + m.iA * r2.sA * r2.sA + m.iB * r2.sB * r2.sB;
+    const F k12 = ms * dot(r1.n, r2.n) + m.iA * r1.sA * r2.sA + m.iB * r1.sB * r2.sB;
+    k11 = select(k11 != F(0.0f), k11, F(1.0f));
+    k22 = select(k22 != F(0.0f), k22, F(1.0f));
+    const Vec2T<F> v{rowVelocity(p, r1), rowVelocity(p, r2)};
+    const Vec2T<F> b = solve22<F>({{k11, k12}, {k12, k22}}, v + F(soft.biasRate) * C);
+    const Vec2T<F> impulse = -F(soft.massScale) * b - F(soft.impulseScale) * lambda;
+    lambda = lambda + impulse;
     applyRow(p, r1, impulse.x);
     applyRow(p, r2, impulse.y);
 }
@@ -217,6 +274,27 @@ inline JointFrameT<F> currentFrame(const JointPairT<F>& p, Vec2T<F> anchorA, Vec
 
 inline JointFrame currentFrame(const PreparedJoint& j, const JointPair& p) {
     return currentFrame(p, j.anchorA, j.anchorB, j.deltaCenter);
+}
+
+// The rows along an axis fixed in A (prismatic and wheel joints), turned with A since the step
+// began: along it and across it, both with A's arm to B's anchor, rA + d; and d along and across it.
+template <class F>
+struct AxisRowsT {
+    RowT<F> axial, perpendicular;
+    F translation{}, offset{};
+};
+
+template <class F>
+inline AxisRowsT<F> axisRows(const JointPairT<F>& p, Vec2T<F> anchorA, Vec2T<F> anchorB, Vec2T<F> deltaCenter, Vec2T<F> axisA) {
+    const JointFrameT<F> f = currentFrame(p, anchorA, anchorB, deltaCenter);
+    const Vec2T<F> axis = rotate(p.a.dq, axisA);
+    return {linearRow<F>(f.rA + f.d, f.rB, axis), linearRow<F>(f.rA + f.d, f.rB, perp(axis)), dot(axis, f.d), dot(perp(axis), f.d)};
+}
+
+// The effective mass along a world axis at step start, with A's arm to B's anchor, rA + d.
+inline float axialMass(const PreparedJoint& j, Vec2 axis) {
+    const Vec2 d = j.deltaCenter + j.anchorB - j.anchorA;
+    return effectiveMass(j.mass, linearRow(j.anchorA + d, j.anchorB, axis));
 }
 
 // The joint angle now: θB − θA − referenceAngle.

@@ -1,76 +1,30 @@
-// Packing revolute joints into the lanes of a RevoluteBlock, and their impulses back out.
+// Four joints of one type into the lanes of a JointBlock.
 #include "core/joint_solver_wide.hpp"
 
-#include <algorithm>
-
-#include "core/pack_lanes.hpp"
+#include <cstddef>
 
 namespace perpdot {
 
-// Rows and masses packed by the 4x4 transposes of pack_lanes.hpp; the angle rows only
-// for a block that has a motor or a limit.
-RevoluteBlock packRevoluteBlock(const std::array<const PreparedJoint*, 4>& lanes, const std::array<int, 4>& joints) {
-    RevoluteBlock block;
-    RevoluteRows<float> rows[4];
-    const RevoluteRows<float>* rowLanes[4];
-    const JointMassT<float>* massLanes[4];
-    for (int i = 0; i < 4; ++i) {
-        const PreparedJoint& j = *lanes[i];
-        block.joint[i] = joints[i];
-        block.bodyA[i] = j.indexA;
-        block.bodyB[i] = j.indexB;
-        block.angleRows = block.angleRows || !pointRowsOnly(j);
-        rows[i] = revoluteRows(j);
-        rowLanes[i] = &rows[i];
-        massLanes[i] = &j.mass;
-    }
-    packLanes(rowLanes, block.rows);
-    packLanes(massLanes, block.mass);
-    if (block.angleRows) {
-        RevoluteAngleRows<float> angle[4];
-        const RevoluteAngleRows<float>* angleLanes[4];
-        float motor = 0.0f, limit = 0.0f;  // 1 if a lane has one
-        for (int i = 0; i < 4; ++i) {
-            angle[i] = revoluteAngleRows(*lanes[i]);
-            angleLanes[i] = &angle[i];
-            motor = std::max(motor, angle[i].motor);
-            limit = std::max(limit, angle[i].limit);
-        }
-        // An empty lane moves nothing whichever rows it solves: it takes those of the block, so
-        // that a block of joints alike solves all its lanes without taking any back (solveWhere).
-        for (int i = 0; i < 4; ++i) {
-            if (joints[i] >= 0) continue;
-            angle[i].motor = motor;
-            angle[i].limit = limit;
-        }
-        packLanes(angleLanes, block.angle);
-    }
-    return block;
-}
-
-// The point rows' λ back to each lane's joint; where the block has angle rows, theirs too, and for
-// a joint with a motor or a limit the axial mass prepareRevolute wrote, which snapshots carry and
-// such a joint has always kept (one with the point rows alone never has).
-void unpackRevoluteImpulses(const RevoluteBlock& block, std::span<Joint> joints) {
-    float x[4], y[4];
-    block.rows.linearImpulse.x.store(x);
-    block.rows.linearImpulse.y.store(y);
-    for (int lane = 0; lane < 4; ++lane)
-        if (block.joint[lane] >= 0) joints[block.joint[lane]].data.as<RevoluteJoint>().linearImpulse = {x[lane], y[lane]};
-    if (!block.angleRows) return;  // the point rows alone leave the angle rows' λ as they were
-    float motor[4], lower[4], upper[4], axialMass[4];
-    block.rows.motorImpulse.store(motor);
-    block.rows.lowerImpulse.store(lower);
-    block.rows.upperImpulse.store(upper);
-    block.angle.axialMass.store(axialMass);
+// The slots and masses lane by lane (field by field, row_lanes.hpp), then the rows by the type's
+// gather (its row set's).
+void packJointBlock(JointBlock& block, const std::array<const PreparedJoint*, 4>& lanes, const std::array<int, 4>& joints,
+                    bool optionalRows) {
+    block.type = lanes[0]->type;
+    block.optionalRows = optionalRows;
     for (int lane = 0; lane < 4; ++lane) {
-        if (block.joint[lane] < 0) continue;
-        RevoluteJoint& r = joints[block.joint[lane]].data.as<RevoluteJoint>();
-        r.motorImpulse = motor[lane];
-        r.lowerImpulse = lower[lane];
-        r.upperImpulse = upper[lane];
-        if (r.enableMotor || r.enableLimit) r.axialMass = axialMass[lane];
+        const bool used = joints[lane] >= 0;
+        const PreparedJoint& j = *lanes[lane];
+        block.joint[lane] = joints[lane];
+        block.bodyA[lane] = used ? j.indexA : 0;
+        block.bodyB[lane] = used ? j.indexB : 0;
+        const JointMass m = used ? j.mass : JointMass{};
+        const RowLane<4> mass{floatsOf(block.mass) + lane};
+        mass.set(offsetof(JointMass, mA), m.mA);
+        mass.set(offsetof(JointMass, iA), m.iA);
+        mass.set(offsetof(JointMass, mB), m.mB);
+        mass.set(offsetof(JointMass, iB), m.iB);
     }
+    stagesOf(block.type).lanes->gather(block, lanes);
 }
 
 }  // namespace perpdot

@@ -1,121 +1,77 @@
-// The revolute joint's rows, written once over a lane type F: float solves one joint
-// (joint_revolute.cpp: the overflow colour and revolute trees that do not factor), simd::Float4
-// solves four revolute joints of one graph colour at once (a RevoluteBlock), with or without motor
-// and limit. The point rows hold B's anchor on A's with the 2x2 K of joint_rows.hpp; the motor and
-// the two limits are rows on the angle θB − θA − θref with effective mass 1/(1/IA + 1/IB). A lane
-// whose joint has no motor (no limit) computes those rows and then takes its velocities and
-// impulses back (solveWhere), so it ends as the scalar joint that skips them. The lanes run the
-// same operations in the same order as the scalar joint (no FMA, exact division), so they agree
-// bit for bit.
+// Joints solved four at a time in SIMD lanes. A joint type that goes wide writes its rows once over
+// a lane type F, as a row set (below): float solves one joint (the overflow colour; revolute trees
+// that do not factor), simd::Float4 solves a JointBlock of four joints of that type from one graph
+// colour. A joint's values are gathered straight into its lane field by field (row_lanes.hpp, as
+// the contacts' are), the same gather at one lane fills a scalar joint's own rows, and the impulses
+// are read back from the lanes into the joints. A row some joints of the type lack (a motor, a
+// limit) is computed in every lane, and a lane whose joint lacks it takes its velocities and
+// impulses back (solveWhere, joint_rows.hpp), so it ends as the scalar joint that skips it. The
+// lanes run the same operations in the same order as the scalar joint (no FMA, exact division), so
+// they agree bit for bit.
+//
+// A row set RowSet (joint_revolute.cpp, joint_weld.cpp, joint_prismatic.cpp, joint_wheel.cpp) has
+//   template <class F> struct Rows;                  its fields, floats only (row_lanes.hpp)
+//   static bool optionalRows(const PreparedJoint&);   whether the joint has rows others of its type lack
+//   static bool usesRotation(bool optionalRows);      whether solve reads p.rotation
+//   template <std::size_t lanes> static void gather(const PreparedJoint&, RowLane<lanes>, bool optionalRows);
+//   template <class F> static void warmStart(const Rows<F>&, JointPairT<F>&);
+//   template <class F> static void solve(Rows<F>&, JointPairT<F>&, const StepContext&, bool useBias, bool optionalRows);
+//   template <std::size_t lanes> static void store(RowLane<lanes, const float>, JointData&, bool optionalRows);
+// store writes the impulses back, and what the type's prepare wrote where the joint's snapshots
+// have carried it (the bytes a scalar solve leaves). optionalRows says, for a block, whether any
+// lane has such rows (gather and solve may leave them out where none has); it is true for one joint.
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <span>
 #include <vector>
 
 #include "core/body_lanes.hpp"
-#include "core/joint_revolute.hpp"
 #include "core/joint_rows.hpp"
+#include "core/row_lanes.hpp"
 
 namespace perpdot {
 
-// What the rows of a revolute joint carry through a step and re-apply in the warm start.
-template <class F>
-struct RevoluteRows {
-    Vec2T<F> anchorA, anchorB;  // rA, rB at step start
-    Vec2T<F> deltaCenter;       // cB − cA at step start
-    Vec2T<F> linearImpulse;     // λ of the point rows
-    F motorImpulse{}, lowerImpulse{}, upperImpulse{};  // λ of the angle rows
-};
-
-// The angle rows' constants: the motor's, the limits', and whether the joint has them.
-template <class F>
-struct RevoluteAngleRows {
-    F deltaAngle{};  // θB − θA − θref at step start
-    F axialMass{};   // 1 / (1/IA + 1/IB)
-    F motorSpeed{}, maxMotorTorque{};
-    F lowerAngle{}, upperAngle{};
-    F motor{}, limit{};  // 1 where enabled, else 0
-};
-
-// The rows of one prepared revolute joint, and their impulses back into its data.
-inline RevoluteRows<float> revoluteRows(const PreparedJoint& j) {
-    const RevoluteJoint& r = j.data.as<RevoluteJoint>();
-    return {j.anchorA, j.anchorB, j.deltaCenter, r.linearImpulse, r.motorImpulse, r.lowerImpulse, r.upperImpulse};
-}
-inline RevoluteAngleRows<float> revoluteAngleRows(const PreparedJoint& j) {
-    const RevoluteJoint& r = j.data.as<RevoluteJoint>();
-    return {j.deltaAngle, r.axialMass, r.motorSpeed, r.maxMotorTorque, r.lowerAngle, r.upperAngle,
-            r.enableMotor ? 1.0f : 0.0f, r.enableLimit ? 1.0f : 0.0f};
-}
-inline void storeImpulses(const RevoluteRows<float>& rows, RevoluteJoint& r) {
-    r.linearImpulse = rows.linearImpulse;
-    r.motorImpulse = rows.motorImpulse;
-    r.lowerImpulse = rows.lowerImpulse;
-    r.upperImpulse = rows.upperImpulse;
-}
-
-// Re-apply last step's impulses: λ at the anchors, then motor + lower − upper on ωB − ωA.
-template <class F>
-void warmStartRevoluteRows(const RevoluteRows<F>& r, JointPairT<F>& p) {
-    const JointFrameT<F> f = currentFrame(p, r.anchorA, r.anchorB, r.deltaCenter);
-    applyPoint(p, f.rA, f.rB, r.linearImpulse);
-    applyRow(p, angularRowOf<F>(), r.motorImpulse + r.lowerImpulse - r.upperImpulse);
-}
-
-// One pass of the point rows on C = pB − pA, with the substep pass's softness.
-template <class F>
-void solveRevolutePoint(RevoluteRows<F>& r, JointPairT<F>& p, const Softness& soft) {
-    const JointFrameT<F> f = currentFrame(p, r.anchorA, r.anchorB, r.deltaCenter);
-    solvePointRows(p, f.rA, f.rB, f.d, soft, r.linearImpulse);
-}
-
-// One pass of all the rows: the motor drives ωB − ωA to motorSpeed (|λ| ≤ maxMotorTorque·hs), the
-// limits keep θ − lower ≥ 0 and upper − θ ≥ 0, θ = (θB − θA − θref)₀ + p.rotation; then the point,
-// solved last so that the stiffest part wins.
-template <class F>
-void solveRevoluteRows(RevoluteRows<F>& r, const RevoluteAngleRows<F>& a, JointPairT<F>& p, const StepContext& ctx, bool useBias) {
-    const RowT<F> angular = angularRowOf<F>();
-    solveWhere(
-        a.motor != F(0.0f), p,
-        [&] { solveMotorRow(p, angular, a.axialMass, a.motorSpeed, a.maxMotorTorque * F(ctx.hs), r.motorImpulse); },
-        r.motorImpulse);
-    solveWhere(
-        a.limit != F(0.0f), p,
-        [&] {
-            const F angle = a.deltaAngle + p.rotation;
-            solveLimitRow(p, angular, a.axialMass, angle - a.lowerAngle, ctx, useBias, r.lowerImpulse);
-            solveLimitRow(p, negated(angular), a.axialMass, a.upperAngle - angle, ctx, useBias, r.upperImpulse);
-        },
-        r.lowerImpulse, r.upperImpulse);
-    solveRevolutePoint(r, p, rigidSoftness(ctx, useBias));
-}
-
-// Revolute joints solve in lanes; those without motor or limit (the point rows alone) are also
-// what revolute trees are made of (joint_tree.hpp) and fill their colour's first blocks.
-inline bool solvesInLanes(const PreparedJoint& j) { return j.type == JointType::Revolute; }
-inline bool pointRowsOnly(const PreparedJoint& j) {
-    if (j.type != JointType::Revolute) return false;
-    const RevoluteJoint& r = j.data.as<RevoluteJoint>();
-    return !r.enableMotor && !r.enableLimit;
-}
-
-// Four revolute joints of one graph colour (no two share a dynamic body) as the lanes of one row set.
-struct RevoluteBlock {
-    RevoluteRows<simd::Float4> rows;
+// Four joints of one type and one graph colour (no two share a dynamic body) as the lanes of the
+// type's row set.
+struct JointBlock {
+    static constexpr std::size_t rowCapacity = 21;  // floats of the largest row set (the prismatic joint's)
     JointMassT<simd::Float4> mass;
     int joint[4] = {-1, -1, -1, -1};   // index in JointStore::joints; -1: an empty lane
     int bodyA[4] = {}, bodyB[4] = {};  // solver slots; an empty lane uses the static slot 0
-    bool angleRows = false;            // whether a lane has a motor or a limit
-    // Packed only where angleRows; last, away from what every block reads.
-    RevoluteAngleRows<simd::Float4> angle;
+    int typeEnd = 0;  // where the colour's blocks of this type end (index in JointScratch::blocks)
+    JointType type = JointType::Revolute;
+    bool optionalRows = false;  // whether a lane's joint has rows others of its type lack
+    // The row set's Rows<Float4>, field i of lane l at float 4i + l; last, so that a block reads
+    // only the fields its type gathered.
+    alignas(16) float rows[rowCapacity * 4];
+
+    template <class Rows>
+    Rows& rowsAs() {
+        return *reinterpret_cast<Rows*>(rows);
+    }
 };
 
-// Four prepared joints as lanes; joints[i] = -1 marks an empty lane, whose PreparedJoint should
-// have no mass (it then moves nothing).
-RevoluteBlock packRevoluteBlock(const std::array<const PreparedJoint*, 4>& lanes, const std::array<int, 4>& joints);
+// What the joint store calls for a type's blocks (JointStages::lanes; null for a scalar type).
+struct JointLaneStages {
+    bool (*optionalRows)(const PreparedJoint& joint);
+    void (*gather)(JointBlock& block, const std::array<const PreparedJoint*, 4>& lanes);
+    void (*warmStart)(JointBlock* blocks, int count, std::vector<BodyState>& states);
+    void (*solve)(JointBlock* blocks, int count, std::vector<BodyState>& states, const std::vector<float>& stepRotation,
+                  const StepContext& ctx, bool useBias);
+    void (*store)(const JointBlock& block, std::span<Joint> joints);
+};
+
+// Four prepared joints of one type as the lanes of `block` (every field the passes read is
+// rewritten): their slots, masses and rows; optionalRows: whether one of them has optional rows.
+// joints[i] = -1 marks an empty lane: the static slot, no mass, and lanes[i]'s rows (prepareJoints
+// passes the block's first joint, so that a block of joints alike solves every lane alike).
+void packJointBlock(JointBlock& block, const std::array<const PreparedJoint*, 4>& lanes, const std::array<int, 4>& joints,
+                    bool optionalRows);
+
 // (θB − θA) turned since the step began, of each lane's bodies.
-inline simd::Float4 laneRotation(const RevoluteBlock& block, const std::vector<float>& stepRotation) {
+inline simd::Float4 laneRotation(const JointBlock& block, const std::vector<float>& stepRotation) {
     float a[4], b[4];
     for (int lane = 0; lane < 4; ++lane) {
         a[lane] = stepRotation[block.bodyA[lane]];
@@ -123,18 +79,99 @@ inline simd::Float4 laneRotation(const RevoluteBlock& block, const std::vector<f
     }
     return simd::Float4::load(b) - simd::Float4::load(a);
 }
-// One pass of a block's rows (p.rotation is set here): all of them where a lane has a motor or a
-// limit, else the point rows alone.
-inline void solveRevoluteBlock(RevoluteBlock& block, JointPairT<simd::Float4>& p, const std::vector<float>& stepRotation,
-                               const StepContext& ctx, bool useBias) {
-    if (block.angleRows) {
-        p.rotation = laneRotation(block, stepRotation);
-        solveRevoluteRows(block.rows, block.angle, p, ctx, useBias);
-    } else {
-        solveRevolutePoint(block.rows, p, rigidSoftness(ctx, useBias));
+
+// The frame at step start every row set begins with (rA, rB and cB − cA: R's anchorA, anchorB
+// and deltaCenter), gathered from the prepared joint.
+template <class R, std::size_t lanes>
+void gatherFrame(const PreparedJoint& j, RowLane<lanes> out) {
+    out.set(offsetof(R, anchorA), j.anchorA);
+    out.set(offsetof(R, anchorB), j.anchorB);
+    out.set(offsetof(R, deltaCenter), j.deltaCenter);
+}
+
+// A motor's and limits' constants (joint_rows.hpp), gathered at `offset` in the rows.
+template <std::size_t lanes>
+void gatherMotorLimits(RowLane<lanes> out, std::size_t offset, const MotorLimitsT<float>& c) {
+    using M = MotorLimitsT<float>;
+    out.set(offset + offsetof(M, motorSpeed), c.motorSpeed);
+    out.set(offset + offsetof(M, maxMotor), c.maxMotor);
+    out.set(offset + offsetof(M, lower), c.lower);
+    out.set(offset + offsetof(M, upper), c.upper);
+    out.set(offset + offsetof(M, motor), c.motor);
+    out.set(offset + offsetof(M, limit), c.limit);
+}
+
+namespace joint_lanes {
+
+template <class RowSet>
+using WideRows = typename RowSet::template Rows<simd::Float4>;
+
+template <class RowSet>
+void gather(JointBlock& block, const std::array<const PreparedJoint*, 4>& lanes) {
+    static_assert(rowFloatsOf<RowSet::template Rows>() <= JointBlock::rowCapacity, "a row set must fit: raise JointBlock::rowCapacity");
+    for (int lane = 0; lane < 4; ++lane) RowSet::gather(*lanes[lane], RowLane<4>{block.rows + lane}, block.optionalRows);
+}
+
+// `rows(rows, pair, block)` on each block, its bodies gathered into lanes and their velocities
+// written back.
+template <class RowSet, class Rows>
+void forBlocks(JointBlock* blocks, int count, std::vector<BodyState>& states, Rows rows) {
+    for (JointBlock* block = blocks; block != blocks + count; ++block) {
+        BodyLanes<simd::Float4> a = gatherBodies(states, block->bodyA), b = gatherBodies(states, block->bodyB);
+        JointPairT<simd::Float4> p{a, b, block->mass};
+        rows(block->rowsAs<WideRows<RowSet>>(), p, *block);
+        scatterVelocities(states, block->bodyA, a);
+        scatterVelocities(states, block->bodyB, b);
     }
 }
-// Each lane's accumulated impulses back to its joint.
-void unpackRevoluteImpulses(const RevoluteBlock& block, std::span<Joint> joints);
+
+template <class RowSet>
+void warmStart(JointBlock* blocks, int count, std::vector<BodyState>& states) {
+    forBlocks<RowSet>(blocks, count, states, [](const WideRows<RowSet>& rows, JointPairT<simd::Float4>& p, const JointBlock&) {
+        RowSet::warmStart(rows, p);
+    });
+}
+
+template <class RowSet>
+void solve(JointBlock* blocks, int count, std::vector<BodyState>& states, const std::vector<float>& stepRotation,
+           const StepContext& ctx, bool useBias) {
+    forBlocks<RowSet>(blocks, count, states, [&](WideRows<RowSet>& rows, JointPairT<simd::Float4>& p, const JointBlock& block) {
+        if (RowSet::usesRotation(block.optionalRows)) p.rotation = laneRotation(block, stepRotation);
+        RowSet::solve(rows, p, ctx, useBias, block.optionalRows);
+    });
+}
+
+template <class RowSet>
+void store(const JointBlock& block, std::span<Joint> joints) {
+    for (int lane = 0; lane < 4; ++lane)
+        if (block.joint[lane] >= 0)
+            RowSet::store(RowLane<4, const float>{block.rows + lane}, joints[block.joint[lane]].data, block.optionalRows);
+}
+
+}  // namespace joint_lanes
+
+// A row set's stages for its type's blocks, for its JointStages.
+template <class RowSet>
+constexpr JointLaneStages jointLaneStages() {
+    return {RowSet::optionalRows, joint_lanes::gather<RowSet>, joint_lanes::warmStart<RowSet>, joint_lanes::solve<RowSet>,
+            joint_lanes::store<RowSet>};
+}
+
+// The same rows for one joint: gathered into its own Rows<float>, and for solve its impulses
+// stored back into its data.
+template <class RowSet>
+void warmStartJoint(PreparedJoint& j, JointPair& p) {
+    typename RowSet::template Rows<float> rows;
+    RowSet::gather(j, RowLane<1>{floatsOf(rows)}, true);
+    RowSet::warmStart(rows, p);
+}
+
+template <class RowSet>
+void solveJoint(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool useBias) {
+    typename RowSet::template Rows<float> rows;
+    RowSet::gather(j, RowLane<1>{floatsOf(rows)}, true);
+    RowSet::solve(rows, p, ctx, useBias, true);
+    RowSet::store(RowLane<1, const float>{floatsOf(rows)}, j.data, true);
+}
 
 }  // namespace perpdot

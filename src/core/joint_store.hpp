@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <type_traits>
@@ -37,18 +38,19 @@ struct JointPairT {
     BodyLanes<F>& a;
     BodyLanes<F>& b;
     JointMassT<F> m;
-    F rotation{};   // (θB − θA) turned since the step began (in SIMD lanes: set for the angle rows only)
+    F rotation{};   // (θB − θA) turned since the step began (in SIMD lanes: set where the row set usesRotation)
     F rotationA{};  // θA turned since the step began (gear joints; not set in SIMD lanes)
 };
 using JointPair = JointPairT<float>;
 
-// A joint type's data, a struct only its file names (joint_type.hpp; joint_revolute.hpp shares the
-// revolute joint's with the 4-wide rows and the trees): `type` in the Joint says which one lives
-// here. The bytes start at zero; emplace<T>() starts a value-initialised T (createJoint, the
-// snapshot reader), as<T>() is the live T. Both check that T fits and is trivially copyable, since
-// the store copies joints bytewise (which carries the T along: C++20's implicit object creation).
-// Strictly, as<T>() would std::launder its pointer; GCC then stops merging the loads of
-// packRevoluteBlock (+0.5 % of joint_grid's instructions), and no compiler we build with needs it.
+// A joint type's data, a struct only its file names (joint_type.hpp; the revolute, weld,
+// prismatic and wheel joints' joint_<type>.hpp share theirs with the tests, the trees and the gear
+// joint): `type` in the Joint says which one lives here. The bytes start at zero; emplace<T>()
+// starts a value-initialised T (createJoint, the snapshot reader), as<T>() is the live T. Both
+// check that T fits and is trivially copyable, since the store copies joints bytewise (which
+// carries the T along: C++20's implicit object creation).
+// Strictly, as<T>() would std::launder its pointer; GCC then stops merging the loads of the
+// gathers into joint lanes, and no compiler we build with needs it.
 class JointData {
 public:
     static constexpr size_t capacity = 68;  // bytes: the largest type's (the wheel joint's)
@@ -117,7 +119,7 @@ inline JointPair pairOf(std::vector<BodyState>& states, const std::vector<float>
     return pairOf(states[j.indexA], states[j.indexB], stepRotation, j);
 }
 
-struct RevoluteBlock;  // four revolute joints in SIMD lanes (joint_solver_wide.hpp)
+struct JointBlock;  // four joints of one type in SIMD lanes (joint_solver_wide.hpp)
 
 struct JointStore {
     Pool<Joint> joints;
@@ -131,17 +133,21 @@ struct JointScratch {
     // The step's awake joints, prepared in store order: prepared[k] is joints[awake[k]].
     std::vector<int> awake;
     std::vector<PreparedJoint> prepared;
-    // The passes' order, colour by colour: colour c is revoluteBlocks[blockStart[c] .. blockStart[c + 1])
-    // four at a time, then prepared[scalarOrder[k]] for k in [scalarStart[c], scalarStart[c + 1])
-    // one at a time (the other joints, and every joint no colour could take).
-    std::vector<RevoluteBlock> revoluteBlocks;
+    // The passes' order, colour by colour: colour c is blocks[blockStart[c] .. blockStart[c + 1])
+    // four at a time (by type, in JointType's order), then prepared[scalarOrder[k]] for k in
+    // [scalarStart[c], scalarStart[c + 1]) one at a time (the types that have no lanes, and every
+    // joint no colour could take).
+    std::vector<JointBlock> blocks;
     std::vector<int> scalarOrder;
     ColorStarts blockStart{}, scalarStart{};
     // Revolute trees (joint_tree.hpp): solved directly after the colours, outside them.
     RevoluteTrees trees;
     // Scratch of prepareJoints, kept to reuse its memory.
     std::vector<int> colors;  // of prepared[k], from the step scratch's one colouring
-    std::vector<std::array<int, 4>> blockLanes;  // by revolute block: its lanes' k in prepared, -1 empty
+    // Of prepared[k]: -1 solved alone, 0 in lanes with its type's rows alone, 1 in lanes with
+    // optional rows (a motor, a limit).
+    std::vector<int8_t> laneRows;
+    std::vector<std::array<int, 4>> blockLanes;  // by block: its lanes' k in prepared, -1 empty
     std::vector<int> breaking;  // breakJoints: the joints over their break limits, in store order
 };
 
@@ -162,12 +168,16 @@ void requireFinite(bool ok, const char* what);  // Error "<what> must be finite"
 
 // A joint type's solver stages. prepare runs after the common frame (anchors, masses, deltaCenter,
 // deltaAngle) is set, with the two bodies as the step starts.
+// lanes: the stages of the type's blocks of four (joint_solver_wide.hpp), null for a type solved
+// one joint at a time.
 struct Body;
+struct JointLaneStages;
 struct JointStages {
     void (*prepare)(PreparedJoint& joint, const StepContext& ctx, const Body& a, const Body& b);
     void (*warmStart)(PreparedJoint& joint, JointPair& pair);
     void (*solve)(PreparedJoint& joint, JointPair& pair, const StepContext& ctx, bool useBias);
     JointReaction (*reaction)(const Joint& joint);
+    const JointLaneStages* lanes = nullptr;
 };
 
 // A joint type as the store sees it: its stages and what the store and the snapshot do with its
@@ -182,6 +192,9 @@ struct JointKind {
     void (*read)(ByteReader& in, JointData& data);
     float* (*motorSpeed)(JointData& data);  // for setMotorSpeed; null: the type has no motor
 };
+// How many joint types there are: JointType's last enumerator names it (a new type moves it there).
+constexpr int jointTypeCount = static_cast<int>(JointType::Filter) + 1;
+
 // The kind of `type`; null for a number that names no type (read from a snapshot).
 const JointKind* kindOf(JointType type);
 const JointStages& stagesOf(JointType type);  // of a type that exists

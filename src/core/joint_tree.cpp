@@ -6,8 +6,8 @@
 #include <utility>
 
 #include "core/cholesky.hpp"
+#include "core/joint_revolute.hpp"
 #include "core/joint_rows.hpp"
-#include "core/joint_solver_wide.hpp"
 #include "core/union_find.hpp"
 #include "core/world_impl.hpp"
 

@@ -1,34 +1,81 @@
 // Weld joint: the point rows of the revolute joint plus one angular row (effective mass
 // 1/(1/IA + 1/IB)) holding θB − θA at the reference angle. With hertz > 0 the angular row is a
-// spring (Box2D 2.4's soft weld bends; it does not stretch).
+// spring (Box2D 2.4's soft weld bends; it does not stretch). The rows are written once over a lane
+// type F, for one joint and for blocks of four (joint_solver_wide.hpp).
 #include <cmath>
+#include <cstddef>
 
-#include "core/joint_rows.hpp"
+#include "core/joint_solver_wide.hpp"
 #include "core/joint_type.hpp"
+#include "core/joint_weld.hpp"
 #include "core/world_impl.hpp"
 
 namespace perpdot {
 
 namespace {
 
-struct WeldJoint {
-    float hertz = 0, dampingRatio = 0;  // soft in the angle only, like Box2D 2.4's weld
-    Softness angularSoftness;
-    float axialMass = 0;
-    Vec2 linearImpulse;
-    float angularImpulse = 0;
+// The weld joint's rows: the point rows, then the angle row, rigid or a spring by lane.
+struct WeldRowSet {
+    template <class F>
+    struct Rows {
+        Vec2T<F> anchorA, anchorB;  // rA, rB at step start
+        Vec2T<F> deltaCenter;       // cB − cA at step start
+        Vec2T<F> linearImpulse;     // λ of the point rows
+        F angularImpulse{};         // λ of the angle row
+        F deltaAngle{};             // θB − θA − θref at step start
+        F axialMass{};              // 1 / (1/IA + 1/IB)
+        F spring{};                 // 1 where hertz > 0, else 0
+        SoftnessT<F> angularSoftness;  // the spring's
+    };
+
+    static bool optionalRows(const PreparedJoint&) { return false; }
+    static bool usesRotation(bool) { return true; }
+
+    template <std::size_t lanes>
+    static void gather(const PreparedJoint& j, RowLane<lanes> out, bool) {
+        using R = Rows<float>;
+        const WeldJoint& s = j.data.as<WeldJoint>();
+        gatherFrame<R>(j, out);
+        out.set(offsetof(R, linearImpulse), s.linearImpulse);
+        out.set(offsetof(R, angularImpulse), s.angularImpulse);
+        out.set(offsetof(R, deltaAngle), j.deltaAngle);
+        out.set(offsetof(R, axialMass), s.axialMass);
+        out.set(offsetof(R, spring), s.hertz > 0.0f ? 1.0f : 0.0f);
+        out.set(offsetof(R, angularSoftness), s.angularSoftness);
+    }
+
+    // Re-apply last step's impulses: λ at the anchors, then the angle's on ωB − ωA.
+    template <class F>
+    static void warmStart(const Rows<F>& r, JointPairT<F>& p) {
+        const JointFrameT<F> f = currentFrame(p, r.anchorA, r.anchorB, r.deltaCenter);
+        applyPoint(p, f.rA, f.rB, r.linearImpulse);
+        applyRow(p, angularRowOf<F>(), r.angularImpulse);
+    }
+
+    // One pass: the angle row on θ = (θB − θA − θref)₀ + p.rotation, then the point rows on
+    // C = pB − pA.
+    template <class F>
+    static void solve(Rows<F>& r, JointPairT<F>& p, const StepContext& ctx, bool useBias, bool) {
+        const Softness rigid = rigidSoftness(ctx, useBias);
+        const SoftnessT<F> angular = selectSoftness<F>(r.spring != F(0.0f), r.angularSoftness, rigid);
+        solveRow(p, angularRowOf<F>(), r.axialMass, r.deltaAngle + p.rotation, angular, r.angularImpulse);
+        const JointFrameT<F> f = currentFrame(p, r.anchorA, r.anchorB, r.deltaCenter);
+        solvePointRows(p, f.rA, f.rB, f.d, rigid, r.linearImpulse);
+    }
+
+    // The impulses, and what prepareWeld wrote (snapshots carry it).
+    template <std::size_t lanes>
+    static void store(RowLane<lanes, const float> rows, JointData& data, bool) {
+        using R = Rows<float>;
+        WeldJoint& s = data.as<WeldJoint>();
+        s.axialMass = rows[offsetof(R, axialMass)];
+        s.angularSoftness = rows.softness(offsetof(R, angularSoftness));
+        s.linearImpulse = rows.vec(offsetof(R, linearImpulse));
+        s.angularImpulse = rows[offsetof(R, angularImpulse)];
+    }
 };
 
-static_assert(reviewedLayout<WeldJoint, 36>);
-constexpr auto fields(const WeldJoint*) {
-    using J = WeldJoint;
-    return std::tuple{field("hertz", &J::hertz).anyBits(),
-                      field("dampingRatio", &J::dampingRatio).anyBits(),
-                      field("angularSoftness", &J::angularSoftness).anyBits(),
-                      field("axialMass", &J::axialMass).anyBits(),
-                      field("linearImpulse", &J::linearImpulse).anyBits(),
-                      field("angularImpulse", &J::angularImpulse).anyBits()};
-}
+constexpr JointLaneStages weldLanes = jointLaneStages<WeldRowSet>();
 
 }  // namespace
 
@@ -53,24 +100,10 @@ void prepareWeld(PreparedJoint& j, const StepContext& ctx, const Body&, const Bo
     }
 }
 
-void warmStartWeld(PreparedJoint& j, JointPair& p) {
-    const WeldJoint& s = j.data.as<WeldJoint>();
-    const JointFrame f = currentFrame(j, p);
-    applyPoint(p, f.rA, f.rB, s.linearImpulse);
-    applyRow(p, angularRow, s.angularImpulse);
-}
-
-void solveWeld(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool useBias) {
-    WeldJoint& s = j.data.as<WeldJoint>();
-    const Softness angular = s.hertz > 0.0f ? s.angularSoftness : rigidSoftness(ctx, useBias);
-    solveRow(p, angularRow, s.axialMass, currentAngle(j, p), angular, s.angularImpulse);
-    const JointFrame f = currentFrame(j, p);
-    solvePointRows(p, f.rA, f.rB, f.d, rigidSoftness(ctx, useBias), s.linearImpulse);
-}
-
 JointReaction reactionWeld(const Joint& j) { return {j.data.as<WeldJoint>().linearImpulse, j.data.as<WeldJoint>().angularImpulse}; }
 
 template JointId World::createJoint(const WeldJointDef&);
-extern const JointKind weldKind = jointKind<WeldJoint>({prepareWeld, warmStartWeld, solveWeld, reactionWeld});
+extern const JointKind weldKind = jointKind<WeldJoint>(
+    {prepareWeld, warmStartJoint<WeldRowSet>, solveJoint<WeldRowSet>, reactionWeld, &weldLanes});
 
 }  // namespace perpdot

@@ -1,44 +1,102 @@
 // Wheel joint: B's anchor (the axle) moves along a suspension axis fixed in A and B turns freely.
 // One rigid row holds the axle on the line (along perp(axis)), a spring row acts along the axis
-// (rigid when hertz = 0), and an optional motor row drives ωB − ωA.
+// (rigid when hertz = 0), and an optional motor row drives ωB − ωA. The rows are written once over
+// a lane type F, for one joint and for blocks of four (joint_solver_wide.hpp).
 #include <cmath>
+#include <cstddef>
 
-#include "core/joint_rows.hpp"
+#include "core/joint_solver_wide.hpp"
 #include "core/joint_type.hpp"
+#include "core/joint_wheel.hpp"
 #include "core/world_impl.hpp"
 
 namespace perpdot {
 
 namespace {
 
-struct WheelJoint {
-    Vec2 localAxisA;
-    float hertz = 0, dampingRatio = 0;  // 0 hertz: rigid suspension
-    bool enableMotor = false;
-    float motorSpeed = 0, maxMotorTorque = 0;
-    Softness spring;
-    Vec2 axisA;
-    float axialMass = 0, motorMass = 0;
-    float perpImpulse = 0, springImpulse = 0, motorImpulse = 0;
+// The wheel joint's rows: the motor on ωB − ωA (gathered and solved where optionalRows), the
+// suspension along the axis (a spring or rigid by lane), the rigid row across it.
+struct WheelRowSet {
+    template <class F>
+    struct Rows {
+        Vec2T<F> anchorA, anchorB;  // rA, rB at step start
+        Vec2T<F> deltaCenter;       // cB − cA at step start
+        Vec2T<F> axisA;             // the axis in the world at step start
+        F perpImpulse{}, springImpulse{}, motorImpulse{};  // λ across, along, and of the motor
+        F axialMass{};              // of the row along the axis
+        F springy{};                // 1 where hertz > 0, else 0
+        SoftnessT<F> spring;        // the suspension's
+        F motorMass{};              // 1 / (1/IA + 1/IB)
+        // The motor's constants, gathered where optionalRows.
+        F motorSpeed{}, maxMotorTorque{};
+        F motor{};                  // 1 where enabled, else 0
+    };
+
+    static bool optionalRows(const PreparedJoint& j) { return j.data.as<WheelJoint>().enableMotor; }
+    static bool usesRotation(bool) { return false; }
+
+    template <std::size_t lanes>
+    static void gather(const PreparedJoint& j, RowLane<lanes> out, bool optionalRows) {
+        using R = Rows<float>;
+        const WheelJoint& s = j.data.as<WheelJoint>();
+        gatherFrame<R>(j, out);
+        out.set(offsetof(R, axisA), s.axisA);
+        out.set(offsetof(R, perpImpulse), s.perpImpulse);
+        out.set(offsetof(R, springImpulse), s.springImpulse);
+        out.set(offsetof(R, motorImpulse), s.motorImpulse);
+        out.set(offsetof(R, axialMass), s.axialMass);
+        out.set(offsetof(R, springy), s.hertz > 0.0f ? 1.0f : 0.0f);
+        out.set(offsetof(R, spring), s.spring);
+        out.set(offsetof(R, motorMass), s.motorMass);
+        if (!optionalRows) return;
+        out.set(offsetof(R, motorSpeed), s.motorSpeed);
+        out.set(offsetof(R, maxMotorTorque), s.maxMotorTorque);
+        out.set(offsetof(R, motor), s.enableMotor ? 1.0f : 0.0f);
+    }
+
+    // Re-apply last step's impulses: the suspension's along the axis, the row's across it, the motor's.
+    template <class F>
+    static void warmStart(const Rows<F>& r, JointPairT<F>& p) {
+        const AxisRowsT<F> rows = axisRows(p, r.anchorA, r.anchorB, r.deltaCenter, r.axisA);
+        applyRow(p, rows.axial, r.springImpulse);
+        applyRow(p, rows.perpendicular, r.perpImpulse);
+        applyRow(p, angularRowOf<F>(), r.motorImpulse);
+    }
+
+    // One pass: the motor drives ωB − ωA to motorSpeed (|λ| ≤ maxMotorTorque·hs); the suspension
+    // holds the translation at 0, then the row across the axis its offset, each on the rows as the
+    // velocities before it left them.
+    template <class F>
+    static void solve(Rows<F>& r, JointPairT<F>& p, const StepContext& ctx, bool useBias, bool optionalRows) {
+        if (optionalRows)
+            solveWhere(
+                r.motor != F(0.0f), p,
+                [&] { solveMotorRow(p, angularRowOf<F>(), r.motorMass, r.motorSpeed, r.maxMotorTorque * F(ctx.hs), r.motorImpulse); },
+                r.motorImpulse);
+        const Softness rigid = rigidSoftness(ctx, useBias);
+        AxisRowsT<F> rows = axisRows(p, r.anchorA, r.anchorB, r.deltaCenter, r.axisA);
+        const SoftnessT<F> suspension = selectSoftness<F>(r.springy != F(0.0f), r.spring, rigid);
+        solveRow(p, rows.axial, r.axialMass, rows.translation, suspension, r.springImpulse);
+        rows = axisRows(p, r.anchorA, r.anchorB, r.deltaCenter, r.axisA);
+        solveRow(p, rows.perpendicular, effectiveMass(p.m, rows.perpendicular), rows.offset, everyLane<F>(rigid), r.perpImpulse);
+    }
+
+    // The impulses, and what prepareWheel wrote (snapshots carry it).
+    template <std::size_t lanes>
+    static void store(RowLane<lanes, const float> rows, JointData& data, bool) {
+        using R = Rows<float>;
+        WheelJoint& s = data.as<WheelJoint>();
+        s.axisA = rows.vec(offsetof(R, axisA));
+        s.axialMass = rows[offsetof(R, axialMass)];
+        s.motorMass = rows[offsetof(R, motorMass)];
+        s.spring = rows.softness(offsetof(R, spring));
+        s.perpImpulse = rows[offsetof(R, perpImpulse)];
+        s.springImpulse = rows[offsetof(R, springImpulse)];
+        s.motorImpulse = rows[offsetof(R, motorImpulse)];
+    }
 };
 
-static_assert(reviewedLayout<WheelJoint, 68>);
-constexpr auto fields(const WheelJoint*) {
-    using J = WheelJoint;
-    return std::tuple{field("localAxisA", &J::localAxisA).anyBits(),
-                      field("hertz", &J::hertz).anyBits(),
-                      field("dampingRatio", &J::dampingRatio).anyBits(),
-                      field("enableMotor", &J::enableMotor),
-                      field("motorSpeed", &J::motorSpeed).anyBits(),
-                      field("maxMotorTorque", &J::maxMotorTorque).anyBits(),
-                      field("spring", &J::spring).anyBits(),
-                      field("axisA", &J::axisA).anyBits(),
-                      field("axialMass", &J::axialMass).anyBits(),
-                      field("motorMass", &J::motorMass).anyBits(),
-                      field("perpImpulse", &J::perpImpulse).anyBits(),
-                      field("springImpulse", &J::springImpulse).anyBits(),
-                      field("motorImpulse", &J::motorImpulse).anyBits()};
-}
+constexpr JointLaneStages wheelLanes = jointLaneStages<WheelRowSet>();
 
 }  // namespace
 
@@ -65,46 +123,10 @@ void prepareWheel(PreparedJoint& j, const StepContext& ctx, const Body& a, const
     const Rot qA = a.xf.q;
     WheelJoint& s = j.data.as<WheelJoint>();
     s.axisA = rotate(qA, s.localAxisA);
-    const Vec2 d = j.deltaCenter + j.anchorB - j.anchorA;
-    s.axialMass = effectiveMass(j.mass, linearRow(j.anchorA + d, j.anchorB, s.axisA));
+    s.axialMass = axialMass(j, s.axisA);
     s.motorMass = effectiveMass(j.mass, angularRow);
     s.spring = makeSoftness(s.hertz, s.dampingRatio, ctx.hs);
     if (!ctx.enableWarmStarting) s.perpImpulse = s.springImpulse = s.motorImpulse = 0.0f;
-}
-
-namespace {
-
-struct WheelRows {
-    Row axial, perpendicular;
-    float translation, offset;
-};
-
-WheelRows wheelRows(const PreparedJoint& j, const JointPair& p) {
-    const JointFrame f = currentFrame(j, p);
-    const Vec2 axis = rotate(p.a.dq, j.data.as<WheelJoint>().axisA);
-    return {linearRow(f.rA + f.d, f.rB, axis), linearRow(f.rA + f.d, f.rB, perp(axis)), dot(axis, f.d),
-            dot(perp(axis), f.d)};
-}
-
-}  // namespace
-
-void warmStartWheel(PreparedJoint& j, JointPair& p) {
-    const WheelJoint& s = j.data.as<WheelJoint>();
-    const WheelRows rows = wheelRows(j, p);
-    applyRow(p, rows.axial, s.springImpulse);
-    applyRow(p, rows.perpendicular, s.perpImpulse);
-    applyRow(p, angularRow, s.motorImpulse);
-}
-
-void solveWheel(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool useBias) {
-    WheelJoint& s = j.data.as<WheelJoint>();
-    if (s.enableMotor) solveMotorRow(p, angularRow, s.motorMass, s.motorSpeed, s.maxMotorTorque * ctx.hs, s.motorImpulse);
-    WheelRows rows = wheelRows(j, p);
-    const Softness suspension = s.hertz > 0.0f ? s.spring : rigidSoftness(ctx, useBias);
-    solveRow(p, rows.axial, s.axialMass, rows.translation, suspension, s.springImpulse);
-    rows = wheelRows(j, p);
-    solveRow(p, rows.perpendicular, effectiveMass(p.m, rows.perpendicular), rows.offset, rigidSoftness(ctx, useBias),
-             s.perpImpulse);
 }
 
 JointReaction reactionWheel(const Joint& j) {
@@ -113,6 +135,7 @@ JointReaction reactionWheel(const Joint& j) {
 }
 
 template JointId World::createJoint(const WheelJointDef&);
-extern const JointKind wheelKind = jointKind<WheelJoint, &WheelJoint::motorSpeed>({prepareWheel, warmStartWheel, solveWheel, reactionWheel});
+extern const JointKind wheelKind = jointKind<WheelJoint, &WheelJoint::motorSpeed>(
+    {prepareWheel, warmStartJoint<WheelRowSet>, solveJoint<WheelRowSet>, reactionWheel, &wheelLanes});
 
 }  // namespace perpdot

@@ -28,9 +28,6 @@ struct ContactConstraint {
     int block = -1, lane = 0;  // block -1: its own rows
 };
 
-inline const float* rowData(const ContactRows<float>& rows) { return reinterpret_cast<const float*>(&rows); }
-inline float* rowData(ContactRows<float>& rows) { return reinterpret_cast<float*>(&rows); }
-
 // A body's path over the rest of a step, for continuous collision between moving bodies
 // (continuous_impacts.cpp): centre of mass and angle go linearly from (c0, a0) at time t0 to
 // (c1, a1) at the step's end; times are fractions of the step.

@@ -130,6 +130,82 @@ Scene spinner() {
     return s;
 }
 
+// The joint types other than revolute in bulk, in mixed blocks: 24 cantilever beams of 20 welded
+// segments (every other beam's welds springs), 400 pistons on vertical prismatic rails (by fours:
+// a limit, a motor up and a limit, a motor down and a limit, free and weightless) and 80 carts on
+// wheel joints (a motor on the rear wheel, every other cart sprung) driving along the ground.
+Scene jointRack() {
+    Scene s;
+    s.steps = 500;
+    addGround(s, 200.0f);
+    auto name = [](const char* kind, int k, int i = -1) {
+        std::string text = kind;
+        text += std::to_string(k);
+        if (i >= 0) {
+            text += '_';
+            text += std::to_string(i);
+        }
+        return text;
+    };
+
+    SceneBody& wall = addBody(s, {.name = "wall", .type = BodyType::Static});
+    const int beams = 24, segments = 20;
+    const float segment = 0.5f;
+    SceneShape plank = boxShape(0.5f * segment, 0.1f);
+    plank.filter.category = 0x0004;  // the beams pass through each other
+    plank.filter.mask = 0xFFFB;
+    for (int k = 0; k < beams; ++k) {
+        const Vec2 root{-120.0f + 10.0f * k, 40.0f + 3.0f * (k % 2)};
+        wall.shapes.push_back(boxShape(0.2f, 0.5f, root - Vec2{0.2f, 0.0f}));
+    }
+    for (int k = 0; k < beams; ++k) {
+        const Vec2 root{-120.0f + 10.0f * k, 40.0f + 3.0f * (k % 2)};
+        for (int i = 0; i < segments; ++i) {
+            addBody(s, {.name = name("beam", k, i), .position = root + Vec2{segment * (i + 0.5f), 0.0f}, .allowSleep = false,
+                        .shapes = {plank}});
+            SceneJoint weld{.type = JointType::Weld, .bodyA = i == 0 ? "wall" : name("beam", k, i - 1), .bodyB = name("beam", k, i),
+                            .anchor = root + Vec2{segment * i, 0.0f}};
+            if (k % 2 == 1) weld.hertz = 8.0f, weld.dampingRatio = 0.5f;
+            s.joints.push_back(weld);
+        }
+    }
+
+    addBody(s, {.name = "rails", .type = BodyType::Static});
+    const int pistons = 400;
+    for (int k = 0; k < pistons; ++k) {
+        const int row = k / 200, column = k % 200;
+        const Vec2 p{-100.0f + static_cast<float>(column), 20.0f + 4.0f * static_cast<float>(row)};
+        const int kind = k % 4;
+        addBody(s, {.name = name("piston", k), .position = p, .gravityScale = kind == 3 ? 0.0f : 1.0f, .allowSleep = false,
+                    .shapes = {boxShape(0.3f, 0.3f)}});
+        SceneJoint rail{.type = JointType::Prismatic, .bodyA = "rails", .bodyB = name("piston", k), .anchor = p};
+        rail.axis = {0.0f, 1.0f};
+        if (kind != 3) rail.enableLimit = true, rail.lower = -0.5f, rail.upper = 0.5f;
+        if (kind == 1 || kind == 2) rail.enableMotor = true, rail.motorSpeed = kind == 1 ? 1.0f : -1.0f, rail.maxMotorForce = 20.0f;
+        s.joints.push_back(rail);
+    }
+
+    const int carts = 80;
+    const float y = 1.2f;
+    for (int k = 0; k < carts; ++k) {
+        const float x = -140.0f + 3.5f * k;
+        addBody(s, {.name = name("cart", k), .position = {x, y}, .allowSleep = false, .shapes = {boxShape(1.2f, 0.25f)}});
+        for (float side : {-1.0f, 1.0f}) {
+            const std::string wheelName = name(side < 0 ? "rear" : "front", k);
+            SceneShape wheel = circleShape(0.4f);
+            wheel.friction = 0.9f;
+            const Vec2 axle{x + 0.9f * side, y - 0.6f};
+            addBody(s, {.name = wheelName, .position = axle, .allowSleep = false, .shapes = {wheel}});
+            SceneJoint j{.type = JointType::Wheel, .bodyA = name("cart", k), .bodyB = wheelName, .anchor = axle};
+            j.axis = {0.0f, 1.0f};
+            if (k % 2 == 1) j.hertz = 4.0f, j.dampingRatio = 0.7f;
+            if (side < 0) j.enableMotor = true, j.motorSpeed = -6.0f, j.maxMotorTorque = 30.0f;
+            s.joints.push_back(j);
+        }
+    }
+    return s;
+}
+
 }  // namespace
 
 std::vector<BuiltinScene> benchScenes() {
@@ -147,6 +223,9 @@ std::vector<BuiltinScene> benchScenes() {
         {"spinner",
          "benchmark: a 40 m bar turned at 5 rad/s by a motor stirs 6,000 shapes in a chain loop, sleep off, 500 steps",
          spinner},
+        {"joint_rack",
+         "benchmark: 480 welded beam segments, 400 pistons on prismatic rails, 80 carts on wheel joints, sleep off, 500 steps",
+         jointRack},
     };
 }
 
