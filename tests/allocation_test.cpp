@@ -125,8 +125,8 @@ TEST(Allocation, ChurningContactsOfATumblerAllocateNothing) {
 TEST(Allocation, SwingingChainAllocatesNothing) {
     SceneWorld chain = buildWorld(findScene("chain"));
     ASSERT_GE(chain.world.joints().size(), 40u);
-    // The links fold onto each other: the contact pool grows up to its peak (near step 540).
-    for (int i = 0; i < 640; ++i) chain.step();
+    // The links fold onto each other: the contact pool grows up to its peak (near step 770).
+    for (int i = 0; i < 840; ++i) chain.step();
     EXPECT_EQ(allocationsOf(600, [&] { chain.step(); }), 0);
 }
 

@@ -169,11 +169,27 @@ void CollisionSystem::destroyProxy(int proxy) {
     impl_->tree.DestroyProxy(proxy);
 }
 
+namespace {
+
+// The displacement a moved proxy's fat AABB grows along (the tree adds b2_aabbMultiplier times it
+// on its side), shortened so that it grows by at most one margin more (b2_aabbExtension). Box2D
+// 2.4's unbounded 4d makes a fast body's box span several steps, and the pairs it finds that way
+// never touch (smash: +30 % per step); growing by the margin alone, as Box2D v3 does, re-fits a
+// steadily moving body every few steps instead (joint_grid: +25 %).
+b2Vec2 predicted(Vec2 displacement) {
+    const float growth = b2_aabbMultiplier * length(displacement);
+    const b2Vec2 d = toB2(displacement);
+    return growth > b2_aabbExtension ? (b2_aabbExtension / growth) * d : d;
+}
+
+}  // namespace
+
 bool CollisionSystem::moveProxy(int proxy, const AABB& aabb, Vec2 displacement) {
     const b2AABB box{toB2(aabb.lower), toB2(aabb.upper)};
-    if (const int leaf = impl_->staticLeaf[proxy]; leaf >= 0) impl_->staticTree.MoveProxy(leaf, box, toB2(displacement));
+    const b2Vec2 d = predicted(displacement);
+    if (const int leaf = impl_->staticLeaf[proxy]; leaf >= 0) impl_->staticTree.MoveProxy(leaf, box, d);
     const AABB before = fatAABB(proxy);
-    if (!impl_->tree.MoveProxy(proxy, box, toB2(displacement))) return false;
+    if (!impl_->tree.MoveProxy(proxy, box, d)) return false;
     if (impl_->since[proxy] == Impl::Since::Kept) {
         impl_->since[proxy] = Impl::Since::Moved;
         impl_->priorFat[proxy] = before;
@@ -189,10 +205,11 @@ bool CollisionSystem::proxyKeeps(int proxy, const AABB& aabb, Vec2 displacement)
           upper.y <= tree.upperBound.y))
         return false;
     // The box a re-insertion would make: aabb grown by the extension r and by b2_aabbMultiplier
-    // times the displacement on its side; "too large" is a tree box outside that grown by 4r more.
+    // times the predicted displacement on its side; "too large" is a tree box outside that grown
+    // by 4r more.
     const b2Vec2 r(b2_aabbExtension, b2_aabbExtension);
     b2Vec2 fatLower = lower - r, fatUpper = upper + r;
-    const b2Vec2 d = b2_aabbMultiplier * toB2(displacement);
+    const b2Vec2 d = b2_aabbMultiplier * predicted(displacement);
     (d.x < 0.0f ? fatLower.x : fatUpper.x) += d.x;
     (d.y < 0.0f ? fatLower.y : fatUpper.y) += d.y;
     const b2Vec2 hugeLower = fatLower - 4.0f * r, hugeUpper = fatUpper + 4.0f * r;

@@ -94,7 +94,9 @@ public:
     // static shapes in a tree of their own), so continuous collision searches only those.
     int createProxy(const AABB& aabb, ChildKey key, bool isStatic);
     void destroyProxy(int proxy);
-    // Re-fits the proxy if `aabb` left its fat AABB; returns whether it moved.
+    // Re-fits the proxy if `aabb` left its fat AABB (b2DynamicTree::MoveProxy: the new fat AABB is
+    // `aabb` grown by the 0.1 m margin and along the step's displacement, by at most one margin
+    // more); returns whether it moved.
     bool moveProxy(int proxy, const AABB& aabb, Vec2 displacement);
     // True when moveProxy(proxy, aabb, displacement) would leave the trees as they are: the fat
     // AABB still holds `aabb` and is not too large for it (b2DynamicTree::MoveProxy's two tests,

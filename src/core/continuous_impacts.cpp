@@ -128,7 +128,7 @@ void collectMoverPairs(World::Impl& w) {
                 const float a0 = o.angle - w.scratch.stepRotation[o.solverIndex];
                 m = static_cast<int>(movers.size());
                 movers.push_back({.body = other, .c0 = c0, .c1 = o.center, .a0 = a0, .a1 = o.angle, .v = o.v,
-                                  .w = o.w});
+                                  .w = o.w, .stepStart = c0});
                 moverOfBody[other] = m;
             }
             addPair(i, m);
@@ -323,7 +323,7 @@ void solveMovingImpacts(World::Impl& w, const StepContext& ctx) {
         b.v = m.v;
         b.w = m.w;
         if (m.frozen) w.freeze(m.body);
-        w.synchronizeProxies(m.body);
+        w.synchronizeProxies(m.body, b.center - m.stepStart);
     }
 }
 

@@ -137,7 +137,7 @@ void finalizeBodies(World::Impl& w, const StepContext& ctx) {
                 continue;
             }
             moveTo(b, s, c1, a1);
-            w.scratch.bodyMotion[k] = w.proxiesKeep(w.scratch.awakeBodies[k]) ? MovedInside : Moved;
+            w.scratch.bodyMotion[k] = w.proxiesKeep(w.scratch.awakeBodies[k], s.dp) ? MovedInside : Moved;
         }
     });
     w.scratch.movers.clear();
@@ -153,16 +153,16 @@ void finalizeBodies(World::Impl& w, const StepContext& ctx) {
         anyBullet = anyBullet || b.bullet;
         if (w.scratch.bodyMotion[k] == MovedInside) continue;
         if (w.scratch.bodyMotion[k] == Moved) {
-            w.synchronizeProxies(index);
+            w.synchronizeProxies(index, s.dp);
             continue;
         }
         const Vec2 c0 = b.center;
         const float a0 = b.angle;
         moveTo(b, s, c0 + s.dp, a0 + w.scratch.stepRotation[k + 1]);
-        w.scratch.movers.push_back({.body = index, .c0 = c0, .a0 = a0, .v = b.v, .w = b.w, .fast = true});
+        w.scratch.movers.push_back({.body = index, .c0 = c0, .a0 = a0, .v = b.v, .w = b.w, .stepStart = c0, .fast = true});
         if (!b.bullet) {
             solveContinuous(w, index, c0, a0);
-            w.synchronizeProxies(index);
+            w.synchronizeProxies(index, b.center - c0);
         }
         w.scratch.movers.back().c1 = b.center;
         w.scratch.movers.back().a1 = b.angle;

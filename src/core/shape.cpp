@@ -157,18 +157,17 @@ bool everyProxy(const World::Impl& w, int body, const Visit& visit) {
 }  // namespace
 
 // Re-fit the body's proxies to its new transform; proxies that left their fat AABB are queried
-// for new pairs next step. A fat AABB is the box grown by Box2D's margin alone, as in Box2D v3:
-// growing it along the step's displacement too (Box2D 2.4's prediction) makes a fast body's box
-// steps long, and the pairs it finds that way never touch (smash: −22 % time per step).
-void World::Impl::synchronizeProxies(int index) {
+// for new pairs next step.
+void World::Impl::synchronizeProxies(int index, Vec2 displacement) {
     everyProxy(*this, index, [&](int proxy, const AABB& aabb) {
-        if (collision.moveProxy(proxy, aabb, {})) movedProxies.push_back(proxy);
+        if (collision.moveProxy(proxy, aabb, displacement)) movedProxies.push_back(proxy);
         return true;
     });
 }
 
-bool World::Impl::proxiesKeep(int index) const {
-    return everyProxy(*this, index, [&](int proxy, const AABB& aabb) { return collision.proxyKeeps(proxy, aabb, {}); });
+bool World::Impl::proxiesKeep(int index, Vec2 displacement) const {
+    return everyProxy(*this, index,
+                      [&](int proxy, const AABB& aabb) { return collision.proxyKeeps(proxy, aabb, displacement); });
 }
 
 ShapeId World::createShape(BodyId body, const ShapeDef& def, const Circle& circle) { return create(*impl_, body, def, circle); }

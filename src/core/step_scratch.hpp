@@ -38,6 +38,7 @@ struct Mover {
     float a0 = 0, a1 = 0;
     Vec2 v;      // velocity along the path
     float w = 0;
+    Vec2 stepStart;  // centre at the step's start: the broadphase displacement
     AABB swept;      // of its shapes over the whole step (fast movers)
     bool fast = false;      // found fast by isFast (else: met by a fast mover)
     bool sweepStatic = false;  // its path still has to be swept against static shapes

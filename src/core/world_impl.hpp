@@ -65,9 +65,9 @@ struct World::Impl {
     int addShape(BodyId body, const ShapeDef& def);
     void createProxies(int shape);
     void destroyProxies(int shape);
-    void synchronizeProxies(int body);
-    // Whether synchronizeProxies(body) would change no proxy (any thread, between tree updates).
-    bool proxiesKeep(int body) const;
+    void synchronizeProxies(int body, Vec2 displacement);
+    // Whether synchronizeProxies(body, displacement) would change no proxy (any thread, between tree updates).
+    bool proxiesKeep(int body, Vec2 displacement) const;
     void reportTouch(const Contact& c, bool begin);  // begin/end event for a contact or sensor
     ContactData contactData(const Contact& c) const;
 };
