@@ -2,7 +2,8 @@
 // lanes (a JointBlock) with bit for bit the results of the type's scalar stages solving them one
 // at a time: revolute point rows alone; revolute and prismatic motors and limits, weld springs,
 // wheel motors and springs, distance springs with their min and max rows on or off lane by lane,
-// mixed in one block; with a joint on a static body, warm-started impulses and an empty lane.
+// mixed in one block; motor joints' capped impulses; with a joint on a static body, warm-started
+// impulses and an empty lane.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "core/joint_distance.hpp"
+#include "core/joint_motor.hpp"
 #include "core/joint_prismatic.hpp"
 #include "core/joint_revolute.hpp"
 #include "core/joint_solver_wide.hpp"
@@ -142,10 +144,25 @@ PreparedJoint randomDistance(Random& r, int a, int b, int flags, const StepConte
     return j;
 }
 
+// A motor joint, its force and torque caps low enough to hold its impulses back (flags bit 0) or
+// far above them.
+PreparedJoint randomMotor(Random& r, int a, int b, int flags, const StepContext&) {
+    PreparedJoint j = randomFrame(r, JointType::Motor, a, b);
+    MotorJoint& motor = j.data.emplace<MotorJoint>();
+    motor.maxForce = flags & 1 ? r(0.0f, 60.0f) : 1.0e4f;
+    motor.maxTorque = flags & 1 ? r(0.0f, 60.0f) : 1.0e4f;
+    motor.correctionFactor = r(0.0f, 1.0f);
+    motor.axialMass = effectiveMass(j.mass, angularRow);
+    motor.linearImpulse = {r(-0.3f, 0.3f), r(-0.3f, 0.3f)};
+    motor.angularImpulse = r(-0.3f, 0.3f);
+    return j;
+}
+
 StepContext substepContext() {
     StepContext ctx;
     ctx.hs = 1.0f / 240.0f;
     ctx.invHs = 240.0f;
+    ctx.invH = 60.0f;
     ctx.jointSoftness = makeSoftness(60.0f, 5.0f, ctx.hs);
     return ctx;
 }
@@ -172,6 +189,7 @@ JointData lastStep(const PreparedJoint& j) {
             wheel.spring = stale;
             break;
         }
+        case JointType::Motor: data.as<MotorJoint>().axialMass = -1.0f; break;
         case JointType::Distance: {
             DistanceJoint& rope = data.as<DistanceJoint>();
             rope.axis = {-1.0f, -1.0f};
@@ -287,6 +305,10 @@ TEST(JointSolverWide, WheelMotorAndSpringLanesEqualScalarSolves) {
 
 TEST(JointSolverWide, DistanceSpringAndLimitLanesEqualScalarSolves) {
     expectEveryCombinationToEqualScalarSolves(2, 371925846u, randomDistance);
+}
+
+TEST(JointSolverWide, MotorLanesEqualScalarSolves) {
+    expectEveryCombinationToEqualScalarSolves(1, 615243987u, randomMotor);
 }
 
 // normalize over lanes is math.hpp's lane by lane: the unit vector, and +0 for a vector of length
