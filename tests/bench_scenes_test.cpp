@@ -1,7 +1,7 @@
-// The benchmark scenes of Box2D v3's suite (bench_tumbler, smash, ragdoll_rain, spinner) and
-// distance_net: their counts, their JSON round trip (joint_rack's too), ragdoll_rain's script in
-// both engines, and the stability figures `perpdot bench` prints, on small cases whose answers are
-// known. No timings are checked.
+// The benchmark scenes of Box2D v3's suite (bench_tumbler, smash, ragdoll_rain, spinner),
+// distance_net and motor_swarm: their counts, their JSON round trip (joint_rack's too),
+// ragdoll_rain's script in both engines, and the stability figures `perpdot bench` prints, on
+// small cases whose answers are known. No timings are checked.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -131,8 +131,19 @@ TEST(BenchScenes, DistanceNetIsRopesOfRodsAndBlobsOfSprings) {
     EXPECT_TRUE(sleepOff(s));
 }
 
+// 400 boxes on motor joints from the ground, 100 carts each carrying a box on one.
+TEST(BenchScenes, MotorSwarmIsBoxesAndCartsOnMotorJoints) {
+    const Scene s = findScene("motor_swarm");
+    EXPECT_EQ(s.steps, 500);
+    EXPECT_EQ(s.bodies.size(), 1u + 400u + 2u * 100u);  // ground, boxes, carts and their loads
+    ASSERT_EQ(s.joints.size(), 500u);
+    for (const SceneJoint& j : s.joints) EXPECT_EQ(j.type, JointType::Motor);
+    EXPECT_EQ(std::count_if(s.joints.begin(), s.joints.end(), [](const SceneJoint& j) { return j.bodyA == "ground"; }), 400);
+    EXPECT_TRUE(sleepOff(s));
+}
+
 TEST(BenchScenes, RoundTripThroughJson) {
-    for (const char* name : {"bench_tumbler", "smash", "ragdoll_rain", "spinner", "joint_rack", "distance_net"}) {
+    for (const char* name : {"bench_tumbler", "smash", "ragdoll_rain", "spinner", "joint_rack", "distance_net", "motor_swarm"}) {
         const Scene s = findScene(name);
         EXPECT_EQ(parseScene(toJson(s)), s) << name;
     }

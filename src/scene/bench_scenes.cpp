@@ -267,6 +267,43 @@ Scene distanceNet() {
     return s;
 }
 
+// Motor joints in bulk, for their four-wide rows: 20 × 20 boxes held by motor joints from the
+// ground, each driven to a point 0.5 m from where it starts and turned to an angle of its own (by
+// fours: a force above its weight, one below it, whose cap then holds, and as much torque as it
+// needs or a small one); and 100 carts on the ground, each carrying a box held by a motor joint
+// 1 m above it. Sleep off.
+Scene motorSwarm() {
+    Scene s;
+    s.steps = 500;
+    addGround(s, 100.0f);
+    const int grid = 20;
+    for (int k = 0; k < grid * grid; ++k) {
+        const int row = k / grid, column = k % grid;
+        const Vec2 p{-15.0f + 1.5f * static_cast<float>(column), 4.0f + 1.5f * static_cast<float>(row)};
+        const std::string name = "hover" + std::to_string(k);
+        addBody(s, {.name = name, .position = p, .allowSleep = false, .shapes = {boxShape(0.3f, 0.3f)}});
+        const float phase = 0.7f * static_cast<float>(k);
+        SceneJoint motor{.type = JointType::Motor, .bodyA = "ground", .bodyB = name};
+        motor.linearOffset = p + 0.5f * Vec2{std::cos(phase), std::sin(phase)};
+        motor.angularOffset = 0.4f * static_cast<float>(k % 5 - 2);
+        motor.maxForce = k % 2 == 0 ? 20.0f : 2.0f;  // a box weighs 3.6 N
+        motor.maxTorque = (k / 2) % 2 == 0 ? 10.0f : 0.05f;
+        s.joints.push_back(motor);
+    }
+    const int carts = 100;
+    for (int k = 0; k < carts; ++k) {
+        const float x = -90.0f + 1.8f * static_cast<float>(k);
+        const std::string cart = "cart" + std::to_string(k), load = "load" + std::to_string(k);
+        addBody(s, {.name = cart, .position = {x, 0.25f}, .allowSleep = false, .shapes = {boxShape(0.6f, 0.25f)}});
+        addBody(s, {.name = load, .position = {x, 1.25f}, .allowSleep = false, .shapes = {boxShape(0.2f, 0.2f)}});
+        SceneJoint motor{.type = JointType::Motor, .bodyA = cart, .bodyB = load};
+        motor.linearOffset = {0.0f, 1.0f};
+        motor.maxForce = 10.0f, motor.maxTorque = 1.0f;
+        s.joints.push_back(motor);
+    }
+    return s;
+}
+
 }  // namespace
 
 std::vector<BuiltinScene> benchScenes() {
@@ -291,6 +328,10 @@ std::vector<BuiltinScene> benchScenes() {
          "benchmark: 32 ropes of 16 rigid distance links, 12 soft blobs of 25 discs on 864 springs with min and max "
          "lengths (every fourth blob rigid), sleep off, 500 steps",
          distanceNet},
+        {"motor_swarm",
+         "benchmark: 400 boxes driven by motor joints from the ground, 100 carts carrying a box on a motor joint, sleep "
+         "off, 500 steps",
+         motorSwarm},
     };
 }
 
