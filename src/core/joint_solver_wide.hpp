@@ -10,7 +10,7 @@
 // they agree bit for bit.
 //
 // A row set RowSet (joint_revolute.cpp, joint_weld.cpp, joint_prismatic.cpp, joint_wheel.cpp,
-// joint_distance.cpp) has
+// joint_distance.cpp, joint_motor.cpp) has
 //   template <class F> struct Rows;                  its fields, floats only (row_lanes.hpp)
 //   static bool optionalRows(const PreparedJoint&);   whether the joint has rows others of its type lack
 //   static bool usesRotation(bool optionalRows);      whether solve reads p.rotation
