@@ -35,11 +35,7 @@ struct MotorRowSet {
     static void gather(const PreparedJoint& j, RowLane<lanes> out, bool) {
         using R = Rows<float>;
         const MotorJoint& s = j.data.as<MotorJoint>();
-        gatherFrame<R>(j, out);
-        out.set(offsetof(R, linearImpulse), s.linearImpulse);
-        out.set(offsetof(R, angularImpulse), s.angularImpulse);
-        out.set(offsetof(R, deltaAngle), j.deltaAngle);
-        out.set(offsetof(R, axialMass), s.axialMass);
+        gatherPointAndAngle<R>(j, s, out);
         out.set(offsetof(R, correctionFactor), s.correctionFactor);
         out.set(offsetof(R, maxForce), s.maxForce);
         out.set(offsetof(R, maxTorque), s.maxTorque);
@@ -48,9 +44,7 @@ struct MotorRowSet {
     // Re-apply last step's impulses: λ at the anchors, then the angle's on ωB − ωA.
     template <class F>
     static void warmStart(const Rows<F>& r, JointPairT<F>& p) {
-        const JointFrameT<F> f = currentFrame(p, r.anchorA, r.anchorB, r.deltaCenter);
-        applyPoint(p, f.rA, f.rB, r.linearImpulse);
-        applyRow(p, angularRowOf<F>(), r.angularImpulse);
+        warmStartPointAndAngle(r, p);
     }
 
     // One pass: the angle row drives θ = (θB − θA − angularOffset)₀ + p.rotation at −rate·θ
@@ -69,10 +63,7 @@ struct MotorRowSet {
     template <std::size_t lanes>
     static void store(RowLane<lanes, const float> rows, JointData& data, bool) {
         using R = Rows<float>;
-        MotorJoint& s = data.as<MotorJoint>();
-        s.axialMass = rows[offsetof(R, axialMass)];
-        s.linearImpulse = rows.vec(offsetof(R, linearImpulse));
-        s.angularImpulse = rows[offsetof(R, angularImpulse)];
+        storePointAndAngle<R>(rows, data.as<MotorJoint>());
     }
 };
 
