@@ -1,6 +1,7 @@
-// The benchmark scenes of Box2D v3's suite (bench_tumbler, smash, ragdoll_rain, spinner): their
-// counts, their JSON round trip, ragdoll_rain's script in both engines, and the stability figures
-// `perpdot bench` prints, on small cases whose answers are known. No timings are checked.
+// The benchmark scenes of Box2D v3's suite (bench_tumbler, smash, ragdoll_rain, spinner),
+// distance_net and motor_swarm: their counts, their JSON round trip (joint_rack's too),
+// ragdoll_rain's script in both engines, and the stability figures `perpdot bench` prints, on
+// small cases whose answers are known. No timings are checked.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -109,8 +110,40 @@ TEST(BenchScenes, RagdollSceneUsesTheSharedFigure) {
     EXPECT_FLOAT_EQ(s.bodies[1].angularVelocity, 2.0f);
 }
 
+// 32 ropes of 16 rods and 12 blobs of 5 × 5 discs tied by 72 distance joints each: 9 blobs of
+// springs with min and max lengths, 3 rigid.
+TEST(BenchScenes, DistanceNetIsRopesOfRodsAndBlobsOfSprings) {
+    const Scene s = findScene("distance_net");
+    EXPECT_EQ(s.steps, 500);
+    EXPECT_EQ(s.bodies.size(), 2u + 32u * 16u + 12u * 25u);  // ground, ceiling, beads, discs
+    ASSERT_EQ(s.joints.size(), 32u * 16u + 12u * 72u);
+    int springs = 0;
+    for (const SceneJoint& j : s.joints) {
+        EXPECT_EQ(j.type, JointType::Distance);
+        if (j.hertz == 0.0f) continue;
+        ++springs;
+        ASSERT_TRUE(j.anchor && j.anchorB);
+        const float rest = length(*j.anchorB - *j.anchor);
+        EXPECT_FLOAT_EQ(j.minLength, 0.8f * rest);
+        EXPECT_FLOAT_EQ(j.maxLength, 1.2f * rest);
+    }
+    EXPECT_EQ(springs, 9 * 72);
+    EXPECT_TRUE(sleepOff(s));
+}
+
+// 400 boxes on motor joints from the ground, 100 carts each carrying a box on one.
+TEST(BenchScenes, MotorSwarmIsBoxesAndCartsOnMotorJoints) {
+    const Scene s = findScene("motor_swarm");
+    EXPECT_EQ(s.steps, 500);
+    EXPECT_EQ(s.bodies.size(), 1u + 400u + 2u * 100u);  // ground, boxes, carts and their loads
+    ASSERT_EQ(s.joints.size(), 500u);
+    for (const SceneJoint& j : s.joints) EXPECT_EQ(j.type, JointType::Motor);
+    EXPECT_EQ(std::count_if(s.joints.begin(), s.joints.end(), [](const SceneJoint& j) { return j.bodyA == "ground"; }), 400);
+    EXPECT_TRUE(sleepOff(s));
+}
+
 TEST(BenchScenes, RoundTripThroughJson) {
-    for (const char* name : {"bench_tumbler", "smash", "ragdoll_rain", "spinner"}) {
+    for (const char* name : {"bench_tumbler", "smash", "ragdoll_rain", "spinner", "joint_rack", "distance_net", "motor_swarm"}) {
         const Scene s = findScene(name);
         EXPECT_EQ(parseScene(toJson(s)), s) << name;
     }

@@ -4,7 +4,8 @@
 # the contact and joint rows' portable 4-float lanes instead of SSE2), and checks that
 # `perpdot run <scene>` prints the same state_hash with all three, for scenes that exercise
 # stacking, friction, restitution, rotation, many contacts and joints (scalar and 4-wide: revolute
-# in joint_grid, weld, prismatic and wheel in joint_rack). A
+# in joint_grid, weld, prismatic and wheel in joint_rack, distance in distance_net, motor in
+# motor_swarm). A
 # difference names the scene and the three hashes. SCENE:N runs N steps (perpdot run --steps N,
 # the scene's step count) instead of the scene's own, to keep the benchmark scenes short. The gcc
 # build must also print the same hash on 2, 3, 4 and 8 workers (perpdot run --workers N), and with
@@ -26,7 +27,8 @@ noSimdDir="${3:-$root/build-hash-gcc-nosimd}"
 jobs="${PERPDOT_JOBS:-2}"
 scenes=(single_box vertical_stack pyramid bouncing_balls friction_ramp rolling_disc spinning_box
         off_center_push card_house newtons_cradle tumbler rain dominoes chain suspension_bridge ragdoll
-        joint_grid:200 joint_rack:150)
+        joint_grid:200 joint_rack:150 distance_net:150
+        motor_swarm:150)
 snapshotScenes=(pyramid:200:100 vertical_stack:500:400 ragdoll:120:60 car:150:75 bullet_wall:20:2
                 sensor_zone:160:80 tumbler:120:60 joint_grid:60:30)
 

@@ -1,8 +1,9 @@
 // The joint rows of src/core/joint_solver_wide.hpp solve four joints of a type in simd::Float4
 // lanes (a JointBlock) with bit for bit the results of the type's scalar stages solving them one
 // at a time: revolute point rows alone; revolute and prismatic motors and limits, weld springs,
-// wheel motors and springs on or off lane by lane, mixed in one block; with a joint on a static
-// body, warm-started impulses and an empty lane.
+// wheel motors and springs, distance springs with their min and max rows on or off lane by lane,
+// mixed in one block; motor joints' capped impulses; with a joint on a static body, warm-started
+// impulses and an empty lane.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "core/joint_distance.hpp"
+#include "core/joint_motor.hpp"
 #include "core/joint_prismatic.hpp"
 #include "core/joint_revolute.hpp"
 #include "core/joint_solver_wide.hpp"
@@ -118,10 +121,48 @@ PreparedJoint randomWheel(Random& r, int a, int b, int flags, const StepContext&
     return j;
 }
 
+// A distance joint, a spring with min and max rows (flags bit 0) or a rigid rod, its lengths
+// (bit 1) close to the anchors' distance at step start, so that the min or max row is often
+// reached, or Box2D's defaults 0 and 1e30 (always speculative). Its rest length is near that
+// distance too.
+PreparedJoint randomDistance(Random& r, int a, int b, int flags, const StepContext& ctx) {
+    PreparedJoint j = randomFrame(r, JointType::Distance, a, b);
+    DistanceJoint& rope = j.data.emplace<DistanceJoint>();
+    const Vec2 d = j.deltaCenter + j.anchorB - j.anchorA;
+    const float gap = length(d);
+    rope.length = gap * r(0.9f, 1.1f);
+    rope.minLength = flags & 2 ? gap * r(0.9f, 1.05f) : 0.0f;
+    rope.maxLength = flags & 2 ? std::max(rope.minLength, gap * r(0.95f, 1.1f)) : 1.0e30f;
+    rope.hertz = flags & 1 ? r(1.0f, 30.0f) : 0.0f;
+    rope.dampingRatio = r(0.0f, 2.0f);
+    rope.spring = makeSoftness(rope.hertz, rope.dampingRatio, ctx.hs);
+    rope.axis = normalize(d);
+    rope.axialMass = effectiveMass(j.mass, linearRow(j.anchorA, j.anchorB, rope.axis));
+    rope.impulse = r(-2.0f, 2.0f);
+    rope.lowerImpulse = r(0.0f, 0.3f);
+    rope.upperImpulse = r(0.0f, 0.3f);
+    return j;
+}
+
+// A motor joint, its force and torque caps low enough to hold its impulses back (flags bit 0) or
+// far above them.
+PreparedJoint randomMotor(Random& r, int a, int b, int flags, const StepContext&) {
+    PreparedJoint j = randomFrame(r, JointType::Motor, a, b);
+    MotorJoint& motor = j.data.emplace<MotorJoint>();
+    motor.maxForce = flags & 1 ? r(0.0f, 60.0f) : 1.0e4f;
+    motor.maxTorque = flags & 1 ? r(0.0f, 60.0f) : 1.0e4f;
+    motor.correctionFactor = r(0.0f, 1.0f);
+    motor.axialMass = effectiveMass(j.mass, angularRow);
+    motor.linearImpulse = {r(-0.3f, 0.3f), r(-0.3f, 0.3f)};
+    motor.angularImpulse = r(-0.3f, 0.3f);
+    return j;
+}
+
 StepContext substepContext() {
     StepContext ctx;
     ctx.hs = 1.0f / 240.0f;
     ctx.invHs = 240.0f;
+    ctx.invH = 60.0f;
     ctx.jointSoftness = makeSoftness(60.0f, 5.0f, ctx.hs);
     return ctx;
 }
@@ -146,6 +187,14 @@ JointData lastStep(const PreparedJoint& j) {
             wheel.axisA = {-1.0f, -1.0f};
             wheel.axialMass = wheel.motorMass = -1.0f;
             wheel.spring = stale;
+            break;
+        }
+        case JointType::Motor: data.as<MotorJoint>().axialMass = -1.0f; break;
+        case JointType::Distance: {
+            DistanceJoint& rope = data.as<DistanceJoint>();
+            rope.axis = {-1.0f, -1.0f};
+            rope.axialMass = -1.0f;
+            rope.spring = stale;
             break;
         }
         default: break;
@@ -252,6 +301,38 @@ TEST(JointSolverWide, PrismaticMotorAndLimitLanesEqualScalarSolves) {
 
 TEST(JointSolverWide, WheelMotorAndSpringLanesEqualScalarSolves) {
     expectEveryCombinationToEqualScalarSolves(2, 918273645u, randomWheel);
+}
+
+TEST(JointSolverWide, DistanceSpringAndLimitLanesEqualScalarSolves) {
+    expectEveryCombinationToEqualScalarSolves(2, 371925846u, randomDistance);
+}
+
+TEST(JointSolverWide, MotorLanesEqualScalarSolves) {
+    expectEveryCombinationToEqualScalarSolves(1, 615243987u, randomMotor);
+}
+
+// normalize over lanes is math.hpp's lane by lane: the unit vector, and +0 for a vector of length
+// 1e-12 or less (even for −0 components or a length that is not zero).
+TEST(JointSolverWide, NormalizeLanesEqualScalar) {
+    Random r{246813579u};
+    const std::array<Vec2, 8> special = {Vec2{0.0f, 0.0f}, Vec2{-0.0f, -0.0f}, Vec2{1.0e-13f, -1.0e-13f}, Vec2{-1.0e-12f, 0.0f},
+                                         Vec2{-2.0e-12f, 0.0f}, Vec2{3.0f, -4.0f}, Vec2{1.0e-30f, 0.0f}, Vec2{0.0f, -7.5f}};
+    for (int round = 0; round < 66; ++round) {
+        float x[4], y[4];
+        for (int lane = 0; lane < 4; ++lane) {
+            const Vec2 v = round < 2 ? special[4 * round + lane] : Vec2{r(-2.0f, 2.0f), r(-2.0f, 2.0f)};
+            x[lane] = v.x;
+            y[lane] = v.y;
+        }
+        const Vec2Lanes<Float4> n = normalize(Vec2Lanes<Float4>{Float4::load(x), Float4::load(y)});
+        float nx[4], ny[4];
+        n.x.store(nx);
+        n.y.store(ny);
+        for (int lane = 0; lane < 4; ++lane) {
+            const Vec2 expected = normalize(Vec2{x[lane], y[lane]});
+            EXPECT_TRUE(sameBits(nx[lane], expected.x) && sameBits(ny[lane], expected.y)) << "round " << round << " lane " << lane;
+        }
+    }
 }
 
 // A lane without the row keeps its velocities and λ bit for bit, even −0, which a zero impulse

@@ -129,7 +129,7 @@ Plan planFor(const std::string& name, int sceneSteps) {
         return {12, 2};
     if (name == "ragdoll_rain") return {40, 4};  // past a few spawns
     if (name == "bench_tumbler") return {24, 3};
-    if (name == "joint_rack") return {40, 4};
+    if (name == "joint_rack" || name == "distance_net" || name == "motor_swarm") return {40, 4};
     if (name == "vertical_stack") return {600, 40};  // asleep from about step 300 on
     if (name == "bullet_wall") return {40, 20};      // the bullets hit within the first steps
     return {std::min(sceneSteps, 420), 38};

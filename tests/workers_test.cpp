@@ -43,7 +43,9 @@ struct HashCase {
 };
 const HashCase hashCases[] = {{"pyramid", 200}, {"ragdoll", 120}, {"car", 150},       {"sensor_zone", 160},
                               {"bullet_wall", 40}, {"tumbler", 150}, {"rain", 200}, {"joint_grid", 30},
-                              {"suspension_bridge", 120}, {"dominoes", 200}, {"joint_rack", 60}};
+                              {"suspension_bridge", 120}, {"dominoes", 200}, {"joint_rack", 60},
+                              {"distance_net", 60},
+                              {"motor_swarm", 60}};
 
 TEST(Workers, EveryWorkerCountGivesTheSameWorld) {
     for (const HashCase& c : hashCases) {

@@ -1,9 +1,13 @@
 // Distance joint: one row along the line between the anchors, n = d/|d|, with Hecker's
 // effective mass 1/mA + 1/mB + perpDot(rA,n)²/IA + perpDot(rB,n)²/IB. Rigid (a rod of `length`)
-// when hertz = 0; otherwise a spring, kept between minLength and maxLength by one-sided rows.
+// when hertz = 0; otherwise a spring, kept between minLength and maxLength by one-sided rows. The
+// rows are written once over a lane type F, for one joint and for blocks of four
+// (joint_solver_wide.hpp).
 #include <cmath>
+#include <cstddef>
 
-#include "core/joint_rows.hpp"
+#include "core/joint_distance.hpp"
+#include "core/joint_solver_wide.hpp"
 #include "core/joint_type.hpp"
 #include "core/world_impl.hpp"
 
@@ -11,30 +15,89 @@ namespace perpdot {
 
 namespace {
 
-struct DistanceJoint {
-    float length = 1, minLength = 0, maxLength = 0;
-    float hertz = 0, dampingRatio = 0;
-    Softness spring;
-    Vec2 axis;            // B's anchor from A's, unit, at step start
-    float axialMass = 0;
-    float impulse = 0, lowerImpulse = 0, upperImpulse = 0;
+// The distance joint's rows: the row along d/|d|, rigid or a spring by lane, then where the joint
+// is a spring (its optional rows, gathered and solved where optionalRows) the min and max rows.
+struct DistanceRowSet {
+    template <class F>
+    struct Rows {
+        Vec2T<F> anchorA, anchorB;  // rA, rB at step start
+        Vec2T<F> deltaCenter;       // cB − cA at step start
+        F impulse{}, lowerImpulse{}, upperImpulse{};  // λ of the row, of the min and max rows
+        F restLength{};             // `length`
+        F axialMass{};              // along the axis at step start
+        Vec2T<F> axis;              // d/|d| at step start (for store: the reaction's direction)
+        SoftnessT<F> spring;        // the spring's ({0, 1, 0} where hertz = 0)
+        // Gathered where optionalRows: last, away from what every block reads.
+        F springy{};                // 1 where hertz > 0, else 0
+        F minLength{}, maxLength{};
+    };
+
+    static bool optionalRows(const PreparedJoint& j) { return j.data.as<DistanceJoint>().hertz > 0.0f; }
+    static bool usesRotation(bool) { return false; }
+
+    template <std::size_t lanes>
+    static void gather(const PreparedJoint& j, RowLane<lanes> out, bool optionalRows) {
+        using R = Rows<float>;
+        const DistanceJoint& s = j.data.as<DistanceJoint>();
+        gatherFrame<R>(j, out);
+        out.set(offsetof(R, impulse), s.impulse);
+        out.set(offsetof(R, lowerImpulse), s.lowerImpulse);
+        out.set(offsetof(R, upperImpulse), s.upperImpulse);
+        out.set(offsetof(R, restLength), s.length);
+        out.set(offsetof(R, axialMass), s.axialMass);
+        out.set(offsetof(R, axis), s.axis);
+        out.set(offsetof(R, spring), s.spring);
+        if (!optionalRows) return;
+        out.set(offsetof(R, springy), s.hertz > 0.0f ? 1.0f : 0.0f);
+        out.set(offsetof(R, minLength), s.minLength);
+        out.set(offsetof(R, maxLength), s.maxLength);
+    }
+
+    // Re-apply last step's impulses (the row's, the min row's, the max row's) along d/|d| now.
+    template <class F>
+    static void warmStart(const Rows<F>& r, JointPairT<F>& p) {
+        const JointFrameT<F> f = currentFrame(p, r.anchorA, r.anchorB, r.deltaCenter);
+        applyRow(p, linearRow<F>(f.rA, f.rB, normalize(f.d)), r.impulse + r.lowerImpulse - r.upperImpulse);
+    }
+
+    // One pass on |d| now: the row holds it at `length` (rigid, or the spring's softness); a spring
+    // then keeps it ≥ minLength and ≤ maxLength.
+    template <class F>
+    static void solve(Rows<F>& r, JointPairT<F>& p, const StepContext& ctx, bool useBias, bool optionalRows) {
+        const JointFrameT<F> f = currentFrame(p, r.anchorA, r.anchorB, r.deltaCenter);
+        const F length = simd::sqrt(dot(f.d, f.d));
+        const RowT<F> row = linearRow<F>(f.rA, f.rB, normalize(f.d));
+        const Softness rigid = rigidSoftness(ctx, useBias);
+        if (!optionalRows) {
+            solveRow(p, row, r.axialMass, length - r.restLength, everyLane<F>(rigid), r.impulse);
+            return;
+        }
+        const simd::MaskOf<F> springy = r.springy != F(0.0f);
+        solveRow(p, row, r.axialMass, length - r.restLength, selectSoftness<F>(springy, r.spring, rigid), r.impulse);
+        solveWhere(
+            springy, p,
+            [&] {
+                solveLimitRow(p, row, r.axialMass, length - r.minLength, ctx, useBias, r.lowerImpulse);
+                solveLimitRow(p, negated(row), r.axialMass, r.maxLength - length, ctx, useBias, r.upperImpulse);
+            },
+            r.lowerImpulse, r.upperImpulse);
+    }
+
+    // The impulses, and what prepareDistance wrote (snapshots carry it).
+    template <std::size_t lanes>
+    static void store(RowLane<lanes, const float> rows, JointData& data, bool) {
+        using R = Rows<float>;
+        DistanceJoint& s = data.as<DistanceJoint>();
+        s.axis = rows.vec(offsetof(R, axis));
+        s.axialMass = rows[offsetof(R, axialMass)];
+        s.spring = rows.softness(offsetof(R, spring));
+        s.impulse = rows[offsetof(R, impulse)];
+        s.lowerImpulse = rows[offsetof(R, lowerImpulse)];
+        s.upperImpulse = rows[offsetof(R, upperImpulse)];
+    }
 };
 
-static_assert(reviewedLayout<DistanceJoint, 56>);
-constexpr auto fields(const DistanceJoint*) {
-    using J = DistanceJoint;
-    return std::tuple{field("length", &J::length).anyBits(),
-                      field("minLength", &J::minLength).anyBits(),
-                      field("maxLength", &J::maxLength).anyBits(),
-                      field("hertz", &J::hertz).anyBits(),
-                      field("dampingRatio", &J::dampingRatio).anyBits(),
-                      field("spring", &J::spring).anyBits(),
-                      field("axis", &J::axis).anyBits(),
-                      field("axialMass", &J::axialMass).anyBits(),
-                      field("impulse", &J::impulse).anyBits(),
-                      field("lowerImpulse", &J::lowerImpulse).anyBits(),
-                      field("upperImpulse", &J::upperImpulse).anyBits()};
-}
+constexpr JointLaneStages distanceLanes = jointLaneStages<DistanceRowSet>();
 
 }  // namespace
 
@@ -63,32 +126,13 @@ void prepareDistance(PreparedJoint& j, const StepContext& ctx, const Body&, cons
     if (!ctx.enableWarmStarting) s.impulse = s.lowerImpulse = s.upperImpulse = 0.0f;
 }
 
-void warmStartDistance(PreparedJoint& j, JointPair& p) {
-    const DistanceJoint& s = j.data.as<DistanceJoint>();
-    const JointFrame f = currentFrame(j, p);
-    applyRow(p, linearRow(f.rA, f.rB, normalize(f.d)), s.impulse + s.lowerImpulse - s.upperImpulse);
-}
-
-void solveDistance(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool useBias) {
-    DistanceJoint& s = j.data.as<DistanceJoint>();
-    const JointFrame f = currentFrame(j, p);
-    const float length = std::sqrt(lengthSquared(f.d));
-    const Row row = linearRow(f.rA, f.rB, normalize(f.d));
-    if (s.hertz == 0.0f) {
-        solveRow(p, row, s.axialMass, length - s.length, rigidSoftness(ctx, useBias), s.impulse);
-        return;
-    }
-    solveRow(p, row, s.axialMass, length - s.length, s.spring, s.impulse);
-    solveLimitRow(p, row, s.axialMass, length - s.minLength, ctx, useBias, s.lowerImpulse);
-    solveLimitRow(p, negated(row), s.axialMass, s.maxLength - length, ctx, useBias, s.upperImpulse);
-}
-
 JointReaction reactionDistance(const Joint& j) {
     const DistanceJoint& s = j.data.as<DistanceJoint>();
     return {(s.impulse + s.lowerImpulse - s.upperImpulse) * s.axis, 0.0f};
 }
 
 template JointId World::createJoint(const DistanceJointDef&);
-extern const JointKind distanceKind = jointKind<DistanceJoint>({prepareDistance, warmStartDistance, solveDistance, reactionDistance});
+extern const JointKind distanceKind = jointKind<DistanceJoint>(
+    {prepareDistance, warmStartJoint<DistanceRowSet>, solveJoint<DistanceRowSet>, reactionDistance, &distanceLanes});
 
 }  // namespace perpdot

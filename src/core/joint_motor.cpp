@@ -1,10 +1,13 @@
 // Motor joint: drives B's origin to the point `linearOffset` of A's frame and θB − θA to
 // `angularOffset`, each at the speed correctionFactor·C/h (a share of the error per step, as in
 // Box2D; per substep it overshot the target by 0.8 m in a cross-check), impulses capped by maxForce·hs
-// and maxTorque·hs. Rows: the point rows and the angular row of the weld, used as motors.
+// and maxTorque·hs. Rows: the point rows and the angular row of the weld, used as motors, written
+// once over a lane type F, for one joint and for blocks of four (joint_solver_wide.hpp).
 #include <cmath>
+#include <cstddef>
 
-#include "core/joint_rows.hpp"
+#include "core/joint_motor.hpp"
+#include "core/joint_solver_wide.hpp"
 #include "core/joint_type.hpp"
 #include "core/world_impl.hpp"
 
@@ -12,23 +15,59 @@ namespace perpdot {
 
 namespace {
 
-struct MotorJoint {
-    float maxForce = 0, maxTorque = 0, correctionFactor = 0;
-    float axialMass = 0;
-    Vec2 linearImpulse;
-    float angularImpulse = 0;
+// The motor joint's rows: the angle row, then the point rows, each a motor with a capped impulse.
+struct MotorRowSet {
+    template <class F>
+    struct Rows {
+        Vec2T<F> anchorA, anchorB;  // rA (to the target point), rB (to B's origin) at step start
+        Vec2T<F> deltaCenter;       // cB − cA at step start
+        Vec2T<F> linearImpulse;     // λ of the point rows
+        F angularImpulse{};         // λ of the angle row
+        F deltaAngle{};             // θB − θA − angularOffset at step start
+        F axialMass{};              // 1 / (1/IA + 1/IB)
+        F correctionFactor{}, maxForce{}, maxTorque{};
+    };
+
+    static bool optionalRows(const PreparedJoint&) { return false; }
+    static bool usesRotation(bool) { return true; }
+
+    template <std::size_t lanes>
+    static void gather(const PreparedJoint& j, RowLane<lanes> out, bool) {
+        using R = Rows<float>;
+        const MotorJoint& s = j.data.as<MotorJoint>();
+        gatherPointAndAngle<R>(j, s, out);
+        out.set(offsetof(R, correctionFactor), s.correctionFactor);
+        out.set(offsetof(R, maxForce), s.maxForce);
+        out.set(offsetof(R, maxTorque), s.maxTorque);
+    }
+
+    // Re-apply last step's impulses: λ at the anchors, then the angle's on ωB − ωA.
+    template <class F>
+    static void warmStart(const Rows<F>& r, JointPairT<F>& p) {
+        warmStartPointAndAngle(r, p);
+    }
+
+    // One pass: the angle row drives θ = (θB − θA − angularOffset)₀ + p.rotation at −rate·θ
+    // (|λ| ≤ maxTorque·hs), then the point rows C = pB − pA at bias rate `rate` (|λ| ≤ maxForce·hs);
+    // rate = correctionFactor/h.
+    template <class F>
+    static void solve(Rows<F>& r, JointPairT<F>& p, const StepContext& ctx, bool, bool) {
+        const F rate = r.correctionFactor * F(ctx.invH);
+        solveMotorRow(p, angularRowOf<F>(), r.axialMass, -rate * (r.deltaAngle + p.rotation), r.maxTorque * F(ctx.hs),
+                      r.angularImpulse);
+        const JointFrameT<F> f = currentFrame(p, r.anchorA, r.anchorB, r.deltaCenter);
+        solvePointRows(p, f.rA, f.rB, f.d, SoftnessT<F>{rate, F(1.0f), F(0.0f)}, r.linearImpulse, r.maxForce * F(ctx.hs));
+    }
+
+    // The impulses, and what prepareMotor wrote (snapshots carry it).
+    template <std::size_t lanes>
+    static void store(RowLane<lanes, const float> rows, JointData& data, bool) {
+        using R = Rows<float>;
+        storePointAndAngle<R>(rows, data.as<MotorJoint>());
+    }
 };
 
-static_assert(reviewedLayout<MotorJoint, 28>);
-constexpr auto fields(const MotorJoint*) {
-    using J = MotorJoint;
-    return std::tuple{field("maxForce", &J::maxForce).anyBits(),
-                      field("maxTorque", &J::maxTorque).anyBits(),
-                      field("correctionFactor", &J::correctionFactor).anyBits(),
-                      field("axialMass", &J::axialMass).anyBits(),
-                      field("linearImpulse", &J::linearImpulse).anyBits(),
-                      field("angularImpulse", &J::angularImpulse).anyBits()};
-}
+constexpr JointLaneStages motorLanes = jointLaneStages<MotorRowSet>();
 
 }  // namespace
 
@@ -57,24 +96,10 @@ void prepareMotor(PreparedJoint& j, const StepContext& ctx, const Body&, const B
     }
 }
 
-void warmStartMotor(PreparedJoint& j, JointPair& p) {
-    const MotorJoint& s = j.data.as<MotorJoint>();
-    const JointFrame f = currentFrame(j, p);
-    applyPoint(p, f.rA, f.rB, s.linearImpulse);
-    applyRow(p, angularRow, s.angularImpulse);
-}
-
-void solveMotor(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool) {
-    MotorJoint& s = j.data.as<MotorJoint>();
-    const float rate = s.correctionFactor * ctx.invH;
-    solveMotorRow(p, angularRow, s.axialMass, -rate * currentAngle(j, p), s.maxTorque * ctx.hs, s.angularImpulse);
-    const JointFrame f = currentFrame(j, p);
-    solvePointRows(p, f.rA, f.rB, f.d, Softness{.biasRate = rate}, s.linearImpulse, s.maxForce * ctx.hs);
-}
-
 JointReaction reactionMotor(const Joint& j) { return {j.data.as<MotorJoint>().linearImpulse, j.data.as<MotorJoint>().angularImpulse}; }
 
 template JointId World::createJoint(const MotorJointDef&);
-extern const JointKind motorKind = jointKind<MotorJoint>({prepareMotor, warmStartMotor, solveMotor, reactionMotor});
+extern const JointKind motorKind = jointKind<MotorJoint>(
+    {prepareMotor, warmStartJoint<MotorRowSet>, solveJoint<MotorRowSet>, reactionMotor, &motorLanes});
 
 }  // namespace perpdot

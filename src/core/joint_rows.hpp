@@ -212,26 +212,32 @@ inline void applyPoint(JointPairT<F>& p, Vec2T<F> rA, Vec2T<F> rB, Vec2T<F> P) {
 }
 
 // The accumulated impulse after one pass of the point constraint C = pB − pA:
-// λ − massScale·K⁻¹(v_rel + biasRate·C) − impulseScale·λ.
-template <class F>
-inline Vec2T<F> pointImpulse(const JointPairT<F>& p, Vec2T<F> rA, Vec2T<F> rB, Vec2T<F> C, const Softness& soft,
-                             Vec2T<F> lambda) {
+// λ − massScale·K⁻¹(v_rel + biasRate·C) − impulseScale·λ. Soft: a Softness, the same in every
+// lane, or a SoftnessT<F>, one per lane.
+template <class F, class Soft>
+inline Vec2T<F> pointImpulse(const JointPairT<F>& p, Vec2T<F> rA, Vec2T<F> rB, Vec2T<F> C, const Soft& soft, Vec2T<F> lambda) {
     const Vec2T<F> b = solve22(pointMass(p.m, rA, rB), relativeVelocity(p, rA, rB) + F(soft.biasRate) * C);
     return lambda - F(soft.massScale) * b - F(soft.impulseScale) * lambda;
 }
 
 // One pass of the point rows: λ becomes pointImpulse, and the bodies take the difference.
-template <class F>
-inline void solvePointRows(JointPairT<F>& p, Vec2T<F> rA, Vec2T<F> rB, Vec2T<F> C, const Softness& soft, Vec2T<F>& lambda) {
+template <class F, class Soft>
+inline void solvePointRows(JointPairT<F>& p, Vec2T<F> rA, Vec2T<F> rB, Vec2T<F> C, const Soft& soft, Vec2T<F>& lambda) {
     const Vec2T<F> newLambda = pointImpulse(p, rA, rB, C, soft, lambda);
     applyPoint(p, rA, rB, newLambda - lambda);
     lambda = newLambda;
 }
 
-// The same with the accumulated |λ| capped at maxImpulse (motor and mouse joints).
-inline void solvePointRows(JointPair& p, Vec2 rA, Vec2 rB, Vec2 C, const Softness& soft, Vec2& lambda, float maxImpulse) {
-    Vec2 newLambda = pointImpulse(p, rA, rB, C, soft, lambda);
-    if (lengthSquared(newLambda) > maxImpulse * maxImpulse) newLambda *= maxImpulse / length(newLambda);
+// The same with the accumulated |λ| capped at maxImpulse (motor and mouse joints): where
+// |λ|² > maxImpulse², λ·(maxImpulse/|λ|), a select where one joint branches.
+template <class F, class Soft>
+inline void solvePointRows(JointPairT<F>& p, Vec2T<F> rA, Vec2T<F> rB, Vec2T<F> C, const Soft& soft, Vec2T<F>& lambda, F maxImpulse) {
+    using simd::select;
+    Vec2T<F> newLambda = pointImpulse(p, rA, rB, C, soft, lambda);
+    const F squared = dot(newLambda, newLambda);
+    const simd::MaskOf<F> over = squared > maxImpulse * maxImpulse;
+    const F scale = maxImpulse / simd::sqrt(squared);
+    newLambda = {select(over, newLambda.x * scale, newLambda.x), select(over, newLambda.y * scale, newLambda.y)};
     applyPoint(p, rA, rB, newLambda - lambda);
     lambda = newLambda;
 }

@@ -9,7 +9,8 @@
 // lanes run the same operations in the same order as the scalar joint (no FMA, exact division), so
 // they agree bit for bit.
 //
-// A row set RowSet (joint_revolute.cpp, joint_weld.cpp, joint_prismatic.cpp, joint_wheel.cpp) has
+// A row set RowSet (joint_revolute.cpp, joint_weld.cpp, joint_prismatic.cpp, joint_wheel.cpp,
+// joint_distance.cpp, joint_motor.cpp) has
 //   template <class F> struct Rows;                  its fields, floats only (row_lanes.hpp)
 //   static bool optionalRows(const PreparedJoint&);   whether the joint has rows others of its type lack
 //   static bool usesRotation(bool optionalRows);      whether solve reads p.rotation
@@ -87,6 +88,34 @@ void gatherFrame(const PreparedJoint& j, RowLane<lanes> out) {
     out.set(offsetof(R, anchorA), j.anchorA);
     out.set(offsetof(R, anchorB), j.anchorB);
     out.set(offsetof(R, deltaCenter), j.deltaCenter);
+}
+
+// Point rows and one angle row (weld and motor joints), as R's linearImpulse, angularImpulse,
+// deltaAngle (θB − θA − θref at step start) and axialMass (the angle row's 1 / (1/IA + 1/IB))
+// after the frame, gathered from the prepared joint and its data s.
+template <class R, std::size_t lanes, class T>
+void gatherPointAndAngle(const PreparedJoint& j, const T& s, RowLane<lanes> out) {
+    gatherFrame<R>(j, out);
+    out.set(offsetof(R, linearImpulse), s.linearImpulse);
+    out.set(offsetof(R, angularImpulse), s.angularImpulse);
+    out.set(offsetof(R, deltaAngle), j.deltaAngle);
+    out.set(offsetof(R, axialMass), s.axialMass);
+}
+
+// Their warm start: last step's λ at the anchors, then the angle's on ωB − ωA.
+template <class Rows, class F>
+void warmStartPointAndAngle(const Rows& r, JointPairT<F>& p) {
+    const JointFrameT<F> f = currentFrame(p, r.anchorA, r.anchorB, r.deltaCenter);
+    applyPoint(p, f.rA, f.rB, r.linearImpulse);
+    applyRow(p, angularRowOf<F>(), r.angularImpulse);
+}
+
+// And what goes back into the data: the impulses and the axial mass prepare wrote.
+template <class R, std::size_t lanes, class T>
+void storePointAndAngle(RowLane<lanes, const float> rows, T& s) {
+    s.axialMass = rows[offsetof(R, axialMass)];
+    s.linearImpulse = rows.vec(offsetof(R, linearImpulse));
+    s.angularImpulse = rows[offsetof(R, angularImpulse)];
 }
 
 // A motor's and limits' constants (joint_rows.hpp), gathered at `offset` in the rows.

@@ -44,8 +44,8 @@ struct JointPairT {
 using JointPair = JointPairT<float>;
 
 // A joint type's data, a struct only its file names (joint_type.hpp; the revolute, weld,
-// prismatic and wheel joints' joint_<type>.hpp share theirs with the tests, the trees and the gear
-// joint): `type` in the Joint says which one lives here. The bytes start at zero; emplace<T>()
+// prismatic, wheel, distance and motor joints' joint_<type>.hpp share theirs with the tests, the
+// trees and the gear joint): `type` in the Joint says which one lives here. The bytes start at zero; emplace<T>()
 // starts a value-initialised T (createJoint, the snapshot reader), as<T>() is the live T. Both
 // check that T fits and is trivially copyable, since the store copies joints bytewise (which
 // carries the T along: C++20's implicit object creation).

@@ -35,11 +35,7 @@ struct WeldRowSet {
     static void gather(const PreparedJoint& j, RowLane<lanes> out, bool) {
         using R = Rows<float>;
         const WeldJoint& s = j.data.as<WeldJoint>();
-        gatherFrame<R>(j, out);
-        out.set(offsetof(R, linearImpulse), s.linearImpulse);
-        out.set(offsetof(R, angularImpulse), s.angularImpulse);
-        out.set(offsetof(R, deltaAngle), j.deltaAngle);
-        out.set(offsetof(R, axialMass), s.axialMass);
+        gatherPointAndAngle<R>(j, s, out);
         out.set(offsetof(R, spring), s.hertz > 0.0f ? 1.0f : 0.0f);
         out.set(offsetof(R, angularSoftness), s.angularSoftness);
     }
@@ -47,9 +43,7 @@ struct WeldRowSet {
     // Re-apply last step's impulses: λ at the anchors, then the angle's on ωB − ωA.
     template <class F>
     static void warmStart(const Rows<F>& r, JointPairT<F>& p) {
-        const JointFrameT<F> f = currentFrame(p, r.anchorA, r.anchorB, r.deltaCenter);
-        applyPoint(p, f.rA, f.rB, r.linearImpulse);
-        applyRow(p, angularRowOf<F>(), r.angularImpulse);
+        warmStartPointAndAngle(r, p);
     }
 
     // One pass: the angle row on θ = (θB − θA − θref)₀ + p.rotation, then the point rows on
@@ -68,10 +62,8 @@ struct WeldRowSet {
     static void store(RowLane<lanes, const float> rows, JointData& data, bool) {
         using R = Rows<float>;
         WeldJoint& s = data.as<WeldJoint>();
-        s.axialMass = rows[offsetof(R, axialMass)];
+        storePointAndAngle<R>(rows, s);
         s.angularSoftness = rows.softness(offsetof(R, angularSoftness));
-        s.linearImpulse = rows.vec(offsetof(R, linearImpulse));
-        s.angularImpulse = rows[offsetof(R, angularImpulse)];
     }
 };
 

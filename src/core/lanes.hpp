@@ -54,6 +54,15 @@ template <class F>
 F perpDot(Vec2Lanes<F> a, Vec2Lanes<F> b) {
     return a.x * b.y - a.y * b.x;
 }
+// a/|a|, or zero where |a| ≤ 1e-12: math.hpp's normalize lane by lane (the same operations, and
+// +0 where it returns Vec2{}).
+template <class F>
+Vec2Lanes<F> normalize(Vec2Lanes<F> a) {
+    const F len = simd::sqrt(dot(a, a));
+    const auto unit = len > F(1.0e-12f);
+    const F inverse = F(1.0f) / len;
+    return {simd::select(unit, inverse * a.x, F(0.0f)), simd::select(unit, inverse * a.y, F(0.0f))};
+}
 // v_B = v + ω perp(r).
 template <class F>
 Vec2Lanes<F> pointVelocity(Vec2Lanes<F> v, F omega, Vec2Lanes<F> r) {

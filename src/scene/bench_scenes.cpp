@@ -206,6 +206,104 @@ Scene jointRack() {
     return s;
 }
 
+// Distance joints in bulk, for their four-wide rows: 32 ropes of 16 rigid links (rods, hertz 0)
+// released horizontal from a ceiling, every fourth ending in a heavy ball; and 12 soft blobs of
+// 5 × 5 discs held by distance joints along the grid's edges and diagonals (72 each), dropped on
+// the ground: springs of 4 or 8 Hz kept between 80 % and 120 % of their rest lengths by the min
+// and max rows, every fourth blob a rigid truss. Sleep off.
+Scene distanceNet() {
+    Scene s;
+    s.steps = 500;
+    addGround(s, 200.0f);
+    addBody(s, {.name = "ceiling", .type = BodyType::Static});
+    auto name = [](const char* kind, int k, int i) { return kind + std::to_string(k) + '_' + std::to_string(i); };
+
+    const int ropes = 32, links = 16;
+    const float link = 0.4f;
+    SceneShape bead = circleShape(0.1f);
+    bead.filter.category = 0x0008;  // the ropes pass through each other
+    bead.filter.mask = 0xFFF7;
+    for (int k = 0; k < ropes; ++k) {
+        const Vec2 top{-100.0f + 6.5f * static_cast<float>(k), 30.0f};
+        for (int i = 0; i < links; ++i) {
+            const Vec2 p = top + Vec2{link * static_cast<float>(i + 1), 0.0f};
+            SceneShape shape = bead;
+            if (i == links - 1 && k % 4 == 0) shape.radius = 0.3f, shape.density = 5.0f;
+            addBody(s, {.name = name("rope", k, i), .position = p, .allowSleep = false, .shapes = {shape}});
+            s.joints.push_back({.type = JointType::Distance, .bodyA = i == 0 ? "ceiling" : name("rope", k, i - 1),
+                                .bodyB = name("rope", k, i), .anchor = p - Vec2{link, 0.0f}, .anchorB = p});
+        }
+    }
+
+    const int blobs = 12, side = 5;
+    const float spacing = 0.4f;
+    for (int k = 0; k < blobs; ++k) {
+        const Vec2 corner{-100.0f + 16.0f * static_cast<float>(k), 3.0f + 2.0f * static_cast<float>(k % 3)};
+        auto at = [&](int x, int y) { return corner + Vec2{spacing * static_cast<float>(x), spacing * static_cast<float>(y)}; };
+        for (int y = 0; y < side; ++y)
+            for (int x = 0; x < side; ++x)
+                addBody(s, {.name = name("blob", k, y * side + x), .position = at(x, y), .allowSleep = false,
+                            .shapes = {circleShape(0.15f)}});
+        auto tie = [&](int x0, int y0, int x1, int y1) {
+            SceneJoint j{.type = JointType::Distance, .bodyA = name("blob", k, y0 * side + x0), .bodyB = name("blob", k, y1 * side + x1),
+                         .anchor = at(x0, y0), .anchorB = at(x1, y1)};
+            if (k % 4 != 3) {
+                const float rest = distance(at(x0, y0), at(x1, y1));
+                j.hertz = k % 2 == 0 ? 4.0f : 8.0f, j.dampingRatio = 0.3f;
+                j.minLength = 0.8f * rest, j.maxLength = 1.2f * rest;
+            }
+            s.joints.push_back(j);
+        };
+        for (int y = 0; y < side; ++y)
+            for (int x = 0; x < side; ++x) {
+                if (x + 1 < side) tie(x, y, x + 1, y);
+                if (y + 1 < side) tie(x, y, x, y + 1);
+                if (x + 1 < side && y + 1 < side) {
+                    tie(x, y, x + 1, y + 1);
+                    tie(x + 1, y, x, y + 1);
+                }
+            }
+    }
+    return s;
+}
+
+// Motor joints in bulk, for their four-wide rows: 20 × 20 boxes held by motor joints from the
+// ground, each driven to a point 0.5 m from where it starts and turned to an angle of its own (by
+// fours: a force above its weight, one below it, whose cap then holds, and as much torque as it
+// needs or a small one); and 100 carts on the ground, each carrying a box held by a motor joint
+// 1 m above it. Sleep off.
+Scene motorSwarm() {
+    Scene s;
+    s.steps = 500;
+    addGround(s, 100.0f);
+    const int grid = 20;
+    for (int k = 0; k < grid * grid; ++k) {
+        const int row = k / grid, column = k % grid;
+        const Vec2 p{-15.0f + 1.5f * static_cast<float>(column), 4.0f + 1.5f * static_cast<float>(row)};
+        const std::string name = "hover" + std::to_string(k);
+        addBody(s, {.name = name, .position = p, .allowSleep = false, .shapes = {boxShape(0.3f, 0.3f)}});
+        const float phase = 0.7f * static_cast<float>(k);
+        SceneJoint motor{.type = JointType::Motor, .bodyA = "ground", .bodyB = name};
+        motor.linearOffset = p + 0.5f * Vec2{std::cos(phase), std::sin(phase)};
+        motor.angularOffset = 0.4f * static_cast<float>(k % 5 - 2);
+        motor.maxForce = k % 2 == 0 ? 20.0f : 2.0f;  // a box weighs 3.6 N
+        motor.maxTorque = (k / 2) % 2 == 0 ? 10.0f : 0.05f;
+        s.joints.push_back(motor);
+    }
+    const int carts = 100;
+    for (int k = 0; k < carts; ++k) {
+        const float x = -90.0f + 1.8f * static_cast<float>(k);
+        const std::string cart = "cart" + std::to_string(k), load = "load" + std::to_string(k);
+        addBody(s, {.name = cart, .position = {x, 0.25f}, .allowSleep = false, .shapes = {boxShape(0.6f, 0.25f)}});
+        addBody(s, {.name = load, .position = {x, 1.25f}, .allowSleep = false, .shapes = {boxShape(0.2f, 0.2f)}});
+        SceneJoint motor{.type = JointType::Motor, .bodyA = cart, .bodyB = load};
+        motor.linearOffset = {0.0f, 1.0f};
+        motor.maxForce = 10.0f, motor.maxTorque = 1.0f;
+        s.joints.push_back(motor);
+    }
+    return s;
+}
+
 }  // namespace
 
 std::vector<BuiltinScene> benchScenes() {
@@ -226,6 +324,14 @@ std::vector<BuiltinScene> benchScenes() {
         {"joint_rack",
          "benchmark: 480 welded beam segments, 400 pistons on prismatic rails, 80 carts on wheel joints, sleep off, 500 steps",
          jointRack},
+        {"distance_net",
+         "benchmark: 32 ropes of 16 rigid distance links, 12 soft blobs of 25 discs on 864 springs with min and max "
+         "lengths (every fourth blob rigid), sleep off, 500 steps",
+         distanceNet},
+        {"motor_swarm",
+         "benchmark: 400 boxes driven by motor joints from the ground, 100 carts carrying a box on a motor joint, sleep "
+         "off, 500 steps",
+         motorSwarm},
     };
 }
 
