@@ -95,7 +95,7 @@ public:
     int createProxy(const AABB& aabb, ChildKey key, bool isStatic);
     void destroyProxy(int proxy);
     // Re-fits the proxy if `aabb` left its fat AABB (b2DynamicTree::MoveProxy: the new fat AABB is
-    // `aabb` grown by the 0.1 m margin and along the step's displacement, by at most one margin
+    // `aabb` grown by the 0.1 m margin and along the step's displacement, by at most two margins
     // more); returns whether it moved.
     bool moveProxy(int proxy, const AABB& aabb, Vec2 displacement);
     // True when moveProxy(proxy, aabb, displacement) would leave the trees as they are: the fat
