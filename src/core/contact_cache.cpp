@@ -117,7 +117,7 @@ Narrowphase collideContact(World::Impl& w, int index) {
                              .box2dMargin = collide::box2dSkin(sa.type) + collide::box2dSkin(sb.type),
                              .skinOffset = w.def.box2dSkin ? 0.0f : collide::skinOffset(sa.type) + collide::skinOffset(sb.type)};
     if (!reuseManifold(c, ba, bb, limits))
-        takeManifold(c, collision.collide(c.a, ba.xf, c.b, bb.xf, w.def.box2dSkin), ba, bb, isFlat(sa) && isFlat(sb));
+        takeManifold(c, collision.collide(c.a, ba.xf, c.b, bb.xf, w.def.box2dSkin), ba, bb, c.turnsA && c.turnsB);
     c.touching = c.pointCount > 0;
     return wasTouching ? Narrowphase::WasTouching : Narrowphase::WasNotTouching;
 }

@@ -7,9 +7,9 @@
 #pragma once
 
 #include "core/body_store.hpp"
-#include "core/step_scratch.hpp"
 #include "core/contact_solver_wide.hpp"
 #include "core/step_context.hpp"
+#include "core/step_scratch.hpp"
 #include "perpdot/world.hpp"
 
 namespace perpdot {

@@ -112,15 +112,13 @@ void layOutBlocks(World::Impl& w, const StepContext& ctx, const ColorStarts& sta
             Block& block = blocks[b];
             const int lanes = std::min(width, start[color + 1] - start[color] - width * (b - blockStart[color]));
             alignas(32) float present[2][width];  // 1 where a lane's point is a manifold point
+            const int* order = &s.contactOrder[start[color] + width * (b - blockStart[color])];  // the lanes' constraints
             // The lanes' contacts lie anywhere in the pool: ask for all of them before gathering
             // any, so that their cache misses overlap.
-            for (int lane = 0; lane < lanes; ++lane) {
-                const int constraint = s.contactOrder[start[color] + width * (b - blockStart[color]) + lane];
-                prefetchSolverFields<0>(w.contactCache.contacts[s.constraints[constraint].contact]);
-            }
+            for (int lane = 0; lane < lanes; ++lane) prefetchSolverFields<0>(w.contactCache.contacts[s.constraints[order[lane]].contact]);
             for (int lane = 0; lane < width; ++lane) {
                 const bool used = lane < lanes;
-                ContactConstraint* c = used ? &s.constraints[s.contactOrder[start[color] + width * (b - blockStart[color]) + lane]] : nullptr;
+                ContactConstraint* c = used ? &s.constraints[order[lane]] : nullptr;
                 block.contact[lane] = used ? c->contact : -1;
                 block.bodyA[lane] = used ? c->indexA : 0;  // an empty lane: the static slot
                 block.bodyB[lane] = used ? c->indexB : 0;

@@ -15,13 +15,13 @@ namespace perpdot {
 // body: it never moves, so rows against static bodies need no branches.
 using BodyState = BodyLanes<float>;
 
-// Velocity change a constrained body receives at the start of every substep:
-// v = dv + linearDamping·v, ω = dw + angularDamping·ω (a free body gets dv = 0, damping = 1).
 // 1/m and 1/I of a solver slot's body.
 struct InverseMass {
     float invMass = 0, invInertia = 0;
 };
 
+// Velocity change a constrained body receives at the start of every substep:
+// v = dv + linearDamping·v, ω = dw + angularDamping·ω (a free body gets dv = 0, damping = 1).
 struct SubstepForces {
     Vec2 dv;
     float dw = 0;
