@@ -4,6 +4,7 @@
 // order for any worker count.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <thread>
 #include <vector>
@@ -54,37 +55,36 @@ TEST(Workers, EveryWorkerCountGivesTheSameWorld) {
     }
 }
 
-// A game's job system: each task is cut into ranges of exactly minRange items, run by `threads`
-// std::threads, the ranges dealt out round-robin in reverse order.
+// A game's job system: each task starts at once, cut into ranges of exactly minRange items, run by
+// `threads` std::threads of its own, the ranges dealt out round-robin in reverse order; a task may
+// run while another is enqueued (the step keeps the broadphase's re-fits running beside its loops).
 struct GameJobs {
     int threads = 3;
     int tasks = 0;
-    struct Task {
-        TaskFn* fn;
-        int count, minRange;
-        void* context;
-    } pending{};
+    struct Running {
+        std::vector<std::thread> pool;
+    };
 
     static void* enqueue(TaskFn* fn, int count, int minRange, void* context, void* user) {
         auto* jobs = static_cast<GameJobs*>(user);
         ++jobs->tasks;
-        jobs->pending = {fn, count, minRange, context};
-        return &jobs->pending;
-    }
-    static void finish(void* handle, void* user) {
-        auto* jobs = static_cast<GameJobs*>(user);
-        const Task task = *static_cast<Task*>(handle);
-        const int ranges = (task.count + task.minRange - 1) / task.minRange;
-        std::vector<std::thread> pool;
-        for (int worker = 0; worker < jobs->threads; ++worker) {
-            pool.emplace_back([=] {
-                for (int r = ranges - 1 - worker; r >= 0; r -= jobs->threads) {
-                    const int begin = r * task.minRange;
-                    task.fn(begin, std::min(begin + task.minRange, task.count), worker, task.context);
+        auto* running = new Running;
+        const int ranges = (count + minRange - 1) / minRange;
+        const int threads = jobs->threads;
+        for (int worker = 0; worker < threads; ++worker) {
+            running->pool.emplace_back([=] {
+                for (int r = ranges - 1 - worker; r >= 0; r -= threads) {
+                    const int begin = r * minRange;
+                    fn(begin, std::min(begin + minRange, count), worker, context);
                 }
             });
         }
-        for (std::thread& t : pool) t.join();
+        return running;
+    }
+    static void finish(void* handle, void*) {
+        auto* running = static_cast<Running*>(handle);
+        for (std::thread& t : running->pool) t.join();
+        delete running;
     }
 };
 

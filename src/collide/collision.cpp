@@ -224,6 +224,14 @@ AABB CollisionSystem::fatAABB(int proxy) const {
     return {fromB2(box.lowerBound), fromB2(box.upperBound)};
 }
 
+float CollisionSystem::room(int proxy, const AABB& aabb) const {
+    const b2AABB& fat = impl_->tree.GetFatAABB(proxy);
+    return std::min(std::min(aabb.lower.x - fat.lowerBound.x, aabb.lower.y - fat.lowerBound.y),
+                    std::min(fat.upperBound.x - aabb.upper.x, fat.upperBound.y - aabb.upper.y));
+}
+
+float CollisionSystem::refitRoom() { return 0.5f * b2_aabbExtension; }
+
 // The tree fattens what it is given, so insert `fat` itself (every ancestor then contains the
 // fattened box, hence `fat`) and set the leaf's own box to `fat`. GetFatAABB returns a const
 // reference to that box in the tree's (non-const) node storage, so writing through it is defined.

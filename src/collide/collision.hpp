@@ -103,6 +103,10 @@ public:
     // same float operations). Reads only, so workers may ask side by side between tree updates.
     bool proxyKeeps(int proxy, const AABB& aabb, Vec2 displacement) const;
     AABB fatAABB(int proxy) const;
+    // The least distance from aabb to a side of the proxy's fat AABB (negative: aabb is outside).
+    float room(int proxy, const AABB& aabb) const;
+    // The room a re-fit leaves at least (it adds the margin on every side), with rounding to spare.
+    static float refitRoom();
     // A new proxy whose fat AABB is exactly `fat` (a snapshot's), marked as moved like createProxy's.
     int restoreProxy(const AABB& fat, ChildKey key, bool isStatic);
     // Whether `proxy` is already what restoreProxy(fat, key, isStatic) would make: its key, the same

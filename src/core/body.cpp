@@ -184,7 +184,7 @@ void World::setTransform(BodyId id, Vec2 position, float angle) {
     b.xf = {position, Rot::fromAngle(angle)};
     b.angle = angle;
     b.center = transformPoint(b.xf, b.localCenter);
-    w.synchronizeProxies(id.index, {});
+    w.synchronizeProxies(id.index, b.xf, {});
     w.wake(id.index);
 }
 

@@ -143,8 +143,13 @@ void updatePairs(World::Impl& w) {
     // Every proxy that moved out of its fat AABB (or is new) looks for overlapping proxies, unless
     // its filter rejects every shape (pairWanted would refuse all it finds).
     // The workers query the tree side by side, each into its own list.
+    // Their lists hold as many pairs as the contact pool has slots: more would grow the pool anyway.
+    const size_t most = static_cast<size_t>(cache.contacts.capacity());
     cache.newPairsOf.resize(static_cast<size_t>(w.workers.count()));
-    for (std::vector<NewPair>& found : cache.newPairsOf) found.clear();
+    for (std::vector<NewPair>& found : cache.newPairsOf) {
+        found.clear();
+        found.reserve(most);
+    }
     w.workers.parallelFor(static_cast<int>(w.movedProxies.size()), 16, [&](int begin, int end, int worker) {
         std::vector<NewPair>& found = cache.newPairsOf[static_cast<size_t>(worker)];
         for (int k = begin; k < end; ++k) {
@@ -170,6 +175,7 @@ void updatePairs(World::Impl& w) {
     });
     std::vector<NewPair>& newPairs = cache.newPairs;
     newPairs.clear();
+    newPairs.reserve(most);
     for (const std::vector<NewPair>& found : cache.newPairsOf) newPairs.insert(newPairs.end(), found.begin(), found.end());
     for (int proxy : w.movedProxies) collision.clearMoved(proxy);
     w.movedProxies.clear();

@@ -323,7 +323,7 @@ void solveMovingImpacts(World::Impl& w, const StepContext& ctx) {
         b.v = m.v;
         b.w = m.w;
         if (m.frozen) w.freeze(m.body);
-        w.synchronizeProxies(m.body, b.center - m.stepStart);
+        w.synchronizeProxies(m.body, b.xf, b.center - m.stepStart);
     }
 }
 

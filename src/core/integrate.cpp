@@ -137,7 +137,9 @@ void finalizeBodies(World::Impl& w, const StepContext& ctx) {
                 continue;
             }
             moveTo(b, s, c1, a1);
-            w.scratch.bodyMotion[k] = w.proxiesKeep(w.scratch.awakeBodies[k], s.dp) ? MovedInside : Moved;
+            const bool inside = staysInside(w.scratch.predictedPoses[k], c1, b.xf.q) ||
+                                w.proxiesKeep(w.scratch.awakeBodies[k], b.xf, s.dp);
+            w.scratch.bodyMotion[k] = inside ? MovedInside : Moved;
         }
     });
     w.scratch.movers.clear();
@@ -153,7 +155,7 @@ void finalizeBodies(World::Impl& w, const StepContext& ctx) {
         anyBullet = anyBullet || b.bullet;
         if (w.scratch.bodyMotion[k] == MovedInside) continue;
         if (w.scratch.bodyMotion[k] == Moved) {
-            w.synchronizeProxies(index, s.dp);
+            w.synchronizeProxies(index, b.xf, s.dp);
             continue;
         }
         const Vec2 c0 = b.center;
@@ -162,7 +164,7 @@ void finalizeBodies(World::Impl& w, const StepContext& ctx) {
         w.scratch.movers.push_back({.body = index, .c0 = c0, .a0 = a0, .v = b.v, .w = b.w, .stepStart = c0, .fast = true});
         if (!b.bullet) {
             solveContinuous(w, index, c0, a0);
-            w.synchronizeProxies(index, b.center - c0);
+            w.synchronizeProxies(index, b.xf, b.center - c0);
         }
         w.scratch.movers.back().c1 = b.center;
         w.scratch.movers.back().a1 = b.angle;

@@ -141,33 +141,48 @@ void World::Impl::destroyProxies(int index) {
 
 namespace {
 
-// visit(proxy, aabb) for every proxy of the body, with its box at the body's transform, until
-// visit returns false; returns whether it never did.
+// visit(proxy, aabb) for every proxy of the body, with its box at transform xf, until visit
+// returns false; returns whether it never did.
 template <class Visit>
-bool everyProxy(const World::Impl& w, int body, const Visit& visit) {
-    const Body& b = w.bodies[body];
-    for (int s : b.shapes) {
+bool everyProxy(const World::Impl& w, int body, const Transform& xf, const Visit& visit) {
+    for (int s : w.bodies[body].shapes) {
         const std::vector<int>& proxies = w.shapes[s].proxies;
         for (int child = 0; child < static_cast<int>(proxies.size()); ++child)
-            if (!visit(proxies[child], w.collision.computeAABB(s, child, b.xf))) return false;
+            if (!visit(proxies[child], w.collision.computeAABB(s, child, xf))) return false;
     }
     return true;
 }
 
 }  // namespace
 
-// Re-fit the body's proxies to its new transform; proxies that left their fat AABB are queried
-// for new pairs next step.
-void World::Impl::synchronizeProxies(int index, Vec2 displacement) {
-    everyProxy(*this, index, [&](int proxy, const AABB& aabb) {
-        if (collision.moveProxy(proxy, aabb, displacement)) movedProxies.push_back(proxy);
+// Re-fit the body's proxies to transform xf; proxies that left their fat AABB are queried for new
+// pairs next step (once, however often they move before it).
+void World::Impl::synchronizeProxies(int index, const Transform& xf, Vec2 displacement) {
+    everyProxy(*this, index, xf, [&](int proxy, const AABB& aabb) {
+        const bool queued = collision.wasMoved(proxy);
+        if (collision.moveProxy(proxy, aabb, displacement) && !queued) movedProxies.push_back(proxy);
         return true;
     });
 }
 
-bool World::Impl::proxiesKeep(int index, Vec2 displacement) const {
-    return everyProxy(*this, index,
+bool World::Impl::proxiesKeep(int index, const Transform& xf, Vec2 displacement) const {
+    return everyProxy(*this, index, xf,
                       [&](int proxy, const AABB& aabb) { return collision.proxyKeeps(proxy, aabb, displacement); });
+}
+
+World::Impl::ProxyRoom World::Impl::proxyRoom(int index, const Transform& xf, Vec2 displacement) const {
+    ProxyRoom r;
+    everyProxy(*this, index, xf, [&](int proxy, const AABB& aabb) {
+        const bool keeps = collision.proxyKeeps(proxy, aabb, displacement);
+        r.keep = r.keep && keeps;
+        r.room = std::min(r.room, keeps ? collision.room(proxy, aabb) : collide::CollisionSystem::refitRoom());
+        return true;
+    });
+    for (int s : bodies[index].shapes) {
+        r.reach = std::max(r.reach, shapes[s].maxExtent);
+        if (shapes[s].maxExtent == 0.0f) r.room = -1.0f;  // segments and chains have none
+    }
+    return r;
 }
 
 ShapeId World::createShape(BodyId body, const ShapeDef& def, const Circle& circle) { return create(*impl_, body, def, circle); }

@@ -20,6 +20,13 @@ void integrateVelocities(World::Impl& w, const StepContext& ctx);
 void applySubstepForces(World::Impl& w, int begin, int end);
 // Integrate positions: x += hs v, θ += hs ω, solver slots [begin, end).
 void integratePositions(World::Impl& w, const StepContext& ctx, int begin, int end);
+// Re-fit ahead (refit_ahead.cpp): start re-fitting, on a worker of its own, the proxies of the
+// bodies whose predicted end pose leaves their fat AABB; finish before the bodies take their poses.
+void startTreeRefit(World::Impl& w, const StepContext& ctx);
+void finishTreeRefit(World::Impl& w);
+// Whether a body that ends at (center, q) still has every box inside its fat AABB, by how far it
+// strayed from its predicted pose p (false when that does not tell).
+bool staysInside(const PredictedPose& p, Vec2 center, Rot q);
 // Store the solver state in the bodies and sweep the fast ones (continuous collision).
 void finalizeBodies(World::Impl& w, const StepContext& ctx);
 // Sleep: islands of touching contacts and joints whose every body was still for timeToSleep fall

@@ -38,6 +38,11 @@ void World::step(float timeStep) {
         explicit Lock(bool& l) : locked(l) { locked = true; }
         ~Lock() { locked = false; }
     } lock(w.locked);
+    // Waits for the tree's re-fits however step() ends (finishTreeRefit is the usual wait).
+    struct RefitWait {
+        World::Impl& w;
+        ~RefitWait() { finishTreeRefit(w); }
+    } refitWait{w};
     w.events.beginStep();
 
     updatePairs(w);     // pairs: proxies that left their fat AABB meet new partners
@@ -45,6 +50,7 @@ void World::step(float timeStep) {
 
     StepContext ctx = makeStepContext(w, timeStep);
     integrateVelocities(w, ctx);
+    startTreeRefit(w, ctx);  // the broadphase follows the predicted poses on a worker of its own
     prepareJoints(w, ctx);  // prepare: effective masses, anchors, warm-start impulses
     prepareContacts(w, ctx);
     // Per substep: its forces, warm start, solve with soft bias, x += hs v, relax without bias;
@@ -56,6 +62,7 @@ void World::step(float timeStep) {
     storeContactImpulses(w);  // store: impulses for the next step's warm start, from the lanes
     storeJointImpulses(w, ctx);
     reportHitEvents(w);
+    finishTreeRefit(w);
     finalizeBodies(w, ctx);  // positions back into the bodies; continuous collision
     breakJoints(w);          // joints whose reaction passed their break limits
 

@@ -55,6 +55,17 @@ struct MoverPair {
     collide::ChildKey keyA, keyB;  // the children that meet first
 };
 
+// A body's pose predicted for the step's end from its velocity, whether its proxies re-fit to it
+// while the step is solved, and how far the real end pose may stray from it with every box still
+// inside its fat AABB (refit_ahead.cpp).
+struct PredictedPose {
+    Transform xf;
+    Vec2 center, displacement;
+    float reach = 0;  // of its shapes about the centre of mass
+    float room = -1;  // the least room its boxes have inside their fat AABBs; negative: unknown
+    bool refit = false;
+};
+
 struct StepScratch {
     // Solver arrays.
     std::vector<BodyState> states;
@@ -62,6 +73,7 @@ struct StepScratch {
     std::vector<uint8_t> touchingBodies;  // by body index: has a touching contact (integrateVelocities)
     std::vector<float> stepRotation;    // Δθ of states[i], summed over substeps
     std::vector<uint8_t> bodyMotion;    // finalizeBodies scratch, by awake body: its Motion (integrate.cpp)
+    std::vector<PredictedPose> predictedPoses;  // by awake body
     std::vector<SubstepForces> substepForces;  // of states[i]
     std::vector<InverseMass> inverseMasses;    // of states[i] (slot 0: none): dense, for gathering rows
     std::vector<BodyState> freeVelocities;     // of states[i]: v and ω at the step's end without contacts (contact_solver.cpp)

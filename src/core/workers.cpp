@@ -7,6 +7,7 @@
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
+#include <tbb/task_group.h>
 
 #include "perpdot/error.hpp"
 
@@ -16,6 +17,7 @@ namespace perpdot {
 // Workers beyond it still take part (SolverStages), one after another.
 struct Workers::Arena {
     tbb::task_arena arena;
+    tbb::task_group aside;  // runAside's task: spawned into the arena, taken by an idle worker
     explicit Arena(int workers) : arena(std::min(workers, tbb::info::default_concurrency())) {}
 };
 
@@ -41,6 +43,29 @@ void Workers::run(TaskFn* task, int itemCount, int minRange, void* context) {
             task(r.begin(), r.end(), tbb::this_task_arena::current_thread_index(), context);
         });
     });
+}
+
+void Workers::runAside(TaskFn* task, void* context) {
+    if (count_ == 1) {
+        task(0, 1, 0, context);
+        return;
+    }
+    aside_ = true;
+    if (enqueue_ != nullptr)
+        asideHandle_ = enqueue_(task, 1, 1, context, userContext_);  // nullptr: it ran inside
+    else
+        arena_->arena.execute([&] { arena_->aside.run([task, context] { task(0, 1, 0, context); }); });
+}
+
+// Waiting in the arena: a task no worker took yet runs here.
+void Workers::awaitAside() {
+    if (!aside_) return;
+    aside_ = false;
+    if (enqueue_ == nullptr)
+        arena_->arena.execute([&] { arena_->aside.wait(); });
+    else if (asideHandle_ != nullptr)
+        finish_(asideHandle_, userContext_);
+    asideHandle_ = nullptr;
 }
 
 }  // namespace perpdot

@@ -67,6 +67,11 @@ public:
         return total;
     }
 
+    // task(0, 1, 0, context) once, on another worker while the caller goes on (with one worker:
+    // at once, here); awaitAside() returns when it has run. One task aside at a time.
+    void runAside(TaskFn* task, void* context);
+    void awaitAside();
+
 private:
     static constexpr int selectBlock = 1024;
 
@@ -80,6 +85,8 @@ private:
     EnqueueTaskFn* enqueue_ = nullptr;
     FinishTaskFn* finish_ = nullptr;
     void* userContext_ = nullptr;
+    bool aside_ = false;           // a task aside runs, not yet awaited
+    void* asideHandle_ = nullptr;  // the game's handle of it
     struct Arena;  // oneTBB, when the game brings no job system
     std::unique_ptr<Arena> arena_;
     std::vector<int> blockOffsets_;  // parallelSelect's prefix sums

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -65,9 +66,18 @@ struct World::Impl {
     int addShape(BodyId body, const ShapeDef& def);
     void createProxies(int shape);
     void destroyProxies(int shape);
-    void synchronizeProxies(int body, Vec2 displacement);
-    // Whether synchronizeProxies(body, displacement) would change no proxy (any thread, between tree updates).
-    bool proxiesKeep(int body, Vec2 displacement) const;
+    void synchronizeProxies(int body, const Transform& xf, Vec2 displacement);
+    // Whether synchronizeProxies(body, xf, displacement) would change no proxy (any thread, between tree updates).
+    bool proxiesKeep(int body, const Transform& xf, Vec2 displacement) const;
+    // The least room the body's boxes at xf have inside their fat AABBs once the proxies that do
+    // not keep theirs (proxiesKeep) have re-fitted (negative: unknown, a shape has no extent);
+    // `keep` says whether all do; `reach`, its shapes' largest extent about the body origin.
+    struct ProxyRoom {
+        bool keep = true;
+        float room = std::numeric_limits<float>::max();
+        float reach = 0;
+    };
+    ProxyRoom proxyRoom(int body, const Transform& xf, Vec2 displacement) const;
     void reportTouch(const Contact& c, bool begin);  // begin/end event for a contact or sensor
     ContactData contactData(const Contact& c) const;
 };
