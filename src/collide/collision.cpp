@@ -199,26 +199,6 @@ bool CollisionSystem::moveProxy(int proxy, const AABB& aabb, Vec2 displacement) 
     return true;
 }
 
-bool CollisionSystem::proxyKeeps(int proxy, const AABB& aabb, Vec2 displacement) const {
-    if (impl_->staticLeaf[proxy] >= 0) return false;  // two trees to keep in step: let moveProxy decide
-    const b2Vec2 lower = toB2(aabb.lower), upper = toB2(aabb.upper);
-    const b2AABB& tree = impl_->tree.GetFatAABB(proxy);
-    if (!(tree.lowerBound.x <= lower.x && tree.lowerBound.y <= lower.y && upper.x <= tree.upperBound.x &&
-          upper.y <= tree.upperBound.y))
-        return false;
-    // The box a re-insertion would make: aabb grown by the extension r and by b2_aabbMultiplier
-    // times the predicted displacement on its side; "too large" is a tree box outside that grown
-    // by 4r more.
-    const b2Vec2 r(b2_aabbExtension, b2_aabbExtension);
-    b2Vec2 fatLower = lower - r, fatUpper = upper + r;
-    const b2Vec2 d = b2_aabbMultiplier * predicted(displacement);
-    (d.x < 0.0f ? fatLower.x : fatUpper.x) += d.x;
-    (d.y < 0.0f ? fatLower.y : fatUpper.y) += d.y;
-    const b2Vec2 hugeLower = fatLower - 4.0f * r, hugeUpper = fatUpper + 4.0f * r;
-    return hugeLower.x <= tree.lowerBound.x && hugeLower.y <= tree.lowerBound.y && tree.upperBound.x <= hugeUpper.x &&
-           tree.upperBound.y <= hugeUpper.y;
-}
-
 AABB CollisionSystem::fatAABB(int proxy) const {
     const b2AABB& box = impl_->tree.GetFatAABB(proxy);
     return {fromB2(box.lowerBound), fromB2(box.upperBound)};
@@ -530,6 +510,20 @@ float CollisionSystem::maxExtent(int shape) const {
     float extent = 0.0f;
     for (int i = 0; i < p->m_count; ++i) extent = std::max(extent, p->m_vertices[i].Length());
     return extent + p->m_radius;
+}
+
+float CollisionSystem::turningReach(int shape, Vec2 pivot) const {
+    const b2Vec2 o = toB2(pivot);
+    float reach = 0.0f;
+    auto edge = [&](const b2EdgeShape& e) { reach = std::max({reach, (e.m_vertex1 - o).Length(), (e.m_vertex2 - o).Length()}); };
+    const Geometry& g = impl_->geometry[shape];
+    if (auto* c = std::get_if<b2CircleShape>(&g)) reach = (c->m_p - o).Length();
+    if (auto* p = std::get_if<b2PolygonShape>(&g))
+        for (int i = 0; i < p->m_count; ++i) reach = std::max(reach, (p->m_vertices[i] - o).Length());
+    if (auto* e = std::get_if<b2EdgeShape>(&g)) edge(*e);
+    if (auto* chain = std::get_if<ChainEdges>(&g))
+        for (const b2EdgeShape& e : *chain) edge(e);
+    return reach;
 }
 
 }  // namespace perpdot::collide

@@ -98,12 +98,10 @@ public:
     // `aabb` grown by the 0.1 m margin and along the step's displacement, by at most two margins
     // more); returns whether it moved.
     bool moveProxy(int proxy, const AABB& aabb, Vec2 displacement);
-    // True when moveProxy(proxy, aabb, displacement) would leave the trees as they are: the fat
-    // AABB still holds `aabb` and is not too large for it (b2DynamicTree::MoveProxy's two tests,
-    // same float operations). Reads only, so workers may ask side by side between tree updates.
-    bool proxyKeeps(int proxy, const AABB& aabb, Vec2 displacement) const;
     AABB fatAABB(int proxy) const;
-    // The least distance from aabb to a side of the proxy's fat AABB (negative: aabb is outside).
+    // The least distance from aabb to a side of the proxy's fat AABB: >= 0 when the fat AABB holds
+    // it, negative when it sticks out (and moveProxy would re-fit). Reads only, so workers may ask
+    // side by side between tree updates.
     float room(int proxy, const AABB& aabb) const;
     // The room a re-fit leaves at least (it adds the margin on every side), with rounding to spare.
     static float refitRoom();
@@ -192,6 +190,10 @@ public:
     // shape frame's origin to its surface (rounding included); 0 for segments and chains.
     float minExtent(int shape) const;
     float maxExtent(int shape) const;
+    // How far the points that place the shape's box (a circle's centre, vertices) lie from `pivot`
+    // (body frame) at most: turning the body about the pivot moves its box by at most this times
+    // |q₁ − q₀| (a circle turning about its own centre keeps its box).
+    float turningReach(int shape, Vec2 pivot) const;
 
 private:
     void queryImpl(const AABB& aabb, void* context, bool (*visit)(void*, int)) const;

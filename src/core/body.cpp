@@ -46,6 +46,7 @@ void World::Impl::checkUnlocked(const char* what) const {
 
 // m, c and I from the shapes' area integrals, combined with the parallel-axis theorem.
 void World::Impl::updateMass(int index) {
+    forgetBoxRoom(index);  // the centre of mass or the shapes changed
     Body& b = bodies[index];
     const Vec2 oldCenter = b.center;
     b.mass = b.invMass = b.inertia = b.invInertia = 0.0f;

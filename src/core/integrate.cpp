@@ -137,9 +137,7 @@ void finalizeBodies(World::Impl& w, const StepContext& ctx) {
                 continue;
             }
             moveTo(b, s, c1, a1);
-            const bool inside = staysInside(w.scratch.predictedPoses[k], c1, b.xf.q) ||
-                                w.proxiesKeep(w.scratch.awakeBodies[k], b.xf, s.dp);
-            w.scratch.bodyMotion[k] = inside ? MovedInside : Moved;
+            w.scratch.bodyMotion[k] = boxesInside(w, w.scratch.awakeBodies[k], c1, b.xf) ? MovedInside : Moved;
         }
     });
     w.scratch.movers.clear();
@@ -149,13 +147,14 @@ void finalizeBodies(World::Impl& w, const StepContext& ctx) {
         Body& b = w.bodies[index];
         const BodyState& s = w.scratch.states[k + 1];
         if (w.scratch.bodyMotion[k] == NonFinite) {
-            w.freeze(index);  // where it was before the step
+            w.freeze(index);                            // where it was before the step,
+            w.synchronizeProxies(index, b.xf, {});  // perhaps outside the boxes re-fitted ahead
             continue;
         }
         anyBullet = anyBullet || b.bullet;
         if (w.scratch.bodyMotion[k] == MovedInside) continue;
         if (w.scratch.bodyMotion[k] == Moved) {
-            w.synchronizeProxies(index, b.xf, s.dp);
+            w.refitEscaped(index, b.xf, s.dp);
             continue;
         }
         const Vec2 c0 = b.center;

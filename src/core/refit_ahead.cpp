@@ -7,12 +7,14 @@
 // which boxes and in which order, depends on the world alone: the tree is the same for any worker
 // count.
 //
-// The prediction also spares finalizeBodies most of its checks: a body whose every shape point
-// ends within `room` of where the predicted pose put it still has its boxes inside their fat
-// AABBs. A point at ℓ from the centre of mass moves by Δc + (q₁ − q₀)ℓ between two poses (q as
-// the complex number c + i s), so by at most |Δc| + |q₁ − q₀|·reach.
+// A proxy re-fits when its box sticks out of its fat AABB, as in Box2D v3; a fat AABB grown large
+// by a fast move is not shrunk when the body slows (Box2D 2.4's "huge" test) — it is at most two
+// margins longer along the motion (collision.cpp). Whether a body's boxes are inside is known
+// without computing them while it strays less from where they were last measured than they had
+// room (box_room.hpp).
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/stages.hpp"
 
@@ -25,14 +27,37 @@ void refitPredicted(int, int, int, void* world) {
     World::Impl& w = *static_cast<World::Impl*>(world);
     const std::vector<PredictedPose>& poses = w.scratch.predictedPoses;
     for (size_t k = 0; k < poses.size(); ++k)
-        if (poses[k].refit) w.synchronizeProxies(w.scratch.awakeBodies[k], poses[k].xf, poses[k].displacement);
+        if (poses[k].refit) w.refitEscaped(w.scratch.awakeBodies[k], poses[k].xf, poses[k].displacement);
 }
 
 }  // namespace
 
+bool boxesInside(World::Impl& w, int body, Vec2 center, const Transform& xf) {
+    BoxRoom& known = w.boxRooms[body];
+    if (known.holds(center, xf.q)) return true;
+    const Body& b = w.bodies[body];
+    if (known.reach < 0.0f) {  // forgotten: the shapes or the centre of mass changed
+        known.reach = 0.0f;
+        for (int s : b.shapes) known.reach = std::max(known.reach, w.collision.turningReach(s, b.localCenter));
+    }
+    bool inside = true;
+    float room = std::numeric_limits<float>::max();
+    for (int s : b.shapes) {
+        const std::vector<int>& proxies = w.shapes[s].proxies;
+        for (int child = 0; child < static_cast<int>(proxies.size()); ++child) {
+            const float free = w.collision.room(proxies[child], w.collision.computeAABB(s, child, xf));
+            inside = inside && free >= 0.0f;
+            room = std::min(room, free >= 0.0f ? free : collide::CollisionSystem::refitRoom());  // the caller re-fits it
+        }
+    }
+    known = {center, xf.q, known.reach, room};
+    return inside;
+}
+
 void startTreeRefit(World::Impl& w, const StepContext& ctx) {
     const int count = static_cast<int>(w.scratch.awakeBodies.size());
     w.scratch.predictedPoses.resize(static_cast<size_t>(count));
+    w.boxRooms.resize(static_cast<size_t>(w.bodies.capacity()));
     w.workers.parallelFor(count, 256, [&](int begin, int end, int) {
         for (int k = begin; k < end; ++k) {
             const int index = w.scratch.awakeBodies[k];
@@ -42,28 +67,16 @@ void startTreeRefit(World::Impl& w, const StepContext& ctx) {
             p.displacement = ctx.h * s.v;
             const float turn = ctx.h * s.w;
             p.refit = false;
-            p.room = -1.0f;
             if (b.shapes.empty() || !isFinite(p.displacement) || !std::isfinite(turn)) continue;
             const Rot q = integrateRotation(b.xf.q, turn);  // R(θ + hω), to first order: a prediction
-            p.center = b.center + p.displacement;
-            p.xf = {p.center - rotate(q, b.localCenter), q};
-            const World::Impl::ProxyRoom r = w.proxyRoom(index, p.xf, p.displacement);
-            p.refit = !r.keep;
-            p.reach = r.reach + length(b.localCenter);
-            p.room = r.room;
+            const Vec2 center = b.center + p.displacement;
+            p.xf = {center - rotate(q, b.localCenter), q};
+            p.refit = !boxesInside(w, index, center, p.xf);
         }
     });
     w.workers.runAside(&refitPredicted, &w);
 }
 
 void finishTreeRefit(World::Impl& w) { w.workers.awaitAside(); }
-
-bool staysInside(const PredictedPose& p, Vec2 center, Rot q) {
-    // |Δc| + |q₁ − q₀|·reach, bounded by the sums of the components' sizes.
-    const float stray = std::fabs(center.x - p.center.x) + std::fabs(center.y - p.center.y) +
-                        p.reach * (std::fabs(q.c - p.xf.q.c) + std::fabs(q.s - p.xf.q.s));
-    const float rounding = 1e-5f * (1.0f + std::fabs(center.x) + std::fabs(center.y) + p.reach);
-    return stray + rounding <= p.room;
-}
 
 }  // namespace perpdot

@@ -119,6 +119,7 @@ int World::Impl::addShape(BodyId bodyId, const ShapeDef& def) {
 
 void World::Impl::createProxies(int index) {
     ShapeData& s = shapes[index];
+    forgetBoxRoom(s.body);
     s.type = static_cast<ShapeType>(s.geometry.index());
     const Transform& xf = bodies[s.body].xf;
     const bool isStatic = bodies[s.body].type == BodyType::Static;
@@ -131,6 +132,7 @@ void World::Impl::createProxies(int index) {
 }
 
 void World::Impl::destroyProxies(int index) {
+    forgetBoxRoom(shapes[index].body);
     for (int proxy : shapes[index].proxies) {
         // A proxy id is reused by the tree: forget it in the move buffer before it goes.
         movedProxies.erase(std::remove(movedProxies.begin(), movedProxies.end(), proxy), movedProxies.end());
@@ -155,34 +157,27 @@ bool everyProxy(const World::Impl& w, int body, const Transform& xf, const Visit
 
 }  // namespace
 
-// Re-fit the body's proxies to transform xf; proxies that left their fat AABB are queried for new
-// pairs next step (once, however often they move before it).
 void World::Impl::synchronizeProxies(int index, const Transform& xf, Vec2 displacement) {
+    if (static_cast<size_t>(index) < boxRooms.size()) boxRooms[index].room = -1.0f;  // its boxes change, its reach does not
     everyProxy(*this, index, xf, [&](int proxy, const AABB& aabb) {
-        const bool queued = collision.wasMoved(proxy);
+        const bool queued = collision.wasMoved(proxy);  // once, however often it moves before updatePairs
         if (collision.moveProxy(proxy, aabb, displacement) && !queued) movedProxies.push_back(proxy);
         return true;
     });
 }
 
-bool World::Impl::proxiesKeep(int index, const Transform& xf, Vec2 displacement) const {
-    return everyProxy(*this, index, xf,
-                      [&](int proxy, const AABB& aabb) { return collision.proxyKeeps(proxy, aabb, displacement); });
-}
-
-World::Impl::ProxyRoom World::Impl::proxyRoom(int index, const Transform& xf, Vec2 displacement) const {
-    ProxyRoom r;
+void World::Impl::refitEscaped(int index, const Transform& xf, Vec2 displacement) {
     everyProxy(*this, index, xf, [&](int proxy, const AABB& aabb) {
-        const bool keeps = collision.proxyKeeps(proxy, aabb, displacement);
-        r.keep = r.keep && keeps;
-        r.room = std::min(r.room, keeps ? collision.room(proxy, aabb) : collide::CollisionSystem::refitRoom());
+        if (collision.room(proxy, aabb) >= 0.0f) return true;
+        const bool queued = collision.wasMoved(proxy);
+        collision.moveProxy(proxy, aabb, displacement);
+        if (!queued) movedProxies.push_back(proxy);
         return true;
     });
-    for (int s : bodies[index].shapes) {
-        r.reach = std::max(r.reach, shapes[s].maxExtent);
-        if (shapes[s].maxExtent == 0.0f) r.room = -1.0f;  // segments and chains have none
-    }
-    return r;
+}
+
+void World::Impl::forgetBoxRoom(int index) {
+    if (static_cast<size_t>(index) < boxRooms.size()) boxRooms[index] = BoxRoom{};
 }
 
 ShapeId World::createShape(BodyId body, const ShapeDef& def, const Circle& circle) { return create(*impl_, body, def, circle); }

@@ -530,6 +530,8 @@ void World::restore(std::span<const uint8_t> bytes) {
     // The step's working arrays hold nothing between steps but their capacity: keeping this
     // world's, a rollback's next step reallocates nothing.
     fresh->scratch = std::move(impl_->scratch);
+    fresh->boxRooms = std::move(impl_->boxRooms);  // its memory; no body's boxes are measured yet
+    fresh->boxRooms.assign(fresh->boxRooms.size(), BoxRoom{});
     impl_->events.assignKeepingCapacity(fresh->events);
     fresh->events = std::move(impl_->events);
     fresh->contactCache.newPairs = std::move(impl_->contactCache.newPairs);

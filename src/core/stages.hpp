@@ -24,9 +24,10 @@ void integratePositions(World::Impl& w, const StepContext& ctx, int begin, int e
 // bodies whose predicted end pose leaves their fat AABB; finish before the bodies take their poses.
 void startTreeRefit(World::Impl& w, const StepContext& ctx);
 void finishTreeRefit(World::Impl& w);
-// Whether a body that ends at (center, q) still has every box inside its fat AABB, by how far it
-// strayed from its predicted pose p (false when that does not tell).
-bool staysInside(const PredictedPose& p, Vec2 center, Rot q);
+// Whether the body's boxes at pose xf (centre of mass `center`) are inside their fat AABBs: by its
+// box room when that tells, else measured, and the measurement kept (the room of boxes that stick
+// out is what their re-fit will leave: the caller re-fits them with refitEscaped).
+bool boxesInside(World::Impl& w, int body, Vec2 center, const Transform& xf);
 // Store the solver state in the bodies and sweep the fast ones (continuous collision).
 void finalizeBodies(World::Impl& w, const StepContext& ctx);
 // Sleep: islands of touching contacts and joints whose every body was still for timeToSleep fall

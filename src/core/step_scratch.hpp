@@ -55,14 +55,11 @@ struct MoverPair {
     collide::ChildKey keyA, keyB;  // the children that meet first
 };
 
-// A body's pose predicted for the step's end from its velocity, whether its proxies re-fit to it
-// while the step is solved, and how far the real end pose may stray from it with every box still
-// inside its fat AABB (refit_ahead.cpp).
+// A body's pose predicted for the step's end from its velocity, and whether its proxies re-fit to
+// it while the step is solved (refit_ahead.cpp).
 struct PredictedPose {
     Transform xf;
-    Vec2 center, displacement;
-    float reach = 0;  // of its shapes about the centre of mass
-    float room = -1;  // the least room its boxes have inside their fat AABBs; negative: unknown
+    Vec2 displacement;
     bool refit = false;
 };
 

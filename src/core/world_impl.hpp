@@ -5,13 +5,13 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "collide/collision.hpp"
 #include "core/body_store.hpp"
+#include "core/box_room.hpp"
 #include "core/contact_cache.hpp"
 #include "core/event_buffers.hpp"
 #include "core/joint.hpp"
@@ -30,6 +30,7 @@ struct World::Impl {
     Pool<Body> bodies;
     ShapeStore shapes;
     ContactCache contactCache;
+    std::vector<BoxRoom> boxRooms;  // by body index: where its boxes were last measured (refit_ahead.cpp)
     std::vector<int> movedProxies;  // proxies that left their fat AABB (or are new): updatePairs looks for their pairs
     collide::CollisionSystem collision;
     JointStorePtr joints;
@@ -66,18 +67,13 @@ struct World::Impl {
     int addShape(BodyId body, const ShapeDef& def);
     void createProxies(int shape);
     void destroyProxies(int shape);
+    // Re-fit every proxy of the body to transform xf (as b2DynamicTree::MoveProxy decides); its
+    // box room is forgotten. Proxies that left their fat AABB are queried for pairs next step.
     void synchronizeProxies(int body, const Transform& xf, Vec2 displacement);
-    // Whether synchronizeProxies(body, xf, displacement) would change no proxy (any thread, between tree updates).
-    bool proxiesKeep(int body, const Transform& xf, Vec2 displacement) const;
-    // The least room the body's boxes at xf have inside their fat AABBs once the proxies that do
-    // not keep theirs (proxiesKeep) have re-fitted (negative: unknown, a shape has no extent);
-    // `keep` says whether all do; `reach`, its shapes' largest extent about the body origin.
-    struct ProxyRoom {
-        bool keep = true;
-        float room = std::numeric_limits<float>::max();
-        float reach = 0;
-    };
-    ProxyRoom proxyRoom(int body, const Transform& xf, Vec2 displacement) const;
+    // Re-fit the body's proxies whose box at xf sticks out of their fat AABB, and only those.
+    void refitEscaped(int body, const Transform& xf, Vec2 displacement);
+    // Its shapes, proxies or centre of mass changed: its box room (box_room.hpp) is not known.
+    void forgetBoxRoom(int body);
     void reportTouch(const Contact& c, bool begin);  // begin/end event for a contact or sensor
     ContactData contactData(const Contact& c) const;
 };
