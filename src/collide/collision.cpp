@@ -210,8 +210,6 @@ float CollisionSystem::room(int proxy, const AABB& aabb) const {
                     std::min(fat.upperBound.x - aabb.upper.x, fat.upperBound.y - aabb.upper.y));
 }
 
-float CollisionSystem::refitRoom() { return 0.5f * b2_aabbExtension; }
-
 // The tree fattens what it is given, so insert `fat` itself (every ancestor then contains the
 // fattened box, hence `fat`) and set the leaf's own box to `fat`. GetFatAABB returns a const
 // reference to that box in the tree's (non-const) node storage, so writing through it is defined.

@@ -103,8 +103,6 @@ public:
     // it, negative when it sticks out (and moveProxy would re-fit). Reads only, so workers may ask
     // side by side between tree updates.
     float room(int proxy, const AABB& aabb) const;
-    // The room a re-fit leaves at least (it adds the margin on every side), with rounding to spare.
-    static float refitRoom();
     // A new proxy whose fat AABB is exactly `fat` (a snapshot's), marked as moved like createProxy's.
     int restoreProxy(const AABB& fat, ChildKey key, bool isStatic);
     // Whether `proxy` is already what restoreProxy(fat, key, isStatic) would make: its key, the same

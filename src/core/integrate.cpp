@@ -155,6 +155,7 @@ void finalizeBodies(World::Impl& w, const StepContext& ctx) {
         if (w.scratch.bodyMotion[k] == MovedInside) continue;
         if (w.scratch.bodyMotion[k] == Moved) {
             w.refitEscaped(index, b.xf, s.dp);
+            measureBoxes(w, index, b.center, b.xf);
             continue;
         }
         const Vec2 c0 = b.center;

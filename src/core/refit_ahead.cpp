@@ -22,36 +22,46 @@ namespace perpdot {
 
 namespace {
 
-// The re-fits, in awake-body order.
+// The re-fits, in awake-body order, each body measured again in its new boxes.
 void refitPredicted(int, int, int, void* world) {
     World::Impl& w = *static_cast<World::Impl*>(world);
     const std::vector<PredictedPose>& poses = w.scratch.predictedPoses;
-    for (size_t k = 0; k < poses.size(); ++k)
-        if (poses[k].refit) w.refitEscaped(w.scratch.awakeBodies[k], poses[k].xf, poses[k].displacement);
+    for (size_t k = 0; k < poses.size(); ++k) {
+        if (!poses[k].refit) continue;
+        w.refitEscaped(w.scratch.awakeBodies[k], poses[k].xf, poses[k].displacement);
+        measureBoxes(w, w.scratch.awakeBodies[k], poses[k].center, poses[k].xf);
+    }
 }
 
 }  // namespace
 
-bool boxesInside(World::Impl& w, int body, Vec2 center, const Transform& xf) {
+bool measureBoxes(World::Impl& w, int body, Vec2 center, const Transform& xf) {
     BoxRoom& known = w.boxRooms[body];
-    if (known.holds(center, xf.q)) return true;
     const Body& b = w.bodies[body];
     if (known.reach < 0.0f) {  // forgotten: the shapes or the centre of mass changed
         known.reach = 0.0f;
         for (int s : b.shapes) known.reach = std::max(known.reach, w.collision.turningReach(s, b.localCenter));
     }
-    bool inside = true;
-    float room = std::numeric_limits<float>::max();
+    constexpr float most = std::numeric_limits<float>::max();
+    Vec2 below{most, most}, above{most, most};
     for (int s : b.shapes) {
         const std::vector<int>& proxies = w.shapes[s].proxies;
         for (int child = 0; child < static_cast<int>(proxies.size()); ++child) {
-            const float free = w.collision.room(proxies[child], w.collision.computeAABB(s, child, xf));
-            inside = inside && free >= 0.0f;
-            room = std::min(room, free >= 0.0f ? free : collide::CollisionSystem::refitRoom());  // the caller re-fits it
+            const AABB box = w.collision.computeAABB(s, child, xf), fat = w.collision.fatAABB(proxies[child]);
+            below = {std::min(below.x, box.lower.x - fat.lower.x), std::min(below.y, box.lower.y - fat.lower.y)};
+            above = {std::min(above.x, fat.upper.x - box.upper.x), std::min(above.y, fat.upper.y - box.upper.y)};
         }
     }
-    known = {center, xf.q, known.reach, room};
+    const bool inside = std::min(std::min(below.x, below.y), std::min(above.x, above.y)) >= 0.0f;
+    known.center = center;
+    known.q = xf.q;
+    known.below = inside ? below : Vec2{-1.0f, -1.0f};  // else measured again once re-fitted
+    known.above = above;
     return inside;
+}
+
+bool boxesInside(World::Impl& w, int body, Vec2 center, const Transform& xf) {
+    return w.boxRooms[body].holds(center, xf.q) || measureBoxes(w, body, center, xf);
 }
 
 void startTreeRefit(World::Impl& w, const StepContext& ctx) {
@@ -69,9 +79,9 @@ void startTreeRefit(World::Impl& w, const StepContext& ctx) {
             p.refit = false;
             if (b.shapes.empty() || !isFinite(p.displacement) || !std::isfinite(turn)) continue;
             const Rot q = integrateRotation(b.xf.q, turn);  // R(θ + hω), to first order: a prediction
-            const Vec2 center = b.center + p.displacement;
-            p.xf = {center - rotate(q, b.localCenter), q};
-            p.refit = !boxesInside(w, index, center, p.xf);
+            p.center = b.center + p.displacement;
+            p.xf = {p.center - rotate(q, b.localCenter), q};
+            p.refit = !boxesInside(w, index, p.center, p.xf);
         }
     });
     w.workers.runAside(&refitPredicted, &w);

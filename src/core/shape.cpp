@@ -158,7 +158,7 @@ bool everyProxy(const World::Impl& w, int body, const Transform& xf, const Visit
 }  // namespace
 
 void World::Impl::synchronizeProxies(int index, const Transform& xf, Vec2 displacement) {
-    if (static_cast<size_t>(index) < boxRooms.size()) boxRooms[index].room = -1.0f;  // its boxes change, its reach does not
+    if (static_cast<size_t>(index) < boxRooms.size()) boxRooms[index].below = {-1.0f, -1.0f};  // its boxes change, its reach does not
     everyProxy(*this, index, xf, [&](int proxy, const AABB& aabb) {
         const bool queued = collision.wasMoved(proxy);  // once, however often it moves before updatePairs
         if (collision.moveProxy(proxy, aabb, displacement) && !queued) movedProxies.push_back(proxy);

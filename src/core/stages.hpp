@@ -25,9 +25,11 @@ void integratePositions(World::Impl& w, const StepContext& ctx, int begin, int e
 void startTreeRefit(World::Impl& w, const StepContext& ctx);
 void finishTreeRefit(World::Impl& w);
 // Whether the body's boxes at pose xf (centre of mass `center`) are inside their fat AABBs: by its
-// box room when that tells, else measured, and the measurement kept (the room of boxes that stick
-// out is what their re-fit will leave: the caller re-fits them with refitEscaped).
+// box room when that tells, else measured (measureBoxes). The caller re-fits the boxes that stick
+// out (World::Impl::refitEscaped) and then measures them again.
 bool boxesInside(World::Impl& w, int body, Vec2 center, const Transform& xf);
+// Measure the body's boxes at pose xf into its box room; whether all are inside.
+bool measureBoxes(World::Impl& w, int body, Vec2 center, const Transform& xf);
 // Store the solver state in the bodies and sweep the fast ones (continuous collision).
 void finalizeBodies(World::Impl& w, const StepContext& ctx);
 // Sleep: islands of touching contacts and joints whose every body was still for timeToSleep fall

@@ -59,7 +59,7 @@ struct MoverPair {
 // it while the step is solved (refit_ahead.cpp).
 struct PredictedPose {
     Transform xf;
-    Vec2 displacement;
+    Vec2 center, displacement;
     bool refit = false;
 };
 
