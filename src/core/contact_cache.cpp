@@ -239,9 +239,10 @@ void updateContacts(World::Impl& w) {
             cache.narrowphase[index] = result;
         }
     });
+    bool woken = false;  // a sleeper woke in this pass: skipped contacts may be due after all
     for (int index = 0; index < count; ++index) {
         Narrowphase result = cache.narrowphase[index];
-        if (result == Narrowphase::Quiet) continue;
+        if (result == Narrowphase::Quiet || (result == Narrowphase::Skipped && !woken)) continue;
         Contact& c = cache.contacts[index];
         if (!c.alive) continue;
         Body& ba = w.bodies[c.bodyA];
@@ -274,8 +275,14 @@ void updateContacts(World::Impl& w) {
         if (c.touching != (result == Narrowphase::WasTouching)) w.reportTouch(c, c.touching);
         // An awake body touching a sleeping one wakes the sleeper's island.
         if (c.touching) {
-            if (!ba.awake && ba.type != BodyType::Static && bb.awake) w.wake(c.bodyA);
-            if (!bb.awake && bb.type != BodyType::Static && ba.awake) w.wake(c.bodyB);
+            if (!ba.awake && ba.type != BodyType::Static && bb.awake) {
+                w.wake(c.bodyA);
+                woken = true;
+            }
+            if (!bb.awake && bb.type != BodyType::Static && ba.awake) {
+                w.wake(c.bodyB);
+                woken = true;
+            }
         }
     }
 }

@@ -7,6 +7,7 @@
 // A constrained body takes the same forces in substep-sized pieces, as Box2D v3's soft step
 // does, which is what keeps tall stacks and heavy loads standing.
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 #include "core/continuous.hpp"
@@ -18,11 +19,18 @@ namespace perpdot {
 namespace {
 
 // Marks the bodies with a touching contact: one pass over the contact pool, rather than a walk of
-// each body's contact list (a turning container has thousands, most of them not touching).
+// each body's contact list (a turning container has thousands, most of them not touching), on the
+// workers: a mark is only ever set to 1, so two workers marking one body agree (relaxed stores).
 void markTouching(World::Impl& w) {
     w.scratch.touchingBodies.assign(w.bodies.capacity(), 0);
-    w.contactCache.contacts.forEachLive([&](int, const Contact& c) {
-        if (c.touching) w.scratch.touchingBodies[c.bodyA] = w.scratch.touchingBodies[c.bodyB] = 1;
+    const ContactCache& cache = w.contactCache;
+    w.workers.parallelFor(cache.contacts.capacity(), 1024, [&](int begin, int end, int) {
+        for (int index = begin; index < end; ++index) {
+            const Contact& c = cache.contacts[index];
+            if (!c.alive || !c.touching) continue;
+            std::atomic_ref(w.scratch.touchingBodies[c.bodyA]).store(1, std::memory_order_relaxed);
+            std::atomic_ref(w.scratch.touchingBodies[c.bodyB]).store(1, std::memory_order_relaxed);
+        }
     });
 }
 
