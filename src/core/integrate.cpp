@@ -109,13 +109,14 @@ void integratePositions(World::Impl& w, const StepContext& ctx, int begin, int e
 }
 
 // Write the solver state back: c = c0 + Δp, θ = θ0 + Δθ, origin = c - R(θ) localCenter.
-// The workers write the bodies that are neither fast nor non-finite and check which of them stay
-// inside their fat AABBs; then, one by one, the non-finite ones are frozen, the broadphase follows
-// the other bodies, and fast bodies are swept from their step-start pose against static shapes;
-// bullets wait until every other body is final, then meet moving bodies too
-// (continuous_impacts.cpp).
+// The workers write the bodies that are not non-finite, sweep the fast ones from their step-start
+// pose against static shapes, and check which of them stay inside their fat AABBs; then, one by
+// one, the non-finite ones are frozen and the broadphase follows the other bodies; bullets wait
+// until every other body is final, then meet moving bodies too (continuous_impacts.cpp).
 void finalizeBodies(World::Impl& w, const StepContext& ctx) {
-    enum Motion : uint8_t { Moved, MovedInside, Fast, NonFinite };  // MovedInside: its proxies stay as they are
+    // MovedInside, FastInside: its proxies stay as they are; Fast: a bullet, or a fast body whose
+    // proxies re-fit after its sweep.
+    enum Motion : uint8_t { Moved, MovedInside, Fast, FastInside, NonFinite };
     // The solver's velocities, within the speed limits (restitution comes after the last clamp of
     // integratePositions), and the pose (c1, a1) into the body.
     const float maxLinearSpeed = w.def.maxLinearSpeed;
@@ -129,6 +130,7 @@ void finalizeBodies(World::Impl& w, const StepContext& ctx) {
     };
     const int count = static_cast<int>(w.scratch.awakeBodies.size());
     w.scratch.bodyMotion.resize(static_cast<size_t>(count));
+    w.scratch.stepStarts.resize(static_cast<size_t>(count));
     w.workers.parallelFor(count, 256, [&](int begin, int end, int) {
         for (int k = begin; k < end; ++k) {
             Body& b = w.bodies[w.scratch.awakeBodies[k]];
@@ -140,12 +142,22 @@ void finalizeBodies(World::Impl& w, const StepContext& ctx) {
             }
             const Vec2 c1 = b.center + s.dp;
             const float a1 = b.angle + dAngle;
-            if (w.def.enableContinuous && isFast(w, w.scratch.awakeBodies[k], b.center, b.angle, c1, a1)) {
-                w.scratch.bodyMotion[k] = Fast;
+            const int index = w.scratch.awakeBodies[k];
+            if (w.def.enableContinuous && isFast(w, index, b.center, b.angle, c1, a1)) {
+                // Swept against static shapes, which no worker moves: side by side like the rest.
+                const BodyPose start{b.center, b.angle};
+                w.scratch.stepStarts[k] = start;
+                moveTo(b, s, c1, a1);
+                if (b.bullet) {
+                    w.scratch.bodyMotion[k] = Fast;  // it waits for every other body (continuous_impacts.cpp)
+                    continue;
+                }
+                solveContinuous(w, index, start.center, start.angle);
+                w.scratch.bodyMotion[k] = boxesInside(w, index, b.center, b.xf) ? FastInside : Fast;
                 continue;
             }
             moveTo(b, s, c1, a1);
-            w.scratch.bodyMotion[k] = boxesInside(w, w.scratch.awakeBodies[k], c1, b.xf) ? MovedInside : Moved;
+            w.scratch.bodyMotion[k] = boxesInside(w, index, c1, b.xf) ? MovedInside : Moved;
         }
     });
     w.scratch.movers.clear();
@@ -166,16 +178,13 @@ void finalizeBodies(World::Impl& w, const StepContext& ctx) {
             measureBoxes(w, index, b.center, b.xf);
             continue;
         }
-        const Vec2 c0 = b.center;
-        const float a0 = b.angle;
-        moveTo(b, s, c0 + s.dp, a0 + w.scratch.stepRotation[k + 1]);
-        w.scratch.movers.push_back({.body = index, .c0 = c0, .a0 = a0, .v = b.v, .w = b.w, .stepStart = c0, .fast = true});
-        if (!b.bullet) {
-            solveContinuous(w, index, c0, a0);
-            w.synchronizeProxies(index, b.xf, b.center - c0);
+        const BodyPose& start = w.scratch.stepStarts[k];
+        w.scratch.movers.push_back({.body = index, .c0 = start.center, .c1 = b.center, .a0 = start.angle, .a1 = b.angle,
+                                    .v = b.v, .w = b.w, .stepStart = start.center, .fast = true});
+        if (w.scratch.bodyMotion[k] == Fast && !b.bullet) {
+            w.refitEscaped(index, b.xf, b.center - start.center);
+            measureBoxes(w, index, b.center, b.xf);
         }
-        w.scratch.movers.back().c1 = b.center;
-        w.scratch.movers.back().a1 = b.angle;
     }
     if (anyBullet && !w.scratch.movers.empty()) solveMovingImpacts(w, ctx);
     for (Body& b : w.bodies.slots()) {

@@ -55,6 +55,12 @@ struct MoverPair {
     collide::ChildKey keyA, keyB;  // the children that meet first
 };
 
+// A body's centre of mass and angle.
+struct BodyPose {
+    Vec2 center;
+    float angle = 0;
+};
+
 // A body's pose predicted for the step's end from its velocity, and whether its proxies re-fit to
 // it while the step is solved (refit_ahead.cpp).
 struct PredictedPose {
@@ -71,6 +77,7 @@ struct StepScratch {
     std::vector<float> stepRotation;    // Δθ of states[i], summed over substeps
     std::vector<uint8_t> bodyMotion;    // finalizeBodies scratch, by awake body: its Motion (integrate.cpp)
     std::vector<PredictedPose> predictedPoses;  // by awake body
+    std::vector<BodyPose> stepStarts;           // finalizeBodies scratch, by awake body: a fast body's pose before the step
     std::vector<SubstepForces> substepForces;  // of states[i]
     std::vector<InverseMass> inverseMasses;    // of states[i] (slot 0: none): dense, for gathering rows
     std::vector<BodyState> freeVelocities;     // of states[i]: v and ω at the step's end without contacts (contact_solver.cpp)
