@@ -174,16 +174,14 @@ void finalizeBodies(World::Impl& w, const StepContext& ctx) {
         anyBullet = anyBullet || b.bullet;
         if (w.scratch.bodyMotion[k] == MovedInside) continue;
         if (w.scratch.bodyMotion[k] == Moved) {
-            w.refitEscaped(index, b.xf, s.dp);
-            measureBoxes(w, index, b.center, b.xf);
+            refitEscaped(w, index, b.center, b.xf, s.dp);
             continue;
         }
         const BodyPose& start = w.scratch.stepStarts[k];
         w.scratch.movers.push_back({.body = index, .c0 = start.center, .c1 = b.center, .a0 = start.angle, .a1 = b.angle,
                                     .v = b.v, .w = b.w, .stepStart = start.center, .fast = true});
         if (w.scratch.bodyMotion[k] == Fast && !b.bullet) {
-            w.refitEscaped(index, b.xf, b.center - start.center);
-            measureBoxes(w, index, b.center, b.xf);
+            refitEscaped(w, index, b.center, b.xf, b.center - start.center);
         }
     }
     if (anyBullet && !w.scratch.movers.empty()) solveMovingImpacts(w, ctx);

@@ -22,20 +22,9 @@ namespace perpdot {
 
 namespace {
 
-// The re-fits, in awake-body order, each body measured again in its new boxes.
-void refitPredicted(int, int, int, void* world) {
-    World::Impl& w = *static_cast<World::Impl*>(world);
-    const std::vector<PredictedPose>& poses = w.scratch.predictedPoses;
-    for (size_t k = 0; k < poses.size(); ++k) {
-        if (!poses[k].refit) continue;
-        w.refitEscaped(w.scratch.awakeBodies[k], poses[k].xf, poses[k].displacement);
-        measureBoxes(w, w.scratch.awakeBodies[k], poses[k].center, poses[k].xf);
-    }
-}
-
-}  // namespace
-
-bool measureBoxes(World::Impl& w, int body, Vec2 center, const Transform& xf) {
+// The body's boxes at pose xf against their fat AABBs, into its box room; with `refitAlong`, the
+// boxes that stick out are re-fitted first (grown along that displacement). Whether all were inside.
+bool measureBoxes(World::Impl& w, int body, Vec2 center, const Transform& xf, const Vec2* refitAlong) {
     BoxRoom& known = w.boxRooms[body];
     const Body& b = w.bodies[body];
     if (known.reach < 0.0f) {  // forgotten: the shapes or the centre of mass changed
@@ -47,7 +36,9 @@ bool measureBoxes(World::Impl& w, int body, Vec2 center, const Transform& xf) {
     for (int s : b.shapes) {
         const std::vector<int>& proxies = w.shapes[s].proxies;
         for (int child = 0; child < static_cast<int>(proxies.size()); ++child) {
-            const AABB box = w.collision.computeAABB(s, child, xf), fat = w.collision.fatAABB(proxies[child]);
+            const AABB box = w.collision.computeAABB(s, child, xf);
+            if (refitAlong != nullptr && w.collision.room(proxies[child], box) < 0.0f) w.refitProxy(proxies[child], box, *refitAlong);
+            const AABB fat = w.collision.fatAABB(proxies[child]);
             below = {std::min(below.x, box.lower.x - fat.lower.x), std::min(below.y, box.lower.y - fat.lower.y)};
             above = {std::min(above.x, fat.upper.x - box.upper.x), std::min(above.y, fat.upper.y - box.upper.y)};
         }
@@ -60,8 +51,22 @@ bool measureBoxes(World::Impl& w, int body, Vec2 center, const Transform& xf) {
     return inside;
 }
 
+// The re-fits, in awake-body order.
+void refitPredicted(int, int, int, void* world) {
+    World::Impl& w = *static_cast<World::Impl*>(world);
+    const std::vector<PredictedPose>& poses = w.scratch.predictedPoses;
+    for (size_t k = 0; k < poses.size(); ++k)
+        if (poses[k].refit) refitEscaped(w, w.scratch.awakeBodies[k], poses[k].center, poses[k].xf, poses[k].displacement);
+}
+
+}  // namespace
+
 bool boxesInside(World::Impl& w, int body, Vec2 center, const Transform& xf) {
-    return w.boxRooms[body].holds(center, xf.q) || measureBoxes(w, body, center, xf);
+    return w.boxRooms[body].holds(center, xf.q) || measureBoxes(w, body, center, xf, nullptr);
+}
+
+void refitEscaped(World::Impl& w, int body, Vec2 center, const Transform& xf, Vec2 displacement) {
+    measureBoxes(w, body, center, xf, &displacement);
 }
 
 void startTreeRefit(World::Impl& w, const StepContext& ctx) {

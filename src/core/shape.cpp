@@ -160,20 +160,14 @@ bool everyProxy(const World::Impl& w, int body, const Transform& xf, const Visit
 void World::Impl::synchronizeProxies(int index, const Transform& xf, Vec2 displacement) {
     if (static_cast<size_t>(index) < boxRooms.size()) boxRooms[index].below = {-1.0f, -1.0f};  // its boxes change, its reach does not
     everyProxy(*this, index, xf, [&](int proxy, const AABB& aabb) {
-        const bool queued = collision.wasMoved(proxy);  // once, however often it moves before updatePairs
-        if (collision.moveProxy(proxy, aabb, displacement) && !queued) movedProxies.push_back(proxy);
+        refitProxy(proxy, aabb, displacement);
         return true;
     });
 }
 
-void World::Impl::refitEscaped(int index, const Transform& xf, Vec2 displacement) {
-    everyProxy(*this, index, xf, [&](int proxy, const AABB& aabb) {
-        if (collision.room(proxy, aabb) >= 0.0f) return true;
-        const bool queued = collision.wasMoved(proxy);
-        collision.moveProxy(proxy, aabb, displacement);
-        if (!queued) movedProxies.push_back(proxy);
-        return true;
-    });
+void World::Impl::refitProxy(int proxy, const AABB& aabb, Vec2 displacement) {
+    const bool queued = collision.wasMoved(proxy);  // once, however often it moves before updatePairs
+    if (collision.moveProxy(proxy, aabb, displacement) && !queued) movedProxies.push_back(proxy);
 }
 
 void World::Impl::forgetBoxRoom(int index) {

@@ -25,11 +25,11 @@ void integratePositions(World::Impl& w, const StepContext& ctx, int begin, int e
 void startTreeRefit(World::Impl& w, const StepContext& ctx);
 void finishTreeRefit(World::Impl& w);
 // Whether the body's boxes at pose xf (centre of mass `center`) are inside their fat AABBs: by its
-// box room when that tells, else measured (measureBoxes). The caller re-fits the boxes that stick
-// out (World::Impl::refitEscaped) and then measures them again.
+// box room when that tells, else measured into it. When not, the caller re-fits with refitEscaped.
 bool boxesInside(World::Impl& w, int body, Vec2 center, const Transform& xf);
-// Measure the body's boxes at pose xf into its box room; whether all are inside.
-bool measureBoxes(World::Impl& w, int body, Vec2 center, const Transform& xf);
+// Re-fit the body's proxies whose box at xf sticks out of their fat AABB, and only those (grown
+// along `displacement`), and measure its boxes in their new fat AABBs.
+void refitEscaped(World::Impl& w, int body, Vec2 center, const Transform& xf, Vec2 displacement);
 // Store the solver state in the bodies and sweep the fast ones (continuous collision).
 void finalizeBodies(World::Impl& w, const StepContext& ctx);
 // Sleep: islands of touching contacts and joints whose every body was still for timeToSleep fall

@@ -70,8 +70,9 @@ struct World::Impl {
     // Re-fit every proxy of the body to transform xf (as b2DynamicTree::MoveProxy decides); its
     // box room is forgotten. Proxies that left their fat AABB are queried for pairs next step.
     void synchronizeProxies(int body, const Transform& xf, Vec2 displacement);
-    // Re-fit the body's proxies whose box at xf sticks out of their fat AABB, and only those.
-    void refitEscaped(int body, const Transform& xf, Vec2 displacement);
+    // Re-fit one proxy to `aabb` if it left its fat AABB (collision.moveProxy), and queue it for
+    // updatePairs once.
+    void refitProxy(int proxy, const AABB& aabb, Vec2 displacement);
     // Its shapes, proxies or centre of mass changed: its box room (box_room.hpp) is not known.
     void forgetBoxRoom(int body);
     void reportTouch(const Contact& c, bool begin);  // begin/end event for a contact or sensor
