@@ -187,6 +187,9 @@ b2Vec2 predicted(Vec2 displacement) {
 }  // namespace
 
 bool CollisionSystem::moveProxy(int proxy, const AABB& aabb, Vec2 displacement) {
+    // A box that overflowed (a body at the edge of the float range) never enters the tree: the
+    // proxy keeps its fat AABB.
+    if (!isFinite(aabb.lower) || !isFinite(aabb.upper)) return false;
     const b2AABB box{toB2(aabb.lower), toB2(aabb.upper)};
     const b2Vec2 d = predicted(displacement);
     if (const int leaf = impl_->staticLeaf[proxy]; leaf >= 0) impl_->staticTree.MoveProxy(leaf, box, d);

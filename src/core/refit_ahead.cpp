@@ -86,6 +86,9 @@ void startTreeRefit(World::Impl& w, const StepContext& ctx) {
             const Rot q = integrateRotation(b.xf.q, turn);  // R(θ + hω), to first order: a prediction
             p.center = b.center + p.displacement;
             p.xf = {p.center - rotate(q, b.localCenter), q};
+            // A huge but finite speed (a restored snapshot's, before the solver clamps it) can
+            // overflow the prediction: no box is made of it, the real end pose decides.
+            if (!isFinite(p.xf.p) || !std::isfinite(q.c) || !std::isfinite(q.s)) continue;
             p.refit = !boxesInside(w, index, p.center, p.xf);
         }
     });
