@@ -15,6 +15,10 @@ public:
     bool contains(uint64_t key) const;
     bool insert(uint64_t key);  // false if already present
     void erase(uint64_t key);   // no-op if absent
+    // Starts loading the key's home slot: a caller that knows its next keys ahead hides the miss.
+    void prefetch(uint64_t key) const {
+        if (!slots_.empty()) __builtin_prefetch(&slots_[home(key)], 1);
+    }
     size_t size() const { return count_; }
     void reserve(size_t count);  // room for `count` keys without growing (a restore's contacts)
 

@@ -160,9 +160,10 @@ void updatePairs(World::Impl& w) {
                 // are most of what a large moving proxy finds: they are dropped here, before the sort.
                 if (other == proxy || (other < proxy && collision.wasMoved(other))) return true;
                 // A pair whose boxes overlapped at the last update has its contact (updateContacts
-                // destroys only those whose boxes are apart) or is not wanted: no lookup needed.
-                if (collision.overlappedBefore(proxy, other)) return true;
-                if (cache.pairs.contains(proxyPairKey(proxy, other)) || !pairWanted(w, proxy, other)) return true;
+                // destroys only those whose boxes are apart) or is not wanted. Of the others, the few
+                // that have a contact (two sleepers' boxes are not checked) are dropped by addPair's
+                // one lookup: looking here too would miss the cache twice per new pair.
+                if (collision.overlappedBefore(proxy, other) || !pairWanted(w, proxy, other)) return true;
                 NewPair p{collision.proxyKey(proxy), collision.proxyKey(other), proxy, other};
                 if (std::tie(p.b.shape, p.b.child) < std::tie(p.a.shape, p.a.child)) {
                     std::swap(p.a, p.b);
@@ -186,7 +187,12 @@ void updatePairs(World::Impl& w) {
     std::sort(newPairs.begin(), newPairs.end(), [](const NewPair& x, const NewPair& y) {
         return std::tie(x.a.shape, x.a.child, x.b.shape, x.b.child) < std::tie(y.a.shape, y.a.child, y.b.shape, y.b.child);
     });
-    for (const NewPair& p : newPairs) addPair(w, p.proxyA, p.proxyB);
+    // Each pair's lookup misses the cache: ask for the slot a few pairs ahead.
+    constexpr size_t ahead = 8;
+    for (size_t i = 0; i < newPairs.size(); ++i) {
+        if (i + ahead < newPairs.size()) cache.pairs.prefetch(proxyPairKey(newPairs[i + ahead].proxyA, newPairs[i + ahead].proxyB));
+        addPair(w, newPairs[i].proxyA, newPairs[i].proxyB);
+    }
 }
 
 void bindShapes(Contact& c, const ShapeData& a, const ShapeData& b) {
