@@ -62,7 +62,10 @@ void rememberManifoldPose(Contact& c, const Body& a, const Body& b, bool keepabl
     c.reuseOffset = relativeOffset(a, b);
     c.reuseAngleA = a.angle;
     c.reuseAngleB = b.angle;
-    rememberReuseRotations(c);
+    // R(θ₀) without a sine and cosine per body: a body's rotation is R(θ) of its angle
+    // (body_store.hpp), which is how rememberReuseRotations derives them again after a restore.
+    c.reuseRotA = a.xf.q;
+    c.reuseRotB = b.xf.q;
     for (int i = 0; i < c.pointCount; ++i) c.points[i].baseSeparation = c.points[i].separation;
 }
 
