@@ -14,6 +14,9 @@ struct Body {
     uint32_t generation = 0;
     bool alive = false;
     BodyType type = BodyType::Static;
+    // Beside the pose: the narrowphase asks every contact's bodies whether they are awake, then
+    // reads their poses, so the two share a cache line.
+    bool awake = true;
     Transform xf;          // origin frame
     float angle = 0;       // accumulated θ; xf.q = Rot(θ)
     Vec2 localCenter;      // centre of mass, body frame
@@ -25,7 +28,7 @@ struct Body {
     float mass = 0, invMass = 0;
     float inertia = 0, invInertia = 0;  // scalar I about the centre of mass
     float linearDamping = 0, angularDamping = 0, gravityScale = 1;
-    bool fixedRotation = false, bullet = false, allowSleep = true, awake = true;
+    bool fixedRotation = false, bullet = false, allowSleep = true;
     float sleepTime = 0;
     void* userData = nullptr;
     std::vector<int> shapes;
