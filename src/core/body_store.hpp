@@ -15,8 +15,9 @@ struct Body {
     bool alive = false;
     BodyType type = BodyType::Static;
     // Beside the pose: the narrowphase asks every contact's bodies whether they are awake, then
-    // reads their poses, so the two share a cache line.
+    // reads their poses, and the solver asks their slots, so these share a cache line.
     bool awake = true;
+    int solverIndex = 0;   // slot in StepScratch::states during a step; 0 = static
     Transform xf;          // origin frame
     float angle = 0;       // accumulated θ; xf.q = Rot(θ)
     Vec2 localCenter;      // centre of mass, body frame
@@ -32,7 +33,6 @@ struct Body {
     float sleepTime = 0;
     void* userData = nullptr;
     std::vector<int> shapes;
-    int solverIndex = 0;   // slot in StepScratch::states during a step; 0 = static
     int jointCount = 0;    // joints attached (maintained by the joint store)
     int islandNext = -1;   // next body of the island it fell asleep with
 
