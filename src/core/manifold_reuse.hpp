@@ -30,8 +30,8 @@ bool reuseManifold(Contact& c, const Body& a, const Body& b, const ReuseLimits& 
 // while it has no points.
 void rememberManifoldPose(Contact& c, const Body& a, const Body& b, bool keepable);
 
-// R(θ₀) of the remembered angles, which a kept manifold turns its anchors back by (also after a
-// snapshot is read: the rotations are not saved).
+// R(θ₀) of the remembered angles, which a kept manifold turns its anchors back by, after a
+// snapshot is read (the rotations are not saved; rememberManifoldPose copies the bodies' R(θ)).
 inline void rememberReuseRotations(Contact& c) {
     c.reuseRotA = Rot::fromAngle(c.reuseAngleA);
     c.reuseRotB = Rot::fromAngle(c.reuseAngleB);
