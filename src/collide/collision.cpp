@@ -99,9 +99,43 @@ struct CollisionSystem::Impl {
         return std::nullopt;
     }
 
+    // By shape index, a circle about the body origin holding the whole shape, skin and rounding
+    // included (extent 0: segments and chains, which have none), and the shape's Box2D radius.
+    struct Bound {
+        float extent = 0.0f, radius = 0.0f;
+    };
+    std::vector<Bound> bounds;
+
     Geometry& slot(int shape) {
-        if (static_cast<size_t>(shape) >= geometry.size()) geometry.resize(shape + 1);
+        if (static_cast<size_t>(shape) >= geometry.size()) {
+            geometry.resize(shape + 1);
+            bounds.resize(shape + 1);
+        }
         return geometry[shape];
+    }
+
+    void setGeometry(int shape, Geometry g) {
+        slot(shape) = std::move(g);
+        Bound& bound = bounds[shape];
+        bound = {};
+        if (auto* c = std::get_if<b2CircleShape>(&geometry[shape])) bound = {c->m_p.Length() + c->m_radius, c->m_radius};
+        if (auto* p = std::get_if<b2PolygonShape>(&geometry[shape])) {
+            for (int i = 0; i < p->m_count; ++i) bound.extent = std::max(bound.extent, p->m_vertices[i].Length());
+            bound = {bound.extent + p->m_radius, p->m_radius};
+        }
+    }
+
+    // Whether two shapes are too far apart for b2Collide* to report a point. Their cores are
+    // D ≥ |pB − pA| − (extentA − rA) − (extentB − rB) apart, r = rA + rB the radii. b2CollidePolygons
+    // keeps clipped points up to r past a face's ends, where their separation along the face
+    // normal is only √(D² − r²): a point comes while D ≤ √2 r, never once |pB − pA| > extentA +
+    // extentB + (√2 − 1) r. Half of r and a slop more absorb the float error.
+    bool apart(int shapeA, Vec2 originA, int shapeB, Vec2 originB) const {
+        const Bound& a = bounds[shapeA];
+        const Bound& b = bounds[shapeB];
+        if (!(a.extent > 0.0f && b.extent > 0.0f)) return false;
+        const float reach = a.extent + b.extent + 0.5f * (a.radius + b.radius) + linearSlop;
+        return lengthSquared(originB - originA) > reach * reach;
     }
 };
 
@@ -109,11 +143,11 @@ CollisionSystem::CollisionSystem() : impl_(std::make_unique<Impl>()) {}
 CollisionSystem::~CollisionSystem() = default;
 CollisionSystem& CollisionSystem::operator=(CollisionSystem&&) noexcept = default;
 
-void CollisionSystem::setGeometry(int shape, const Circle& circle) { impl_->slot(shape) = toB2(circle); }
-void CollisionSystem::setGeometry(int shape, const Polygon& polygon) { impl_->slot(shape) = polygonToB2(polygon); }
+void CollisionSystem::setGeometry(int shape, const Circle& circle) { impl_->setGeometry(shape, toB2(circle)); }
+void CollisionSystem::setGeometry(int shape, const Polygon& polygon) { impl_->setGeometry(shape, polygonToB2(polygon)); }
 
-void CollisionSystem::setGeometry(int shape, const Segment& segment) { impl_->slot(shape) = toB2(segment); }
-void CollisionSystem::setGeometry(int shape, const Capsule& capsule) { impl_->slot(shape) = capsuleToB2(capsule); }
+void CollisionSystem::setGeometry(int shape, const Segment& segment) { impl_->setGeometry(shape, toB2(segment)); }
+void CollisionSystem::setGeometry(int shape, const Capsule& capsule) { impl_->setGeometry(shape, capsuleToB2(capsule)); }
 
 void CollisionSystem::setGeometry(int shape, const Chain& chain) {
     const std::vector<Vec2>& v = chain.vertices;
@@ -129,10 +163,10 @@ void CollisionSystem::setGeometry(int shape, const Chain& chain) {
     ChainEdges edges(edgeCount);
     for (int i = 0; i < edgeCount; ++i)
         edges[i].SetOneSided(toB2(vertex(i - 1)), toB2(vertex(i)), toB2(vertex(i + 1)), toB2(vertex(i + 2)));
-    impl_->slot(shape) = std::move(edges);
+    impl_->setGeometry(shape, std::move(edges));
 }
 
-void CollisionSystem::clearGeometry(int shape) { impl_->slot(shape) = std::monostate{}; }
+void CollisionSystem::clearGeometry(int shape) { impl_->setGeometry(shape, std::monostate{}); }
 
 int CollisionSystem::childCount(int shape) const {
     const Geometry& g = impl_->geometry[shape];
@@ -294,6 +328,7 @@ float skin(const b2Shape& shape) {
 }  // namespace
 
 Manifold CollisionSystem::collide(ChildKey a, const Transform& xfA, ChildKey b, const Transform& xfB, bool box2dSkin) const {
+    if (impl_->apart(a.shape, xfA.p, b.shape, xfB.p)) return {};
     const Geometry& ga = impl_->geometry[a.shape];
     const Geometry& gb = impl_->geometry[b.shape];
     const b2Shape& shapeA = childShape(ga, a.child);
@@ -506,15 +541,7 @@ float CollisionSystem::minExtent(int shape) const {
     return extent + p->m_radius;
 }
 
-float CollisionSystem::maxExtent(int shape) const {
-    const Geometry& g = impl_->geometry[shape];
-    if (auto* c = std::get_if<b2CircleShape>(&g)) return c->m_p.Length() + c->m_radius;
-    const auto* p = std::get_if<b2PolygonShape>(&g);
-    if (!p) return 0.0f;
-    float extent = 0.0f;
-    for (int i = 0; i < p->m_count; ++i) extent = std::max(extent, p->m_vertices[i].Length());
-    return extent + p->m_radius;
-}
+float CollisionSystem::maxExtent(int shape) const { return impl_->bounds[shape].extent; }
 
 float CollisionSystem::turningReach(int shape, Vec2 pivot) const {
     const b2Vec2 o = toB2(pivot);
