@@ -120,8 +120,9 @@ struct CollisionSystem::Impl {
         bound = {};
         if (auto* c = std::get_if<b2CircleShape>(&geometry[shape])) bound = {c->m_p.Length() + c->m_radius, c->m_radius};
         if (auto* p = std::get_if<b2PolygonShape>(&geometry[shape])) {
-            for (int i = 0; i < p->m_count; ++i) bound.extent = std::max(bound.extent, p->m_vertices[i].Length());
-            bound = {bound.extent + p->m_radius, p->m_radius};
+            float farthest = 0.0f;
+            for (int i = 0; i < p->m_count; ++i) farthest = std::max(farthest, p->m_vertices[i].Length());
+            bound = {farthest + p->m_radius, p->m_radius};
         }
     }
 
