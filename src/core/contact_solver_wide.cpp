@@ -113,9 +113,13 @@ void layOutBlocks(World::Impl& w, const StepContext& ctx, const ColorStarts& sta
             const int lanes = std::min(width, start[color + 1] - start[color] - width * (b - blockStart[color]));
             alignas(32) float present[2][width];  // 1 where a lane's point is a manifold point
             const int* order = &s.contactOrder[start[color] + width * (b - blockStart[color])];  // the lanes' constraints
-            // The lanes' contacts lie anywhere in the pool: ask for all of them before gathering
-            // any, so that their cache misses overlap.
-            for (int lane = 0; lane < lanes; ++lane) prefetchSolverFields<0>(w.contactCache.contacts[s.constraints[order[lane]].contact]);
+            // The lanes' contacts lie anywhere in the pool: the next block's (the constraints right
+            // after these in contactOrder) load while this block gathers, and this block's own were
+            // asked for by the block before (the first of a worker's run asks for them here).
+            const int position = static_cast<int>(order - s.contactOrder.data());
+            const int fetchEnd = std::min(position + lanes + width, static_cast<int>(s.contactOrder.size()));
+            for (int p = b == begin ? position : position + lanes; p < fetchEnd; ++p)
+                prefetchSolverFields<0>(w.contactCache.contacts[s.constraints[s.contactOrder[p]].contact]);
             for (int lane = 0; lane < width; ++lane) {
                 const bool used = lane < lanes;
                 ContactConstraint* c = used ? &s.constraints[order[lane]] : nullptr;
