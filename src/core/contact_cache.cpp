@@ -233,6 +233,7 @@ void updateContacts(World::Impl& w) {
     ContactCache& cache = w.contactCache;
     const int count = cache.contacts.capacity();
     cache.narrowphase.resize(static_cast<size_t>(count));
+    cache.touching.resize(static_cast<size_t>(count));
     w.workers.parallelFor(count, 64, [&](int begin, int end, int) {
         for (int index = begin; index < end; ++index) {
             Contact& c = cache.contacts[index];
@@ -243,6 +244,7 @@ void updateContacts(World::Impl& w) {
                 result = Narrowphase::Quiet;
             }
             cache.narrowphase[index] = result;
+            cache.touching[index] = c.alive && c.touching ? 1 : 0;
         }
     });
     bool woken = false;  // a sleeper woke in this pass: skipped contacts may be due after all
@@ -259,6 +261,7 @@ void updateContacts(World::Impl& w) {
         }
         if (result == Narrowphase::Apart) {
             destroyContact(w, index);
+            cache.touching[index] = 0;
             continue;
         }
         if (c.sensor) {
@@ -278,6 +281,7 @@ void updateContacts(World::Impl& w) {
             c.reuseValid = false;
         }
         if (!c.touching) c.rollingImpulse = 0.0f;
+        cache.touching[index] = c.touching ? 1 : 0;
         if (c.touching != (result == Narrowphase::WasTouching)) w.reportTouch(c, c.touching);
         // An awake body touching a sleeping one wakes the sleeper's island.
         if (c.touching) {

@@ -87,6 +87,9 @@ struct ContactCache {
     std::vector<NewPair> newPairs;                 // updatePairs scratch: the pairs found,
     std::vector<std::vector<NewPair>> newPairsOf;  // by each worker
     std::vector<Narrowphase> narrowphase;          // updateContacts scratch, by contact
+    // updateContacts scratch, by contact: alive and touching, as it left them. prepareContacts
+    // selects the step's constraints from these bytes instead of a cache line of every pool slot.
+    std::vector<uint8_t> touching;
 };
 
 // Stages of the step (step.cpp): new contacts for the pairs of proxies that moved (in the order

@@ -80,8 +80,9 @@ void gatherContactLane(const World::Impl& w, const ContactConstraint& c, float* 
 void prepareContacts(World::Impl& w, const StepContext& ctx) {
     StepScratch& s = w.scratch;
     auto constrains = [&](int index) {
+        if (!w.contactCache.touching[index]) return false;  // dead or not touching, without reading the contact
         const Contact& contact = w.contactCache.contacts[index];
-        return contact.alive && contact.touching && (w.bodies[contact.bodyA].awake || w.bodies[contact.bodyB].awake);
+        return w.bodies[contact.bodyA].awake || w.bodies[contact.bodyB].awake;
     };
     w.workers.parallelSelect(
         w.contactCache.contacts.capacity(), constrains,
