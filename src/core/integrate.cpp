@@ -18,16 +18,17 @@ namespace perpdot {
 
 namespace {
 
-// Marks the bodies with a touching contact: one pass over the contact pool, rather than a walk of
-// each body's contact list (a turning container has thousands, most of them not touching), on the
-// workers: a mark is only ever set to 1, so two workers marking one body agree (relaxed stores).
+// Marks the bodies with a touching contact: one pass over the contacts' touching bytes
+// (ContactCache::touching), rather than a walk of each body's contact list (a turning container
+// has thousands, most of them not touching), on the workers: a mark is only ever set to 1, so two
+// workers marking one body agree (relaxed stores).
 void markTouching(World::Impl& w) {
     w.scratch.touchingBodies.assign(w.bodies.capacity(), 0);
     const ContactCache& cache = w.contactCache;
     w.workers.parallelFor(cache.contacts.capacity(), 1024, [&](int begin, int end, int) {
         for (int index = begin; index < end; ++index) {
+            if (!cache.touching[index]) continue;  // dead or not touching (updateContacts' bytes)
             const Contact& c = cache.contacts[index];
-            if (!c.alive || !c.touching) continue;
             std::atomic_ref(w.scratch.touchingBodies[c.bodyA]).store(1, std::memory_order_relaxed);
             std::atomic_ref(w.scratch.touchingBodies[c.bodyB]).store(1, std::memory_order_relaxed);
         }
