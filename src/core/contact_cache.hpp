@@ -54,10 +54,17 @@ struct Contact {
 
 // Starts loading the lines of a contact that the solver reads and writes (all before its kept pose),
 // for reading (0) or writing (1): a block's lanes ask for theirs together, so that the misses overlap.
+// Four loads cover every line of the fields wherever in a line the contact begins:
+// bytes 0, 64 and 128 lie in three lines in a row, and the last byte in the fourth if there is one.
 template <int forWrite>
 inline void prefetchSolverFields(const Contact& c) {
+    constexpr std::size_t fieldBytes = offsetof(Contact, reuseValid);
+    static_assert(fieldBytes > 128 && fieldBytes <= 192, "the solver's fields span three or four lines");
     const auto* bytes = reinterpret_cast<const char*>(&c);
-    for (std::size_t line = 0; line < offsetof(Contact, reuseValid); line += 64) __builtin_prefetch(bytes + line, forWrite);
+    __builtin_prefetch(bytes, forWrite);
+    __builtin_prefetch(bytes + 64, forWrite);
+    __builtin_prefetch(bytes + 128, forWrite);
+    __builtin_prefetch(bytes + fieldBytes - 1, forWrite);
 }
 
 struct ShapeData;
