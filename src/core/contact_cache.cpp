@@ -236,15 +236,20 @@ void updateContacts(World::Impl& w) {
     cache.touching.resize(static_cast<size_t>(count));
     w.workers.parallelFor(count, 64, [&](int begin, int end, int) {
         for (int index = begin; index < end; ++index) {
+            if (!cache.contacts.isLive(index)) {  // a free slot: its contact is not even read
+                cache.narrowphase[index] = Narrowphase::Skipped;
+                cache.touching[index] = 0;
+                continue;
+            }
             Contact& c = cache.contacts[index];
-            const bool due = c.alive && (w.bodies[c.bodyA].awake || w.bodies[c.bodyB].awake);
+            const bool due = w.bodies[c.bodyA].awake || w.bodies[c.bodyB].awake;
             Narrowphase result = due ? collideContact(w, index) : Narrowphase::Skipped;
             if (isQuiet(w, c, result)) {
                 if (!c.touching) c.rollingImpulse = 0.0f;
                 result = Narrowphase::Quiet;
             }
             cache.narrowphase[index] = result;
-            cache.touching[index] = c.alive && c.touching ? 1 : 0;
+            cache.touching[index] = c.touching ? 1 : 0;
         }
     });
     bool woken = false;  // a sleeper woke in this pass: skipped contacts may be due after all
