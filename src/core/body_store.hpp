@@ -15,9 +15,9 @@ struct Body {
     bool alive = false;
     BodyType type = BodyType::Static;
     // Beside the pose: the narrowphase asks every contact's bodies whether they are awake, then
-    // reads their poses, and the solver asks their slots, so these share a cache line.
+    // reads their poses, so these share a cache line. (A body's solver slot during a step is
+    // StepScratch::bodySlots.)
     bool awake = true;
-    int solverIndex = 0;   // slot in StepScratch::states during a step; 0 = static
     Transform xf;          // origin frame
     float angle = 0;       // accumulated θ; xf.q = Rot(θ)
     Vec2 localCenter;      // centre of mass, body frame

@@ -135,6 +135,9 @@ bool isQuiet(const World::Impl& w, const Contact& c, Narrowphase result) {
     return (ba.awake || ba.type == BodyType::Static) && (bb.awake || bb.type == BodyType::Static);
 }
 
+// A contact's entry in ContactCache::touchingPoints.
+uint8_t touchingPoints(const Contact& c) { return c.touching ? static_cast<uint8_t>(c.pointCount) : 0; }
+
 }  // namespace
 
 void updatePairs(World::Impl& w) {
@@ -233,15 +236,17 @@ void updateContacts(World::Impl& w) {
     ContactCache& cache = w.contactCache;
     const int count = cache.contacts.capacity();
     cache.narrowphase.resize(static_cast<size_t>(count));
-    cache.touching.resize(static_cast<size_t>(count));
+    cache.touchingPoints.resize(static_cast<size_t>(count));
+    cache.bodiesOf.resize(static_cast<size_t>(count));
     w.workers.parallelFor(count, 64, [&](int begin, int end, int) {
         for (int index = begin; index < end; ++index) {
             if (!cache.contacts.isLive(index)) {  // a free slot: its contact is not even read
                 cache.narrowphase[index] = Narrowphase::Skipped;
-                cache.touching[index] = 0;
+                cache.touchingPoints[index] = 0;
                 continue;
             }
             Contact& c = cache.contacts[index];
+            cache.bodiesOf[index] = {c.bodyA, c.bodyB};
             const bool due = w.bodies[c.bodyA].awake || w.bodies[c.bodyB].awake;
             Narrowphase result = due ? collideContact(w, index) : Narrowphase::Skipped;
             if (isQuiet(w, c, result)) {
@@ -249,7 +254,7 @@ void updateContacts(World::Impl& w) {
                 result = Narrowphase::Quiet;
             }
             cache.narrowphase[index] = result;
-            cache.touching[index] = c.touching ? 1 : 0;
+            cache.touchingPoints[index] = touchingPoints(c);
         }
     });
     bool woken = false;  // a sleeper woke in this pass: skipped contacts may be due after all
@@ -266,7 +271,7 @@ void updateContacts(World::Impl& w) {
         }
         if (result == Narrowphase::Apart) {
             destroyContact(w, index);
-            cache.touching[index] = 0;
+            cache.touchingPoints[index] = 0;
             continue;
         }
         if (c.sensor) {
@@ -286,7 +291,7 @@ void updateContacts(World::Impl& w) {
             c.reuseValid = false;
         }
         if (!c.touching) c.rollingImpulse = 0.0f;
-        cache.touching[index] = c.touching ? 1 : 0;
+        cache.touchingPoints[index] = touchingPoints(c);
         if (c.touching != (result == Narrowphase::WasTouching)) w.reportTouch(c, c.touching);
         // An awake body touching a sleeping one wakes the sleeper's island.
         if (c.touching) {

@@ -79,10 +79,14 @@ void gatherContactLane(const World::Impl& w, const ContactConstraint& c, float* 
 // (prepareContactBlocks), with the overflow or in a contact group.
 void prepareContacts(World::Impl& w, const StepContext& ctx) {
     StepScratch& s = w.scratch;
+    // A body is awake this step where it has a solver slot (a static one never is).
+    // Contacts are not read: updateContacts left their points and bodies in dense arrays.
+    const std::vector<int>& slotOf = s.bodySlots;
+    const ContactCache& cache = w.contactCache;
     auto constrains = [&](int index) {
-        if (!w.contactCache.touching[index]) return false;  // dead or not touching, without reading the contact
-        const Contact& contact = w.contactCache.contacts[index];
-        return w.bodies[contact.bodyA].awake || w.bodies[contact.bodyB].awake;
+        if (cache.touchingPoints[index] == 0) return false;
+        const auto [bodyA, bodyB] = cache.bodiesOf[index];
+        return slotOf[bodyA] != 0 || slotOf[bodyB] != 0;
     };
     w.workers.parallelSelect(
         w.contactCache.contacts.capacity(), constrains,
@@ -92,12 +96,12 @@ void prepareContacts(World::Impl& w, const StepContext& ctx) {
             s.constraintSlots.resize(total);
         },
         [&](int k, int index) {
-            const Contact& contact = w.contactCache.contacts[index];
+            const auto [bodyA, bodyB] = cache.bodiesOf[index];
             ContactConstraint& c = s.constraints[k];
             c.contact = index;
-            c.indexA = w.bodies[contact.bodyA].solverIndex;
-            c.indexB = w.bodies[contact.bodyB].solverIndex;
-            c.pointCount = contact.pointCount;
+            c.indexA = slotOf[bodyA];
+            c.indexB = slotOf[bodyB];
+            c.pointCount = cache.touchingPoints[index];
             c.block = -1;
             s.constraintSlots[k] = {c.indexA, c.indexB};
         });

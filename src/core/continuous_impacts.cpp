@@ -123,9 +123,10 @@ void collectMoverPairs(World::Impl& w) {
             int m = moverOfBody[other];
             if (m >= 0 && m < fastCount) return true;  // fast against fast: below
             if (m < 0) {
-                const BodyState& s = w.scratch.states[o.solverIndex];  // slot 0 (asleep): no motion
+                const int slot = w.scratch.bodySlots[other];
+                const BodyState& s = w.scratch.states[slot];  // slot 0 (asleep): no motion
                 const Vec2 c0 = o.center - s.dp;
-                const float a0 = o.angle - w.scratch.stepRotation[o.solverIndex];
+                const float a0 = o.angle - w.scratch.stepRotation[slot];
                 m = static_cast<int>(movers.size());
                 movers.push_back({.body = other, .c0 = c0, .c1 = o.center, .a0 = a0, .a1 = o.angle, .v = o.v,
                                   .w = o.w, .stepStart = c0});

@@ -18,19 +18,19 @@ namespace perpdot {
 
 namespace {
 
-// Marks the bodies with a touching contact: one pass over the contacts' touching bytes
-// (ContactCache::touching), rather than a walk of each body's contact list (a turning container
-// has thousands, most of them not touching), on the workers: a mark is only ever set to 1, so two
-// workers marking one body agree (relaxed stores).
+// Marks the bodies with a touching contact: one pass over the contacts' dense touching points and
+// bodies (ContactCache::touchingPoints, bodiesOf), rather than a walk of each body's contact list
+// (a turning container has thousands, most of them not touching), on the workers: a mark is only
+// ever set to 1, so two workers marking one body agree (relaxed stores).
 void markTouching(World::Impl& w) {
     w.scratch.touchingBodies.assign(w.bodies.capacity(), 0);
     const ContactCache& cache = w.contactCache;
     w.workers.parallelFor(cache.contacts.capacity(), 1024, [&](int begin, int end, int) {
         for (int index = begin; index < end; ++index) {
-            if (!cache.touching[index]) continue;  // dead or not touching (updateContacts' bytes)
-            const Contact& c = cache.contacts[index];
-            std::atomic_ref(w.scratch.touchingBodies[c.bodyA]).store(1, std::memory_order_relaxed);
-            std::atomic_ref(w.scratch.touchingBodies[c.bodyB]).store(1, std::memory_order_relaxed);
+            if (cache.touchingPoints[index] == 0) continue;  // free or not touching
+            const auto [bodyA, bodyB] = cache.bodiesOf[index];
+            std::atomic_ref(w.scratch.touchingBodies[bodyA]).store(1, std::memory_order_relaxed);
+            std::atomic_ref(w.scratch.touchingBodies[bodyB]).store(1, std::memory_order_relaxed);
         }
     });
 }
@@ -42,12 +42,12 @@ void markTouching(World::Impl& w) {
 void integrateVelocities(World::Impl& w, const StepContext& ctx) {
     w.scratch.awakeBodies.clear();
     markTouching(w);
+    w.scratch.bodySlots.assign(static_cast<size_t>(w.bodies.capacity()), 0);
     for (int i = 0; i < w.bodies.capacity(); ++i) {
-        Body& b = w.bodies[i];
-        b.solverIndex = 0;
+        const Body& b = w.bodies[i];
         if (!b.alive || b.type == BodyType::Static || !b.awake) continue;
         w.scratch.awakeBodies.push_back(i);
-        b.solverIndex = static_cast<int>(w.scratch.awakeBodies.size());
+        w.scratch.bodySlots[static_cast<size_t>(i)] = static_cast<int>(w.scratch.awakeBodies.size());
     }
     const int count = static_cast<int>(w.scratch.awakeBodies.size());
     w.scratch.states.resize(static_cast<size_t>(count) + 1);

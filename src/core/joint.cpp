@@ -108,11 +108,11 @@ void prepareJoint(PreparedJoint& j, const World::Impl& w, const Joint& joint, co
     const Body& b = w.bodies[joint.bodyB];
     j.type = joint.type;
     j.data = joint.data;
-    j.indexA = a.solverIndex;
-    j.indexB = b.solverIndex;
+    j.indexA = w.scratch.bodySlots[joint.bodyA];
+    j.indexB = w.scratch.bodySlots[joint.bodyB];
     // A body outside the solver (static, or held asleep) is immovable for this step.
-    j.mass = {a.solverIndex ? a.invMass : 0.0f, a.solverIndex ? a.invInertia : 0.0f,
-              b.solverIndex ? b.invMass : 0.0f, b.solverIndex ? b.invInertia : 0.0f};
+    j.mass = {j.indexA ? a.invMass : 0.0f, j.indexA ? a.invInertia : 0.0f, j.indexB ? b.invMass : 0.0f,
+              j.indexB ? b.invInertia : 0.0f};
     j.anchorA = rotate(a.xf.q, joint.localAnchorA - a.localCenter);
     j.anchorB = rotate(b.xf.q, joint.localAnchorB - b.localCenter);
     j.deltaCenter = b.center - a.center;
@@ -192,7 +192,7 @@ void prepareJoints(World::Impl& w, const StepContext& ctx) {
     s.invHs = ctx.invHs;
     auto awake = [&](int index) {
         const Joint& joint = s.joints[index];
-        return joint.alive && (w.bodies[joint.bodyA].solverIndex != 0 || w.bodies[joint.bodyB].solverIndex != 0);
+        return joint.alive && (w.scratch.bodySlots[joint.bodyA] != 0 || w.scratch.bodySlots[joint.bodyB] != 0);
     };
     // prepareJoint writes every field, so last step's elements are reused as they are.
     const int count = w.workers.parallelSelect(

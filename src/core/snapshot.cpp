@@ -537,7 +537,8 @@ void World::restore(std::span<const uint8_t> bytes) {
     fresh->contactCache.newPairs = std::move(impl_->contactCache.newPairs);
     fresh->contactCache.newPairsOf = std::move(impl_->contactCache.newPairsOf);
     fresh->contactCache.narrowphase = std::move(impl_->contactCache.narrowphase);
-    fresh->contactCache.touching = std::move(impl_->contactCache.touching);
+    fresh->contactCache.touchingPoints = std::move(impl_->contactCache.touchingPoints);
+    fresh->contactCache.bodiesOf = std::move(impl_->contactCache.bodiesOf);
     // Moved proxies are state, but the frames re-simulated after a rollback move as many as this
     // world's did: room for them.
     fresh->movedProxies.reserve(impl_->movedProxies.capacity());

@@ -55,8 +55,8 @@ constexpr auto fields(const WorldDef*) {
 }
 
 // Not listed: generation and alive (written by the pool), userData, shapes (written as a list,
-// like the body's contact list, which World::Impl::contactLists holds), solverIndex (per step).
-static_assert(reviewedLayout<Body, 152>);
+// like the body's contact list, which World::Impl::contactLists holds).
+static_assert(reviewedLayout<Body, 144>);
 constexpr auto fields(const Body*) {
     return std::tuple{field("type", &Body::type),
                       field("xf", &Body::xf),

@@ -73,6 +73,9 @@ struct StepScratch {
     // Solver arrays.
     std::vector<BodyState> states;
     std::vector<int> awakeBodies;       // body index of states[i + 1]
+    // By body index: its slot in states, 0 for a body outside the solver (static or asleep).
+    // Dense, so that selecting the step's constraints reads 4 bytes per body, not a Body's line.
+    std::vector<int> bodySlots;
     std::vector<uint8_t> touchingBodies;  // by body index: has a touching contact (integrateVelocities)
     std::vector<float> stepRotation;    // Δθ of states[i], summed over substeps
     std::vector<uint8_t> bodyMotion;    // finalizeBodies scratch, by awake body: its Motion (integrate.cpp)
