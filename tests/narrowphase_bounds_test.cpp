@@ -8,19 +8,12 @@
 #include <cmath>
 #include <random>
 
+#include "collide/b2_convert.hpp"
 #include "collide/collision.hpp"
 #include "collide/polygon_b2.hpp"
 
 namespace perpdot::collide {
 namespace {
-
-b2Transform toB2(const Transform& xf) {
-    b2Transform t;
-    t.p = {xf.p.x, xf.p.y};
-    t.q.c = xf.q.c;
-    t.q.s = xf.q.s;
-    return t;
-}
 
 // Box2D's point count for shape A (a polygon) against B (a polygon, or the circle when given).
 int box2dPointCount(const Polygon& a, const Transform& xfA, const Polygon* b, const Circle* circle, const Transform& xfB) {
@@ -28,9 +21,7 @@ int box2dPointCount(const Polygon& a, const Transform& xfA, const Polygon* b, co
     b2Manifold m;
     m.pointCount = 0;
     if (circle) {
-        b2CircleShape c;
-        c.m_p = {circle->center.x, circle->center.y};
-        c.m_radius = circle->radius;
+        const b2CircleShape c = toB2(*circle);
         b2CollidePolygonAndCircle(&m, &pa, toB2(xfA), &c, toB2(xfB));
     } else {
         const b2PolygonShape pb = polygonToB2(*b);

@@ -2,6 +2,7 @@
 #include "collide/collision.hpp"
 #include "collide/time_of_impact.hpp"
 
+#include "collide/b2_convert.hpp"
 #include "collide/capsule_b2.hpp"
 #include "collide/polygon_b2.hpp"
 
@@ -25,16 +26,10 @@ namespace perpdot::collide {
 
 namespace {
 
-b2Vec2 toB2(Vec2 v) { return {v.x, v.y}; }
+using collide::toB2;  // b2_convert.hpp's, beside the shape conversions below
+
 Vec2 fromB2(const b2Vec2& v) { return {v.x, v.y}; }
 AABB fromB2(const b2AABB& box) { return {fromB2(box.lowerBound), fromB2(box.upperBound)}; }
-b2Transform toB2(const Transform& xf) {
-    b2Transform t;
-    t.p = toB2(xf.p);
-    t.q.c = xf.q.c;
-    t.q.s = xf.q.s;
-    return t;
-}
 
 // A chain is kept as its one-sided child edges, each knowing its neighbours (ghost vertices),
 // which is what keeps sliding shapes from catching on inner corners.
@@ -46,13 +41,6 @@ const b2Shape& childShape(const Geometry& g, int child) {
     if (auto* c = std::get_if<b2CircleShape>(&g)) return *c;
     if (auto* p = std::get_if<b2PolygonShape>(&g)) return *p;
     return std::get<b2EdgeShape>(g);
-}
-
-b2CircleShape toB2(const Circle& circle) {
-    b2CircleShape c;
-    c.m_p = toB2(circle.center);
-    c.m_radius = circle.radius;
-    return c;
 }
 
 b2EdgeShape toB2(const Segment& segment) {

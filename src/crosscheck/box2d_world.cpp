@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <unordered_map>
 
+#include "collide/b2_convert.hpp"
 #include "collide/capsule_b2.hpp"
 #include "collide/polygon_b2.hpp"
 #include "crosscheck/stepper.hpp"
@@ -14,7 +15,7 @@
 namespace perpdot::crosscheck {
 namespace {
 
-b2Vec2 toB2(Vec2 v) { return {v.x, v.y}; }
+using collide::toB2;
 
 b2BodyType toB2(BodyType type) {
     switch (type) {
