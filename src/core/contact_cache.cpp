@@ -261,8 +261,8 @@ void updateContacts(World::Impl& w) {
     for (int index = 0; index < count; ++index) {
         Narrowphase result = cache.narrowphase[index];
         if (result == Narrowphase::Quiet || (result == Narrowphase::Skipped && !woken)) continue;
+        if (!cache.contacts.isLive(index)) continue;  // free, or destroyed earlier in this pass
         Contact& c = cache.contacts[index];
-        if (!c.alive) continue;
         Body& ba = w.bodies[c.bodyA];
         Body& bb = w.bodies[c.bodyB];
         if (result == Narrowphase::Skipped) {
