@@ -2,6 +2,7 @@
 /// 2D vector algebra in Hecker's notation: perp, perpDot, and the velocity of a body point.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -108,6 +109,12 @@ struct AABB {
 /// Whether two boxes overlap (touching counts).
 constexpr bool overlaps(const AABB& a, const AABB& b) {
     return !(b.lower.x > a.upper.x || b.lower.y > a.upper.y || a.lower.x > b.upper.x || a.lower.y > b.upper.y);
+}
+
+/// The smallest box holding both boxes.
+constexpr AABB combine(const AABB& a, const AABB& b) {
+    return {{std::min(a.lower.x, b.lower.x), std::min(a.lower.y, b.lower.y)},
+            {std::max(a.upper.x, b.upper.x), std::max(a.upper.y, b.upper.y)}};
 }
 
 /// π as a float.

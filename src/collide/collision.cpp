@@ -287,6 +287,31 @@ void CollisionSystem::queryImpl(const AABB& aabb, void* context, bool (*visit)(v
     impl_->tree.Query(&callback, b2AABB{toB2(aabb.lower), toB2(aabb.upper)});
 }
 
+void CollisionSystem::queryGroupImpl(const int* group, int count, void* context, void (*visit)(void*, int, int)) const {
+    struct Callback {
+        const std::vector<AABB>& fat;
+        const int* group;
+        int count;
+        AABB boxes[groupSize];
+        void* context;
+        void (*visit)(void*, int, int);
+        // The tree tested the hit's box against the union box; b2TestOverlap(leaf, member) is
+        // `overlaps` (touching counts), so each member sees exactly what its own query would.
+        bool QueryCallback(int32 other) {
+            const AABB& box = fat[other];
+            for (int m = 0; m < count; ++m)
+                if (overlaps(box, boxes[m])) visit(context, group[m], other);
+            return true;
+        }
+    } callback{impl_->fat, group, count, {}, context, visit};
+    AABB all = impl_->fat[group[0]];
+    for (int m = 0; m < count; ++m) {
+        callback.boxes[m] = impl_->fat[group[m]];
+        all = combine(all, callback.boxes[m]);
+    }
+    impl_->tree.Query(&callback, b2AABB{toB2(all.lower), toB2(all.upper)});
+}
+
 void CollisionSystem::queryStaticImpl(const AABB& aabb, void* context, bool (*visit)(void*, int)) const {
     struct Callback {
         const b2DynamicTree& staticTree;

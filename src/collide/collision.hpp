@@ -123,6 +123,17 @@ public:
         using V = std::remove_reference_t<Visit>;
         queryImpl(aabb, &visit, [](void* v, int proxy) { return (*static_cast<V*>(v))(proxy); });
     }
+    // Proxies a moved proxy is grouped with for one tree query (queryGroup), at most.
+    static constexpr int groupSize = 8;
+    // Calls visit(proxy, other) for each proxy of group[0, count) (count <= groupSize) and every
+    // proxy `other` whose fat AABB overlaps proxy's fat AABB (proxy itself included): the pairs
+    // query(fatAABB(proxy)) would visit, found by one query with the group's union box whose hits
+    // are sorted out against the members' boxes. Worth it for proxies whose union box is compact.
+    template <class Visit>
+    void queryGroup(const int* group, int count, Visit&& visit) const {
+        using V = std::remove_reference_t<Visit>;
+        queryGroupImpl(group, count, &visit, [](void* v, int proxy, int other) { (*static_cast<V*>(v))(proxy, other); });
+    }
     // The same over the static proxies only (visit gets the proxy id, as from query).
     template <class Visit>
     void queryStatic(const AABB& aabb, Visit&& visit) const {
@@ -196,6 +207,7 @@ public:
 private:
     void queryImpl(const AABB& aabb, void* context, bool (*visit)(void*, int)) const;
     void queryStaticImpl(const AABB& aabb, void* context, bool (*visit)(void*, int)) const;
+    void queryGroupImpl(const int* group, int count, void* context, void (*visit)(void*, int, int)) const;
     void rayCastImpl(Vec2 p1, Vec2 p2, void* context, float (*visit)(void*, int, float)) const;
     struct Impl;
     std::unique_ptr<Impl> impl_;

@@ -138,13 +138,72 @@ bool isQuiet(const World::Impl& w, const Contact& c, Narrowphase result) {
 // A contact's entry in ContactCache::touchingPoints.
 uint8_t touchingPoints(const Contact& c) { return c.touching ? static_cast<uint8_t>(c.pointCount) : 0; }
 
+// Spreads the low 16 bits of v to the even bits (a Morton code's half).
+uint32_t spreadBits(uint32_t v) {
+    v &= 0xFFFFu;
+    v = (v | (v << 8)) & 0x00FF00FFu;
+    v = (v | (v << 4)) & 0x0F0F0F0Fu;
+    v = (v | (v << 2)) & 0x33333333u;
+    v = (v | (v << 1)) & 0x55555555u;
+    return v;
+}
+
+// Splits the moved proxies that look for pairs (those whose filter accepts some shape: pairWanted
+// would refuse all that others find) into groups for one tree query each: in the Morton order of
+// their boxes' centres, the next proxy joins the group while the union box stays within twice
+// the members' own area.
+void groupMovedProxies(const World::Impl& w, ContactCache& cache) {
+    const collide::CollisionSystem& collision = w.collision;
+    std::vector<std::pair<uint32_t, int>>& order = cache.mortonOrder;
+    order.clear();
+    order.reserve(w.movedProxies.size());
+    AABB bounds{};
+    for (int proxy : w.movedProxies) {
+        if (w.shapes.pairsWithNothing(w.shapes[collision.proxyKey(proxy).shape].filter)) continue;
+        const AABB box = collision.fatAABB(proxy);
+        bounds = order.empty() ? box : combine(bounds, box);
+        order.emplace_back(0u, proxy);
+    }
+    const Vec2 size = bounds.upper - bounds.lower;
+    const float scale = 65535.0f / std::max(std::max(size.x, size.y), 1e-6f);
+    for (std::pair<uint32_t, int>& entry : order) {
+        const AABB box = collision.fatAABB(entry.second);
+        const Vec2 cell = scale * (0.5f * (box.lower + box.upper) - bounds.lower);
+        entry.first = spreadBits(static_cast<uint32_t>(cell.x)) | (spreadBits(static_cast<uint32_t>(cell.y)) << 1);
+    }
+    std::sort(order.begin(), order.end());
+    cache.queried.clear();
+    cache.groupStarts.clear();
+    cache.queried.reserve(order.size());
+    cache.groupStarts.reserve(order.size() + 1);
+    auto area = [](const AABB& box) { return (box.upper.x - box.lower.x) * (box.upper.y - box.lower.y); };
+    AABB all{};
+    float areas = 0.0f;
+    int members = 0;
+    for (const auto& [code, proxy] : order) {
+        const AABB box = collision.fatAABB(proxy);
+        const AABB joined = combine(all, box);
+        if (members > 0 && members < collide::CollisionSystem::groupSize && area(joined) <= 2.0f * (areas + area(box))) {
+            all = joined;
+            areas += area(box);
+            ++members;
+        } else {
+            cache.groupStarts.push_back(static_cast<int>(cache.queried.size()));
+            all = box;
+            areas = area(box);
+            members = 1;
+        }
+        cache.queried.push_back(proxy);
+    }
+    cache.groupStarts.push_back(static_cast<int>(cache.queried.size()));
+}
+
 }  // namespace
 
 void updatePairs(World::Impl& w) {
     ContactCache& cache = w.contactCache;
     collide::CollisionSystem& collision = w.collision;
-    // Every proxy that moved out of its fat AABB (or is new) looks for overlapping proxies, unless
-    // its filter rejects every shape (pairWanted would refuse all it finds).
+    groupMovedProxies(w, cache);
     // The workers query the tree side by side, each into its own list.
     // Their lists hold as many pairs as the contact pool has slots: more would grow the pool anyway.
     const size_t most = static_cast<size_t>(cache.contacts.capacity());
@@ -153,27 +212,27 @@ void updatePairs(World::Impl& w) {
         found.clear();
         found.reserve(most);
     }
-    w.workers.parallelFor(static_cast<int>(w.movedProxies.size()), 16, [&](int begin, int end, int worker) {
+    const int groups = static_cast<int>(cache.groupStarts.size()) - 1;
+    w.workers.parallelFor(groups, 4, [&](int begin, int end, int worker) {
         std::vector<NewPair>& found = cache.newPairsOf[static_cast<size_t>(worker)];
-        for (int k = begin; k < end; ++k) {
-            const int proxy = w.movedProxies[k];
-            if (w.shapes.pairsWithNothing(w.shapes[collision.proxyKey(proxy).shape].filter)) continue;
-            collision.query(collision.fatAABB(proxy), [&](int other) {
+        for (int g = begin; g < end; ++g) {
+            const int first = cache.groupStarts[static_cast<size_t>(g)];
+            const int count = cache.groupStarts[static_cast<size_t>(g) + 1] - first;
+            collision.queryGroup(&cache.queried[static_cast<size_t>(first)], count, [&](int proxy, int other) {
                 // When both moved, only the pair's lower proxy reports it. Pairs that have a contact
                 // are most of what a large moving proxy finds: they are dropped here, before the sort.
-                if (other == proxy || (other < proxy && collision.wasMoved(other))) return true;
+                if (other == proxy || (other < proxy && collision.wasMoved(other))) return;
                 // A pair whose boxes overlapped at the last update has its contact (updateContacts
                 // destroys only those whose boxes are apart) or is not wanted. Of the others, the few
                 // that have a contact (two sleepers' boxes are not checked) are dropped by addPair's
                 // one lookup: looking here too would miss the cache twice per new pair.
-                if (collision.overlappedBefore(proxy, other) || !pairWanted(w, proxy, other)) return true;
+                if (collision.overlappedBefore(proxy, other) || !pairWanted(w, proxy, other)) return;
                 NewPair p{collision.proxyKey(proxy), collision.proxyKey(other), proxy, other};
                 if (std::tie(p.b.shape, p.b.child) < std::tie(p.a.shape, p.a.child)) {
                     std::swap(p.a, p.b);
                     std::swap(p.proxyA, p.proxyB);
                 }
                 found.push_back(p);
-                return true;
             });
         }
     });

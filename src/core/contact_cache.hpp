@@ -94,6 +94,10 @@ struct ContactCache {
     collide::PairSet pairs;  // broadphase pairs that have a contact
     std::vector<NewPair> newPairs;                 // updatePairs scratch: the pairs found,
     std::vector<std::vector<NewPair>> newPairsOf;  // by each worker
+    // updatePairs scratch: the moved proxies that look for pairs, in groups that share a tree
+    // query (group g is queried[groupStarts[g], groupStarts[g + 1])).
+    std::vector<int> queried, groupStarts;
+    std::vector<std::pair<uint32_t, int>> mortonOrder;
     std::vector<Narrowphase> narrowphase;          // updateContacts scratch, by contact
     // updateContacts scratch, by contact, as it left them: the manifold points of a live touching
     // contact (0: free or not touching) and its two bodies. markTouching and prepareContacts read

@@ -536,6 +536,9 @@ void World::restore(std::span<const uint8_t> bytes) {
     fresh->events = std::move(impl_->events);
     fresh->contactCache.newPairs = std::move(impl_->contactCache.newPairs);
     fresh->contactCache.newPairsOf = std::move(impl_->contactCache.newPairsOf);
+    fresh->contactCache.queried = std::move(impl_->contactCache.queried);
+    fresh->contactCache.groupStarts = std::move(impl_->contactCache.groupStarts);
+    fresh->contactCache.mortonOrder = std::move(impl_->contactCache.mortonOrder);
     fresh->contactCache.narrowphase = std::move(impl_->contactCache.narrowphase);
     fresh->contactCache.touchingPoints = std::move(impl_->contactCache.touchingPoints);
     fresh->contactCache.bodiesOf = std::move(impl_->contactCache.bodiesOf);
