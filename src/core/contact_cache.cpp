@@ -88,7 +88,7 @@ void addPair(World::Impl& w, int proxyA, int proxyB) {
     c.proxyB = proxyB;
     c.a = keyA;
     c.b = keyB;
-    bindShapes(c, *sa, *sb);
+    bindShapes(cache, index, *sa, *sb);
     c.sensor = sa->sensor || sb->sensor;
     cache.bodyLists.link(cache.contacts, index, 0, c.bodyA);
     cache.bodyLists.link(cache.contacts, index, 1, c.bodyB);
@@ -257,11 +257,17 @@ void updatePairs(World::Impl& w) {
     }
 }
 
-void bindShapes(Contact& c, const ShapeData& a, const ShapeData& b) {
+void bindShapes(ContactCache& cache, int contact, const ShapeData& a, const ShapeData& b) {
+    Contact& c = cache.contacts[contact];
     c.bodyA = a.body;
     c.bodyB = b.body;
     c.turnsA = isFlat(a);
     c.turnsB = isFlat(b);
+    const auto capacity = static_cast<size_t>(cache.contacts.capacity());
+    cache.bodiesOf.resize(capacity);
+    cache.touchingPoints.resize(capacity);
+    cache.bodiesOf[static_cast<size_t>(contact)] = {a.body, b.body};
+    cache.touchingPoints[static_cast<size_t>(contact)] = touchingPoints(c);
 }
 
 void destroyContact(World::Impl& w, int index) {
@@ -295,19 +301,24 @@ void updateContacts(World::Impl& w) {
     ContactCache& cache = w.contactCache;
     const int count = cache.contacts.capacity();
     cache.narrowphase.resize(static_cast<size_t>(count));
-    cache.touchingPoints.resize(static_cast<size_t>(count));
+    cache.touchingPoints.resize(static_cast<size_t>(count));  // a restored pool's free slots at its end
     cache.bodiesOf.resize(static_cast<size_t>(count));
     w.workers.parallelFor(count, 64, [&](int begin, int end, int) {
         for (int index = begin; index < end; ++index) {
-            if (!cache.contacts.isLive(index)) {  // a free slot: its contact is not even read
+            // A free slot, or a contact whose bodies both sleep (its points are as they were): the
+            // contact is not even read.
+            auto asleep = [&](int body) { return !w.bodies[body].awake; };
+            if (!cache.contacts.isLive(index)) {
                 cache.narrowphase[index] = Narrowphase::Skipped;
                 cache.touchingPoints[index] = 0;
                 continue;
             }
+            if (asleep(cache.bodiesOf[index][0]) && asleep(cache.bodiesOf[index][1])) {
+                cache.narrowphase[index] = Narrowphase::Skipped;
+                continue;
+            }
             Contact& c = cache.contacts[index];
-            cache.bodiesOf[index] = {c.bodyA, c.bodyB};
-            const bool due = w.bodies[c.bodyA].awake || w.bodies[c.bodyB].awake;
-            Narrowphase result = due ? collideContact(w, index) : Narrowphase::Skipped;
+            Narrowphase result = collideContact(w, index);
             if (isQuiet(w, c, result)) {
                 if (!c.touching) c.rollingImpulse = 0.0f;
                 result = Narrowphase::Quiet;

@@ -99,11 +99,14 @@ struct ContactCache {
     std::vector<int> queried, groupStarts;
     std::vector<std::pair<uint32_t, int>> mortonOrder;
     std::vector<Narrowphase> narrowphase;          // updateContacts scratch, by contact
-    // updateContacts scratch, by contact, as it left them: the manifold points of a live touching
-    // contact (0: free or not touching) and its two bodies. markTouching and prepareContacts read
-    // these instead of the contacts' cache lines (a pool of 58,000 contacts is 13 MB).
-    std::vector<uint8_t> touchingPoints;
+    // By contact slot, what updateContacts passes over contacts whose bodies both sleep with, and
+    // markTouching and prepareContacts select constraints by, without reading the contacts' cache
+    // lines (a pool of 58,000 contacts is 13 MB): its two bodies (they never change) and the
+    // manifold points of a touching contact (0: free or not touching). bindShapes sets both as a
+    // contact is created or restored; updateContacts keeps the points in step with the contact
+    // (a sleeping contact's do not change) and zeroes a free slot's.
     std::vector<std::array<int, 2>> bodiesOf;
+    std::vector<uint8_t> touchingPoints;
 };
 
 // Stages of the step (step.cpp): new contacts for the pairs of proxies that moved (in the order
@@ -115,7 +118,7 @@ void updateContacts(World::Impl& world);
 void destroyContact(World::Impl& world, int contact);  // with its end event
 // What a contact takes from its two shapes for its whole life: their bodies and whether its
 // points turn with them (a shape's geometry never changes).
-void bindShapes(Contact& c, const ShapeData& a, const ShapeData& b);
+void bindShapes(ContactCache& cache, int contact, const ShapeData& a, const ShapeData& b);
 void destroyContactsOf(World::Impl& world, int body, int shape);  // shape = -1: all of the body's contacts
 
 }  // namespace perpdot

@@ -452,7 +452,7 @@ void World::restore(std::span<const uint8_t> bytes) {
         if (sa.body == sb.body || !collide::CollisionSystem::canCollide(sa.type, sb.type) ||
             collide::CollisionSystem::mustSwap(sa.type, sb.type))
             in.fail("contact " + std::to_string(i) + " pairs shapes that cannot collide");
-        bindShapes(c, sa, sb);
+        bindShapes(w.contactCache, i, sa, sb);
     }
     w.contactCache.contacts.restoreFreeList(readFreeList(in, contactAlive, "free contact"));
     std::vector<bool> edgeSeen(2 * static_cast<size_t>(contactCount), false);
@@ -540,8 +540,6 @@ void World::restore(std::span<const uint8_t> bytes) {
     fresh->contactCache.groupStarts = std::move(impl_->contactCache.groupStarts);
     fresh->contactCache.mortonOrder = std::move(impl_->contactCache.mortonOrder);
     fresh->contactCache.narrowphase = std::move(impl_->contactCache.narrowphase);
-    fresh->contactCache.touchingPoints = std::move(impl_->contactCache.touchingPoints);
-    fresh->contactCache.bodiesOf = std::move(impl_->contactCache.bodiesOf);
     // Moved proxies are state, but the frames re-simulated after a rollback move as many as this
     // world's did: room for them.
     fresh->movedProxies.reserve(impl_->movedProxies.capacity());
