@@ -138,15 +138,17 @@ bool isQuiet(const World::Impl& w, const Contact& c, Narrowphase result) {
 // A contact's entry in ContactCache::touchingPoints.
 uint8_t touchingPoints(const Contact& c) { return c.touching ? static_cast<uint8_t>(c.pointCount) : 0; }
 
-// Spreads the low 16 bits of v to the even bits (a Morton code's half).
+// Spreads the 16 bits of v (below 2^16) to the even bits: half a Morton code.
 uint32_t spreadBits(uint32_t v) {
-    v &= 0xFFFFu;
     v = (v | (v << 8)) & 0x00FF00FFu;
     v = (v | (v << 4)) & 0x0F0F0F0Fu;
     v = (v | (v << 2)) & 0x33333333u;
     v = (v | (v << 1)) & 0x55555555u;
     return v;
 }
+
+// A Morton coordinate: v in [0, 65535], clamped (NaN: 0; a box at the float range's edge).
+uint32_t cellOf(float v) { return v >= 0.0f ? (v < 65535.0f ? static_cast<uint32_t>(v) : 65535u) : 0u; }
 
 // Splits the moved proxies that look for pairs (those whose filter accepts some shape: pairWanted
 // would refuse all that others find) into groups for one tree query each: in the Morton order of
@@ -169,7 +171,7 @@ void groupMovedProxies(const World::Impl& w, ContactCache& cache) {
     for (std::pair<uint32_t, int>& entry : order) {
         const AABB box = collision.fatAABB(entry.second);
         const Vec2 cell = scale * (0.5f * (box.lower + box.upper) - bounds.lower);
-        entry.first = spreadBits(static_cast<uint32_t>(cell.x)) | (spreadBits(static_cast<uint32_t>(cell.y)) << 1);
+        entry.first = spreadBits(cellOf(cell.x)) | (spreadBits(cellOf(cell.y)) << 1);
     }
     std::sort(order.begin(), order.end());
     cache.queried.clear();
