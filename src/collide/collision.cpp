@@ -121,6 +121,11 @@ struct CollisionSystem::Impl {
         }
         return std::nullopt;
     }
+    // Whether both proxies' fat AABBs were known to overlap when pairs were last updated.
+    bool overlappedBefore(int proxyA, int proxyB) const {
+        const std::optional<AABB> a = priorOf(proxyA), b = priorOf(proxyB);
+        return a && b && overlaps(*a, *b);
+    }
 
     // By shape index, a circle about the body origin holding the whole shape, skin and rounding
     // included (extent 0: segments and chains, which have none), and the shape's Box2D radius.
@@ -316,10 +321,6 @@ void CollisionSystem::clearMoved(int proxy) {
 }
 void CollisionSystem::requery(int proxy) { impl_->since[proxy] = Impl::Since::New; }
 
-bool CollisionSystem::overlappedBefore(int proxyA, int proxyB) const {
-    const std::optional<AABB> a = impl_->priorOf(proxyA), b = impl_->priorOf(proxyB);
-    return a && b && overlaps(*a, *b);
-}
 
 ChildKey CollisionSystem::proxyKey(int proxy) const {
     const auto packed = static_cast<uint64_t>(reinterpret_cast<uintptr_t>(impl_->tree.GetUserData(proxy)));
@@ -335,9 +336,9 @@ void CollisionSystem::queryImpl(const AABB& aabb, void* context, bool (*visit)(v
     impl_->tree.Query(&callback, b2AABB{toB2(aabb.lower), toB2(aabb.upper)});
 }
 
-void CollisionSystem::queryGroupImpl(const int* group, int count, void* context, void (*visit)(void*, int, int)) const {
+void CollisionSystem::queryNewPairsImpl(const int* group, int count, void* context, void (*visit)(void*, int, int)) const {
     struct Callback {
-        const std::vector<AABB>& fat;
+        const Impl& impl;
         const int* group;
         int count;
         AABB boxes[groupSize];
@@ -346,12 +347,15 @@ void CollisionSystem::queryGroupImpl(const int* group, int count, void* context,
         // The tree tested the hit's box against the union box; b2TestOverlap(leaf, member) is
         // `overlaps` (touching counts), so each member sees exactly what its own query would.
         bool QueryCallback(int32 other) {
-            const AABB& box = fat[other];
-            for (int m = 0; m < count; ++m)
-                if (overlaps(box, boxes[m])) visit(context, group[m], other);
+            const AABB& box = impl.fat[other];
+            for (int m = 0; m < count; ++m) {
+                const int proxy = group[m];
+                if (!overlaps(box, boxes[m]) || other == proxy || (other < proxy && impl.tree.WasMoved(other))) continue;
+                if (!impl.overlappedBefore(proxy, other)) visit(context, proxy, other);
+            }
             return true;
         }
-    } callback{impl_->fat, group, count, {}, context, visit};
+    } callback{*impl_, group, count, {}, context, visit};
     AABB all = impl_->fat[group[0]];
     for (int m = 0; m < count; ++m) {
         callback.boxes[m] = impl_->fat[group[m]];

@@ -113,9 +113,6 @@ public:
     void clearMoved(int proxy);
     // The proxy's box at the last pair update is forgotten (it is looked for as a new one).
     void requery(int proxy);
-    // Whether both proxies' fat AABBs were known to overlap when pairs were last updated (clearMoved):
-    // then the pair has its contact already, or was not wanted, and finding it again adds nothing.
-    bool overlappedBefore(int proxyA, int proxyB) const;
     ChildKey proxyKey(int proxy) const;
     // Calls visit(proxy) for every proxy whose fat AABB overlaps `aabb`; visit returns false to stop.
     template <class Visit>
@@ -123,16 +120,19 @@ public:
         using V = std::remove_reference_t<Visit>;
         queryImpl(aabb, &visit, [](void* v, int proxy) { return (*static_cast<V*>(v))(proxy); });
     }
-    // Proxies a moved proxy is grouped with for one tree query (queryGroup), at most.
+    // Proxies a moved proxy is grouped with for one tree query (queryNewPairs), at most.
     static constexpr int groupSize = 8;
     // Calls visit(proxy, other) for each proxy of group[0, count) (count <= groupSize) and every
-    // proxy `other` whose fat AABB overlaps proxy's fat AABB (proxy itself included): the pairs
-    // query(fatAABB(proxy)) would visit, found by one query with the group's union box whose hits
-    // are sorted out against the members' boxes. Worth it for proxies whose union box is compact.
+    // proxy `other` whose fat AABB overlaps proxy's fat AABB and that may be a new partner: not
+    // proxy itself, not a lower proxy that moved too (that one reports the pair), and not one
+    // whose box overlapped proxy's when pairs were last updated (such a pair has its contact
+    // already, or was not wanted; a moved proxy's box from before its move is kept). One tree query
+    // with the group's union box finds them, its hits sorted out against the members' boxes:
+    // worth it for proxies whose union box is compact.
     template <class Visit>
-    void queryGroup(const int* group, int count, Visit&& visit) const {
+    void queryNewPairs(const int* group, int count, Visit&& visit) const {
         using V = std::remove_reference_t<Visit>;
-        queryGroupImpl(group, count, &visit, [](void* v, int proxy, int other) { (*static_cast<V*>(v))(proxy, other); });
+        queryNewPairsImpl(group, count, &visit, [](void* v, int proxy, int other) { (*static_cast<V*>(v))(proxy, other); });
     }
     // The same over the static proxies only (visit gets the proxy id, as from query).
     template <class Visit>
@@ -207,7 +207,7 @@ public:
 private:
     void queryImpl(const AABB& aabb, void* context, bool (*visit)(void*, int)) const;
     void queryStaticImpl(const AABB& aabb, void* context, bool (*visit)(void*, int)) const;
-    void queryGroupImpl(const int* group, int count, void* context, void (*visit)(void*, int, int)) const;
+    void queryNewPairsImpl(const int* group, int count, void* context, void (*visit)(void*, int, int)) const;
     void rayCastImpl(Vec2 p1, Vec2 p2, void* context, float (*visit)(void*, int, float)) const;
     struct Impl;
     std::unique_ptr<Impl> impl_;

@@ -220,15 +220,13 @@ void updatePairs(World::Impl& w) {
         for (int g = begin; g < end; ++g) {
             const int first = cache.groupStarts[static_cast<size_t>(g)];
             const int count = cache.groupStarts[static_cast<size_t>(g) + 1] - first;
-            collision.queryGroup(&cache.queried[static_cast<size_t>(first)], count, [&](int proxy, int other) {
-                // When both moved, only the pair's lower proxy reports it. Pairs that have a contact
-                // are most of what a large moving proxy finds: they are dropped here, before the sort.
-                if (other == proxy || (other < proxy && collision.wasMoved(other))) return;
-                // A pair whose boxes overlapped at the last update has its contact (updateContacts
-                // destroys only those whose boxes are apart) or is not wanted. Of the others, the few
-                // that have a contact (two sleepers' boxes are not checked) are dropped by addPair's
-                // one lookup: looking here too would miss the cache twice per new pair.
-                if (collision.overlappedBefore(proxy, other) || !pairWanted(w, proxy, other)) return;
+            // Pairs that have a contact are most of what a large moving proxy finds: those whose
+            // boxes overlapped at the last update (updateContacts destroys only contacts whose boxes
+            // are apart) are dropped by the query, before the sort. Of the others, the few that have
+            // a contact (two sleepers' boxes are not checked) are dropped by addPair's one lookup:
+            // looking here too would miss the cache twice per new pair.
+            collision.queryNewPairs(&cache.queried[static_cast<size_t>(first)], count, [&](int proxy, int other) {
+                if (!pairWanted(w, proxy, other)) return;
                 NewPair p{collision.proxyKey(proxy), collision.proxyKey(other), proxy, other};
                 if (std::tie(p.b.shape, p.b.child) < std::tie(p.a.shape, p.a.child)) {
                     std::swap(p.a, p.b);
