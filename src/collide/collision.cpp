@@ -58,6 +58,8 @@ constexpr float maxMargin = 0.05f;
 // Static children move only when the game moves them: a margin of Box2D v3's speculative distance.
 constexpr float staticMargin = 4.0f * linearSlop;
 
+AABB grownBy(const AABB& box, float margin) { return {box.lower - Vec2{margin, margin}, box.upper + Vec2{margin, margin}}; }
+
 float movingMargin(const b2Shape& shape) {
     float size = 0.0f;
     if (shape.m_type == b2Shape::e_circle) size = shape.m_radius;
@@ -232,7 +234,7 @@ int CollisionSystem::createProxy(const AABB& aabb, ChildKey key, bool isStatic) 
                          : hasGeometry ? movingMargin(childShape(impl_->geometry[key.shape], key.child))
                                        : maxMargin;
     impl_->margin[proxy] = margin;
-    impl_->fit(proxy, {aabb.lower - Vec2{margin, margin}, aabb.upper + Vec2{margin, margin}});
+    impl_->fit(proxy, grownBy(aabb, margin));
     return proxy;
 }
 
@@ -270,7 +272,7 @@ bool CollisionSystem::moveProxy(int proxy, const AABB& aabb, Vec2 displacement) 
     if (!impl_->tree.MoveProxy(proxy, box, d)) return false;
     // The tree's new box is `aabb` grown by its 0.1 m and by b2_aabbMultiplier d along d; the
     // proxy's keeps the growth along d and its own margin around.
-    AABB fit{aabb.lower - Vec2{impl_->margin[proxy], impl_->margin[proxy]}, aabb.upper + Vec2{impl_->margin[proxy], impl_->margin[proxy]}};
+    AABB fit = grownBy(aabb, impl_->margin[proxy]);
     const Vec2 growth = b2_aabbMultiplier * Vec2{d.x, d.y};
     (growth.x < 0.0f ? fit.lower.x : fit.upper.x) += growth.x;
     (growth.y < 0.0f ? fit.lower.y : fit.upper.y) += growth.y;
@@ -320,7 +322,6 @@ void CollisionSystem::clearMoved(int proxy) {
     impl_->since[proxy] = Impl::Since::Kept;
 }
 void CollisionSystem::requery(int proxy) { impl_->since[proxy] = Impl::Since::New; }
-
 
 ChildKey CollisionSystem::proxyKey(int proxy) const {
     const auto packed = static_cast<uint64_t>(reinterpret_cast<uintptr_t>(impl_->tree.GetUserData(proxy)));

@@ -230,9 +230,7 @@ AABB World::aabb(ShapeId id) const {
     const Transform& xf = impl_->bodies[s.body].xf;
     AABB box = impl_->collision.computeAABB(id.index, 0, xf);
     for (int child = 1; child < static_cast<int>(s.proxies.size()); ++child) {
-        const AABB c = impl_->collision.computeAABB(id.index, child, xf);
-        box.lower = {std::min(box.lower.x, c.lower.x), std::min(box.lower.y, c.lower.y)};
-        box.upper = {std::max(box.upper.x, c.upper.x), std::max(box.upper.y, c.upper.y)};
+        box = combine(box, impl_->collision.computeAABB(id.index, child, xf));
     }
     return box;
 }
