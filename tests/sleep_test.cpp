@@ -2,6 +2,8 @@
 // (0.01 m/s, 2°/s), and wakes when something hits it or a force is applied.
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include "perpdot/world.hpp"
 #include "physics_scenes.hpp"
 
@@ -73,6 +75,49 @@ TEST(Sleep, ForceWakesASleepingBody) {
     world.createShape(restless, {}, makeBox(0.5f, 0.5f));
     test::run(world, 120);
     EXPECT_TRUE(world.isAwake(restless));
+}
+
+// Bodies made asleep are islands of their own. A sleeper touched by an awake body wakes, and its
+// contacts take their narrowphase from the next step on (Box2D v3): through a row of sleepers
+// touching edge to edge, waking spreads one box a step, not the whole row in one pass.
+TEST(Sleep, WakingSpreadsOneContactAStepThroughBodiesThatSleptApart) {
+    WorldDef def;
+    def.gravity = {0.0f, 0.0f};
+    World world(def);
+    constexpr int count = 8;
+    std::vector<BodyId> row;
+    for (int i = 0; i < count; ++i) {
+        BodyDef sleeper = test::bodyAt({1.0f * static_cast<float>(i), 0.0f});
+        sleeper.awake = false;
+        row.push_back(world.createBody(sleeper));
+        world.createShape(row.back(), test::material(1.0f), makeBox(0.5f, 0.5f));
+    }
+    const BodyId ram = test::addBox(world, {-1.2f, 0.0f}, 0.5f, 0.5f, test::material(1.0f));
+    world.setLinearVelocity(ram, {3.0f, 0.0f});
+    auto awake = [&] {
+        int n = 0;
+        for (BodyId b : row) n += world.isAwake(b) ? 1 : 0;
+        return n;
+    };
+    int steps = 0;
+    while (awake() == 0 && steps < 60) {
+        world.step(test::dt);
+        ++steps;
+    }
+    ASSERT_EQ(awake(), 1) << "the first box wakes alone, after " << steps << " steps";
+    EXPECT_TRUE(world.isAwake(row[0]));
+    for (int k = 1; k < count; ++k) {
+        world.step(test::dt);
+        EXPECT_LE(awake(), k + 1) << "step " << k << " after the hit";
+    }
+    test::run(world, count);
+    EXPECT_EQ(awake(), count);
+    // Only contacts between awake bodies push: the row and the ram keep the ram's momentum.
+    Vec2 p = world.mass(ram) * world.linearVelocity(ram);
+    for (BodyId b : row) p += world.mass(b) * world.linearVelocity(b);
+    EXPECT_NEAR(p.x, 3.0f, 1e-4f);
+    EXPECT_NEAR(p.y, 0.0f, 1e-4f);
+    EXPECT_GT(world.linearVelocity(row[count - 1]).x, 0.0f) << "the push reached the last box";
 }
 
 }  // namespace
