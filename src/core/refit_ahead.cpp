@@ -22,41 +22,66 @@ namespace perpdot {
 
 namespace {
 
+// The room a box has inside its proxy's fat AABB under and over it, folded into (below, above).
+void foldRoom(Vec2& below, Vec2& above, const AABB& box, const AABB& fat) {
+    below = {std::min(below.x, box.lower.x - fat.lower.x), std::min(below.y, box.lower.y - fat.lower.y)};
+    above = {std::min(above.x, fat.upper.x - box.upper.x), std::min(above.y, fat.upper.y - box.upper.y)};
+}
+
+// The room measured at pose (center, q) into the box room; whether every box was inside.
+bool rememberRoom(BoxRoom& known, Vec2 center, Rot q, Vec2 below, Vec2 above) {
+    const bool inside = std::min(std::min(below.x, below.y), std::min(above.x, above.y)) >= 0.0f;
+    known.center = center;
+    known.q = q;
+    known.below = inside ? below : Vec2{-1.0f, -1.0f};  // else measured again once re-fitted
+    known.above = above;
+    return inside;
+}
+
+constexpr float most = std::numeric_limits<float>::max();
+
 // The body's boxes at pose xf against their fat AABBs, into its box room; with `refitAlong`, the
 // boxes that stick out are re-fitted first (grown along that displacement). Whether all were inside.
-bool measureBoxes(World::Impl& w, int body, Vec2 center, const Transform& xf, const Vec2* refitAlong) {
+// A body of one proxy leaves it and its box in `sole` (when given): its re-fit needs no second look.
+bool measureBoxes(World::Impl& w, int body, Vec2 center, const Transform& xf, const Vec2* refitAlong,
+                  SoleBox* sole = nullptr) {
     BoxRoom& known = w.boxRooms[body];
     const Body& b = w.bodies[body];
     if (known.reach < 0.0f) {  // forgotten: the shapes or the centre of mass changed
         known.reach = 0.0f;
         for (int s : b.shapes) known.reach = std::max(known.reach, w.collision.turningReach(s, b.localCenter));
     }
-    constexpr float most = std::numeric_limits<float>::max();
     Vec2 below{most, most}, above{most, most};
     for (int s : b.shapes) {
         const std::vector<int>& proxies = w.shapes[s].proxies;
         for (int child = 0; child < static_cast<int>(proxies.size()); ++child) {
             const AABB box = w.collision.computeAABB(s, child, xf);
             if (refitAlong != nullptr && w.collision.room(proxies[child], box) < 0.0f) w.refitProxy(proxies[child], box, *refitAlong);
-            const AABB fat = w.collision.fatAABB(proxies[child]);
-            below = {std::min(below.x, box.lower.x - fat.lower.x), std::min(below.y, box.lower.y - fat.lower.y)};
-            above = {std::min(above.x, fat.upper.x - box.upper.x), std::min(above.y, fat.upper.y - box.upper.y)};
+            foldRoom(below, above, box, w.collision.fatAABB(proxies[child]));
+            if (sole != nullptr) *sole = {b.shapes.size() == 1 && proxies.size() == 1 ? proxies[0] : -1, box};
         }
     }
-    const bool inside = std::min(std::min(below.x, below.y), std::min(above.x, above.y)) >= 0.0f;
-    known.center = center;
-    known.q = xf.q;
-    known.below = inside ? below : Vec2{-1.0f, -1.0f};  // else measured again once re-fitted
-    known.above = above;
-    return inside;
+    return rememberRoom(known, center, xf.q, below, above);
 }
 
-// The re-fits, in awake-body order.
+// The re-fits, in awake-body order. A body of one proxy, whose box the check measured sticking
+// out, re-fits that box as measureBoxes would.
 void refitPredicted(int, int, int, void* world) {
     World::Impl& w = *static_cast<World::Impl*>(world);
     const std::vector<PredictedPose>& poses = w.scratch.predictedPoses;
-    for (size_t k = 0; k < poses.size(); ++k)
-        if (poses[k].refit) refitEscaped(w, w.scratch.awakeBodies[k], poses[k].center, poses[k].xf, poses[k].displacement);
+    for (size_t k = 0; k < poses.size(); ++k) {
+        const PredictedPose& p = poses[k];
+        if (!p.refit) continue;
+        const int body = w.scratch.awakeBodies[k];
+        if (p.sole.proxy < 0) {
+            refitEscaped(w, body, p.center, p.xf, p.displacement);
+            continue;
+        }
+        w.refitProxy(p.sole.proxy, p.sole.box, p.displacement);
+        Vec2 below{most, most}, above{most, most};
+        foldRoom(below, above, p.sole.box, w.collision.fatAABB(p.sole.proxy));
+        rememberRoom(w.boxRooms[body], p.center, p.xf.q, below, above);
+    }
 }
 
 }  // namespace
@@ -89,7 +114,8 @@ void startTreeRefit(World::Impl& w, const StepContext& ctx) {
             // A huge but finite speed (a restored snapshot's, before the solver clamps it) can
             // overflow the prediction: no box is made of it, the real end pose decides.
             if (!isFinite(p.xf.p) || !std::isfinite(q.c) || !std::isfinite(q.s)) continue;
-            p.refit = !boxesInside(w, index, p.center, p.xf);
+            p.sole.proxy = -1;
+            p.refit = !w.boxRooms[index].holds(p.center, p.xf.q) && !measureBoxes(w, index, p.center, p.xf, nullptr, &p.sole);
         }
     });
     w.workers.runAside(&refitPredicted, &w);

@@ -63,10 +63,17 @@ struct BodyPose {
 
 // A body's pose predicted for the step's end from its velocity, and whether its proxies re-fit to
 // it while the step is solved (refit_ahead.cpp).
+// A body's one proxy and its box at a pose (-1: the body has more, or none was measured).
+struct SoleBox {
+    int proxy = -1;
+    AABB box;
+};
+
 struct PredictedPose {
     Transform xf;
     Vec2 center, displacement;
     bool refit = false;
+    SoleBox sole;  // where refit: the box that sticks out, measured once
 };
 
 struct StepScratch {
