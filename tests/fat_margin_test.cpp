@@ -5,10 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <random>
-#include <set>
 #include <vector>
 
 #include "collide/collision.hpp"
+#include "tree_probe.hpp"
 
 namespace perpdot::collide {
 namespace {
@@ -60,13 +60,7 @@ TEST(FatMargin, TheNarrowedTreeFindsEveryOverlappingFatBox) {
         }
         const Vec2 c{place(random), place(random)};
         const AABB probe{c - Vec2{2.0f, 2.0f}, c + Vec2{2.0f, 2.0f}};
-        std::set<int> found, expected;
-        collision.query(probe, [&](int proxy) {
-            found.insert(proxy);
-            return true;
-        });
-        for (int proxy : proxies)
-            if (overlaps(collision.fatAABB(proxy), probe)) expected.insert(proxy);
+        const auto [found, expected] = test::foundAndExpected(collision, proxies, probe);
         EXPECT_EQ(found, expected) << "round " << round;
         EXPECT_FALSE(expected.empty());
     }

@@ -17,8 +17,10 @@
 #include <bit>
 #include <cmath>
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
@@ -57,6 +59,19 @@ b2EdgeShape toB2(const Segment& segment) {
 constexpr float maxMargin = 0.05f;
 // Static children move only when the game moves them: a margin of Box2D v3's speculative distance.
 constexpr float staticMargin = 4.0f * linearSlop;
+
+// The tree's node array, reached from a node's box (GetFatAABB's reference): b2TreeNode is a
+// public standard-layout struct whose first member is that box.
+static_assert(std::is_standard_layout_v<b2TreeNode> && offsetof(b2TreeNode, aabb) == 0);
+const b2TreeNode* treeNodes(const b2DynamicTree& tree, int node) {
+    return reinterpret_cast<const b2TreeNode*>(&tree.GetFatAABB(node)) - node;
+}
+
+// Whether `inner` lies within `outer`.
+bool overlapsWithin(const AABB& inner, const AABB& outer) {
+    return outer.lower.x <= inner.lower.x && outer.lower.y <= inner.lower.y && inner.upper.x <= outer.upper.x &&
+           inner.upper.y <= outer.upper.y;
+}
 
 AABB grownBy(const AABB& box, float margin) { return {box.lower - Vec2{margin, margin}, box.upper + Vec2{margin, margin}}; }
 
@@ -107,6 +122,29 @@ struct CollisionSystem::Impl {
         const_cast<b2AABB&>(tree.GetFatAABB(proxy)) = b;
         if (const int leaf = staticLeaf[proxy]; leaf >= 0) const_cast<b2AABB&>(staticTree.GetFatAABB(leaf)) = b;
         fat[proxy] = box;
+    }
+    // Moves a dynamic proxy's leaf to `box` where it is, without re-inserting it, when one of its
+    // nearest ancestors already holds `box` (Box2D v3 enlarges leaves in place and rebuilds later;
+    // 2.4.1's tree has no rebuild, so only moves that keep the tree's boxes are made in place): the
+    // ancestors below that one become the union of their children again. A re-insertion
+    // (b2DynamicTree::MoveProxy: remove, insert, rebalance) walks the tree from the root twice.
+    // Either way the leaf's box is `box`: the pairs found do not depend on which was taken.
+    static constexpr int inPlaceLevels = 5;
+    bool moveInPlace(int proxy, const AABB& box) {
+        const b2AABB b{toB2(box.lower), toB2(box.upper)};
+        auto* nodes = const_cast<b2TreeNode*>(treeNodes(tree, proxy));  // the tree's own, non-const storage
+        int holder = nodes[proxy].parent;
+        for (int level = 0; holder != b2_nullNode && !nodes[holder].aabb.Contains(b); ++level) {
+            if (level + 1 == inPlaceLevels) return false;
+            holder = nodes[holder].parent;
+        }
+        if (holder == b2_nullNode) return false;
+        nodes[proxy].aabb = b;
+        nodes[proxy].moved = true;
+        for (int n = nodes[proxy].parent; n != holder; n = nodes[n].parent)
+            nodes[n].aabb.Combine(nodes[nodes[n].child1].aabb, nodes[nodes[n].child2].aabb);
+        fat[proxy] = box;
+        return true;
     }
     // By proxy id, what is known of its fat AABB when pairs were last updated (overlappedBefore):
     // unchanged since, moved from the box in priorFat, or unknown (created, restored, requeried).
@@ -269,14 +307,17 @@ bool CollisionSystem::moveProxy(int proxy, const AABB& aabb, Vec2 displacement) 
     const b2Vec2 d = predicted(displacement);
     if (const int leaf = impl_->staticLeaf[proxy]; leaf >= 0) impl_->staticTree.MoveProxy(leaf, box, d);
     const AABB before = fatAABB(proxy);
-    if (!impl_->tree.MoveProxy(proxy, box, d)) return false;
-    // The tree's new box is `aabb` grown by its 0.1 m and by b2_aabbMultiplier d along d; the
-    // proxy's keeps the growth along d and its own margin around.
+    // The proxy's new box: `aabb` with its own margin around and the growth along d (the tree's
+    // would be `aabb` grown by its 0.1 m and by b2_aabbMultiplier d along d).
     AABB fit = grownBy(aabb, impl_->margin[proxy]);
     const Vec2 growth = b2_aabbMultiplier * Vec2{d.x, d.y};
     (growth.x < 0.0f ? fit.lower.x : fit.upper.x) += growth.x;
     (growth.y < 0.0f ? fit.lower.y : fit.upper.y) += growth.y;
-    impl_->fit(proxy, fit);
+    const bool escaped = !overlapsWithin(aabb, before);
+    if (!(escaped && impl_->staticLeaf[proxy] < 0 && impl_->moveInPlace(proxy, fit))) {
+        if (!impl_->tree.MoveProxy(proxy, box, d)) return false;
+        impl_->fit(proxy, fit);
+    }
     if (impl_->since[proxy] == Impl::Since::Kept) {
         impl_->since[proxy] = Impl::Since::Moved;
         impl_->priorFat[proxy] = before;
