@@ -68,7 +68,7 @@ const b2TreeNode* treeNodes(const b2DynamicTree& tree, int node) {
 }
 
 // Whether `inner` lies within `outer`.
-bool overlapsWithin(const AABB& inner, const AABB& outer) {
+bool within(const AABB& inner, const AABB& outer) {
     return outer.lower.x <= inner.lower.x && outer.lower.y <= inner.lower.y && inner.upper.x <= outer.upper.x &&
            inner.upper.y <= outer.upper.y;
 }
@@ -127,7 +127,8 @@ struct CollisionSystem::Impl {
     // nearest ancestors already holds `box` (Box2D v3 enlarges leaves in place and rebuilds later;
     // 2.4.1's tree has no rebuild, so only moves that keep the tree's boxes are made in place): the
     // ancestors below that one become the union of their children again. A re-insertion
-    // (b2DynamicTree::MoveProxy: remove, insert, rebalance) walks the tree from the root twice.
+    // (b2DynamicTree::MoveProxy) removes the leaf, descends from the root to insert it again and
+    // rebalances on the way back up.
     // Either way the leaf's box is `box`: the pairs found do not depend on which was taken.
     static constexpr int inPlaceLevels = 5;
     bool moveInPlace(int proxy, const AABB& box) {
@@ -313,7 +314,7 @@ bool CollisionSystem::moveProxy(int proxy, const AABB& aabb, Vec2 displacement) 
     const Vec2 growth = b2_aabbMultiplier * Vec2{d.x, d.y};
     (growth.x < 0.0f ? fit.lower.x : fit.upper.x) += growth.x;
     (growth.y < 0.0f ? fit.lower.y : fit.upper.y) += growth.y;
-    const bool escaped = !overlapsWithin(aabb, before);
+    const bool escaped = !within(aabb, before);
     if (!(escaped && impl_->staticLeaf[proxy] < 0 && impl_->moveInPlace(proxy, fit))) {
         if (!impl_->tree.MoveProxy(proxy, box, d)) return false;
         impl_->fit(proxy, fit);

@@ -65,7 +65,7 @@ bool measureBoxes(World::Impl& w, int body, Vec2 center, const Transform& xf, co
 }
 
 // The re-fits, in awake-body order. A body of one proxy, whose box the check measured sticking
-// out, re-fits that box as measureBoxes would.
+// out (its room is negative: the proxy re-fits), re-fits that box as measureBoxes would.
 void refitPredicted(int, int, int, void* world) {
     World::Impl& w = *static_cast<World::Impl*>(world);
     const std::vector<PredictedPose>& poses = w.scratch.predictedPoses;

@@ -61,14 +61,14 @@ struct BodyPose {
     float angle = 0;
 };
 
-// A body's pose predicted for the step's end from its velocity, and whether its proxies re-fit to
-// it while the step is solved (refit_ahead.cpp).
 // A body's one proxy and its box at a pose (-1: the body has more, or none was measured).
 struct SoleBox {
     int proxy = -1;
     AABB box;
 };
 
+// A body's pose predicted for the step's end from its velocity, and whether its proxies re-fit to
+// it while the step is solved (refit_ahead.cpp).
 struct PredictedPose {
     Transform xf;
     Vec2 center, displacement;
