@@ -67,12 +67,6 @@ const b2TreeNode* treeNodes(const b2DynamicTree& tree, int node) {
     return reinterpret_cast<const b2TreeNode*>(&tree.GetFatAABB(node)) - node;
 }
 
-// Whether `inner` lies within `outer`.
-bool within(const AABB& inner, const AABB& outer) {
-    return outer.lower.x <= inner.lower.x && outer.lower.y <= inner.lower.y && inner.upper.x <= outer.upper.x &&
-           inner.upper.y <= outer.upper.y;
-}
-
 AABB grownBy(const AABB& box, float margin) { return {box.lower - Vec2{margin, margin}, box.upper + Vec2{margin, margin}}; }
 
 float movingMargin(const b2Shape& shape) {
@@ -140,11 +134,10 @@ struct CollisionSystem::Impl {
             holder = nodes[holder].parent;
         }
         if (holder == b2_nullNode) return false;
-        nodes[proxy].aabb = b;
+        fit(proxy, box);
         nodes[proxy].moved = true;
         for (int n = nodes[proxy].parent; n != holder; n = nodes[n].parent)
             nodes[n].aabb.Combine(nodes[nodes[n].child1].aabb, nodes[nodes[n].child2].aabb);
-        fat[proxy] = box;
         return true;
     }
     // By proxy id, what is known of its fat AABB when pairs were last updated (overlappedBefore):
@@ -314,7 +307,7 @@ bool CollisionSystem::moveProxy(int proxy, const AABB& aabb, Vec2 displacement) 
     const Vec2 growth = b2_aabbMultiplier * Vec2{d.x, d.y};
     (growth.x < 0.0f ? fit.lower.x : fit.upper.x) += growth.x;
     (growth.y < 0.0f ? fit.lower.y : fit.upper.y) += growth.y;
-    const bool escaped = !within(aabb, before);
+    const bool escaped = room(proxy, aabb) < 0.0f;
     if (!(escaped && impl_->staticLeaf[proxy] < 0 && impl_->moveInPlace(proxy, fit))) {
         if (!impl_->tree.MoveProxy(proxy, box, d)) return false;
         impl_->fit(proxy, fit);
