@@ -17,20 +17,14 @@ namespace {
 
 using namespace joint_test;
 
-// A prepared revolute joint between solver slots a and b (slot 0: cannot move).
-PreparedJoint hingeBetween(int a, int b, bool motor = false) {
-    PreparedJoint j;
-    j.type = JointType::Revolute;
-    j.indexA = a;
-    j.indexB = b;
-    j.mass = {a ? 1.0f : 0.0f, a ? 1.0f : 0.0f, b ? 1.0f : 0.0f, b ? 1.0f : 0.0f};
-    j.data.emplace<RevoluteJoint>().enableMotor = motor;
-    return j;
+// The key of a prepared revolute joint between solver slots a and b (slot 0: cannot move).
+JointKey hingeBetween(int a, int b, bool motor = false) {
+    return {a, b, JointType::Revolute, a != 0, b != 0, !motor, motor};
 }
 
-std::vector<std::vector<int>> treesOf(const std::vector<PreparedJoint>& prepared, int slots) {
+std::vector<std::vector<int>> treesOf(const std::vector<JointKey>& keys, int slots) {
     RevoluteTrees t;
-    findRevoluteTrees(t, prepared, slots);
+    findRevoluteTrees(t, keys, slots);
     std::vector<std::vector<int>> out;
     for (size_t k = 0; k + 1 < t.start.size(); ++k) out.emplace_back(t.joints.begin() + t.start[k], t.joints.begin() + t.start[k + 1]);
     return out;

@@ -142,7 +142,7 @@ void layOutBlocks(World::Impl& w, const StepContext& ctx, const ColorStarts& sta
 
 }  // namespace
 
-// Colour the constraints in order, in the colouring the joints began (prepareJoints: one graph, so
+// Colour the constraints in order, in the colouring the joints began (colorJoints: one graph, so
 // a colour's joints and contacts share no moving body either), then lay them out colour by colour
 // (Box2D v3's solve order: it keeps stacks as stiff as the plain constraint order does), four or
 // eight to a block; overflow last, prepared into their own rows. The lane width changes no result:

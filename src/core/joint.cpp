@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/joint_revolute.hpp"
 #include "core/joint_solver_wide.hpp"
 #include "core/world_impl.hpp"
 
@@ -120,6 +121,18 @@ void prepareJoint(PreparedJoint& j, const World::Impl& w, const Joint& joint, co
     stagesOf(j.type).prepare(j, ctx, a, b);
 }
 
+// What colorJoints reads of a prepared joint (JointKey); a side moves where it has mass or inertia.
+JointKey keyOf(const PreparedJoint& j) {
+    const JointLaneStages* lanes = stagesOf(j.type).lanes;
+    return {j.indexA,
+            j.indexB,
+            j.type,
+            j.mass.mA != 0.0f || j.mass.iA != 0.0f,
+            j.mass.mB != 0.0f || j.mass.iB != 0.0f,
+            pointRowsOnly(j),
+            lanes != nullptr && lanes->optionalRows(j)};
+}
+
 // Units [begin, end) of colour `color`: its blocks, then its other joints; `wide(stages, blocks,
 // count)` on a run of blocks of one type and `scalar(joint, pair)` on a joint. Joints of one
 // colour share no moving body, so their order within it is free and workers may run its units
@@ -171,22 +184,16 @@ namespace {
 
 // The joints of a type with lanes go to the blocks, unless no colour could take them: -1 alone, 0
 // in lanes with the type's rows alone, 1 with optional rows (JointScratch::laneRows).
-int8_t laneRowsOf(int color, const PreparedJoint& j) {
-    const JointLaneStages* lanes = stagesOf(j.type).lanes;
-    if (color == GraphColoring::overflow || lanes == nullptr) return -1;
-    return lanes->optionalRows(j) ? 1 : 0;
+int8_t laneRowsOf(int color, const JointKey& j) {
+    if (color == GraphColoring::overflow || stagesOf(j.type).lanes == nullptr) return -1;
+    return j.optionalRows ? 1 : 0;
 }
 
 }  // namespace
 
 // Store order, the order of the joints' and bodies' memory, throughout. The workers select the
-// awake joints and prepare them; then, one by one, the joints are coloured (graph_color.hpp:
-// joints of one colour share no moving body, so a pass never waits for the velocities the
-// previous joint wrote, and four of a type can share SIMD lanes), the revolute trees leave the
-// colours, and each joint is sent to the next lane of its colour and type or to its colour's next
-// scalar slot (within a colour the order is free); the workers pack the blocks' lanes.
+// awake joints and prepare them.
 void prepareJoints(World::Impl& w, const StepContext& ctx) {
-    constexpr int overflow = GraphColoring::overflow;
     JointStore& s = store(w);
     JointScratch& d = jointScratch(w);
     s.invHs = ctx.invHs;
@@ -195,25 +202,37 @@ void prepareJoints(World::Impl& w, const StepContext& ctx) {
         return joint.alive && (w.scratch.bodySlots[joint.bodyA] != 0 || w.scratch.bodySlots[joint.bodyB] != 0);
     };
     // prepareJoint writes every field, so last step's elements are reused as they are.
-    const int count = w.workers.parallelSelect(
+    w.workers.parallelSelect(
         s.joints.capacity(), awake,
         [&](int total) {
             d.awake.resize(total);
             d.prepared.resize(total);
+            d.keys.resize(total);
             d.colors.resize(total);
             d.laneRows.resize(total);
         },
         [&](int k, int index) {
             d.awake[k] = index;
             prepareJoint(d.prepared[k], w, s.joints[index], ctx);
+            d.keys[k] = keyOf(d.prepared[k]);
         });
+}
 
+// One by one, the prepared joints are coloured (graph_color.hpp: joints of one colour share no
+// moving body, so a pass never waits for the velocities the previous joint wrote, and four of a
+// type can share SIMD lanes), the revolute trees leave the colours, and each joint is sent to the
+// next lane of its colour and type or to its colour's next scalar slot (within a colour the order
+// is free); the workers pack the blocks' lanes.
+void colorJoints(World::Impl& w) {
+    constexpr int overflow = GraphColoring::overflow;
+    JointScratch& d = jointScratch(w);
+    const int count = static_cast<int>(d.keys.size());
     // One colouring for joints and contacts (the constraint graph): joints first, contacts then
     // take the colours their bodies' joints left (prepareContactBlocks).
     GraphColoring& coloring = w.scratch.coloring;
     coloring.reset(static_cast<int>(w.scratch.states.size()));
     // Joints of revolute trees take no colour: they are solved directly (joint_tree.hpp).
-    findRevoluteTrees(d.trees, d.prepared, static_cast<int>(w.scratch.states.size()));
+    findRevoluteTrees(d.trees, d.keys, static_cast<int>(w.scratch.states.size()));
     // Lanes by colour and type: those of joints with the type's rows alone, and of joints with
     // optional rows (a motor, a limit).
     constexpr int types = jointTypeCount;
@@ -221,7 +240,7 @@ void prepareJoints(World::Impl& w, const StepContext& ctx) {
     std::array<int, overflow + 1> scalarCount{};
     for (int k = 0; k < count; ++k) {
         if (d.trees.inTree[k]) continue;
-        const PreparedJoint& j = d.prepared[k];
+        const JointKey& j = d.keys[k];
         const int color = d.colors[k] = coloring.assign(j.indexA, j.indexB);
         const int8_t rows = d.laneRows[k] = laneRowsOf(color, j);
         if (rows < 0) ++scalarCount[color];
@@ -255,7 +274,7 @@ void prepareJoints(World::Impl& w, const StepContext& ctx) {
             d.scalarOrder[nextScalar[color]++] = k;
             continue;
         }
-        const int type = static_cast<int>(d.prepared[k].type);
+        const int type = static_cast<int>(d.keys[k].type);
         const int lane = d.laneRows[k] > 0 ? nextOptional[color][type]++ : nextPlain[color][type]++;
         d.blockLanes[lane / 4][lane % 4] = k;
         d.blocks[lane / 4].typeEnd = typeEnd[color][type];

@@ -66,7 +66,7 @@ struct JointLaneStages {
 
 // Four prepared joints of one type as the lanes of `block` (every field the passes read is
 // rewritten): their slots, masses and rows; optionalRows: whether one of them has optional rows.
-// joints[i] = -1 marks an empty lane: the static slot, no mass, and lanes[i]'s rows (prepareJoints
+// joints[i] = -1 marks an empty lane: the static slot, no mass, and lanes[i]'s rows (colorJoints
 // passes the block's first joint, so that a block of joints alike solves every lane alike).
 void packJointBlock(JointBlock& block, const std::array<const PreparedJoint*, 4>& lanes, const std::array<int, 4>& joints,
                     bool optionalRows);

@@ -111,6 +111,16 @@ struct PreparedJoint {
     JointData data;
 };
 
+// A prepared joint as the serial passes of colorJoints read it (tree finding, colouring, lane
+// assignment): 16 bytes a joint for them to stream, where a PreparedJoint is 124.
+struct JointKey {
+    int indexA = 0, indexB = 0;  // solver slots
+    JointType type = JointType::Revolute;
+    bool movesA = false, movesB = false;  // the side has mass or inertia (static, asleep or kinematic: not)
+    bool pointRowsOnly = false;           // a revolute joint without motor or limit (joint_tree.hpp)
+    bool optionalRows = false;            // in lanes, rows others of its type lack (JointLaneStages)
+};
+
 // The rows' view of a prepared joint: its bodies' solver states a and b, and their turn this step.
 inline JointPair pairOf(BodyState& a, BodyState& b, const std::vector<float>& stepRotation, const PreparedJoint& j) {
     return {a, b, j.mass, stepRotation[j.indexB] - stepRotation[j.indexA], stepRotation[j.indexA]};
@@ -133,6 +143,7 @@ struct JointScratch {
     // The step's awake joints, prepared in store order: prepared[k] is joints[awake[k]].
     std::vector<int> awake;
     std::vector<PreparedJoint> prepared;
+    std::vector<JointKey> keys;  // keys[k] of prepared[k]
     // The passes' order, colour by colour: colour c is blocks[blockStart[c] .. blockStart[c + 1])
     // four at a time (by type, in JointType's order), then prepared[scalarOrder[k]] for k in
     // [scalarStart[c], scalarStart[c + 1]) one at a time (the types that have no lanes, and every
@@ -142,7 +153,7 @@ struct JointScratch {
     ColorStarts blockStart{}, scalarStart{};
     // Revolute trees (joint_tree.hpp): solved directly after the colours, outside them.
     RevoluteTrees trees;
-    // Scratch of prepareJoints, kept to reuse its memory.
+    // Scratch of colorJoints, kept to reuse its memory.
     std::vector<int> colors;  // of prepared[k], from the step scratch's one colouring
     // Of prepared[k]: -1 solved alone, 0 in lanes with its type's rows alone, 1 in lanes with
     // optional rows (a motor, a limit).

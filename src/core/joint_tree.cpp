@@ -14,10 +14,6 @@
 namespace perpdot {
 namespace {
 
-// A side that cannot move (static, asleep, kinematic) couples nothing: it anchors the tree.
-bool movesA(const PreparedJoint& j) { return j.mass.mA != 0.0f || j.mass.iA != 0.0f; }
-bool movesB(const PreparedJoint& j) { return j.mass.mB != 0.0f || j.mass.iB != 0.0f; }
-
 // The moving body a joint's side stands for, with its inverse mass and inertia and the arm from
 // its centre of mass to the anchor; sign +1 for B (B's anchor velocity counts positive), −1 for A.
 struct Side {
@@ -46,20 +42,21 @@ void couple(std::vector<double>& K, int n, int i, int l, const Side& a, const Si
 // anchors and whether it closes a cycle (K would be singular). A second fixed anchor could pull a
 // chain straight between two points (singular again), so such groups stay with the sequential
 // passes, as do groups too large for a dense K.
-void findRevoluteTrees(RevoluteTrees& t, const std::vector<PreparedJoint>& prepared, int slots) {
-    const int count = static_cast<int>(prepared.size());
+void findRevoluteTrees(RevoluteTrees& t, const std::vector<JointKey>& keys, int slots) {
+    const int count = static_cast<int>(keys.size());
     t.joints.clear();
     t.start.assign(1, 0);
-    t.inTree.assign(prepared.size(), 0);
+    t.inTree.assign(keys.size(), 0);
     if (count < 2) return;
     t.root.resize(slots);
     std::iota(t.root.begin(), t.root.end(), 0);
     t.jointCount.assign(slots, 0);
     t.fixedAnchors.assign(slots, 0);
     t.cyclic.assign(slots, 0);
-    for (const PreparedJoint& j : prepared) {
-        if (!pointRowsOnly(j)) continue;
-        const bool a = movesA(j), b = movesB(j);
+    // A side that cannot move (static, asleep, kinematic) couples nothing: it anchors the tree.
+    for (const JointKey& j : keys) {
+        if (!j.pointRowsOnly) continue;
+        const bool a = j.movesA, b = j.movesB;
         if (a && b) {
             int ra = findRoot(t.root, j.indexA), rb = findRoot(t.root, j.indexB);
             if (ra == rb) {
@@ -85,12 +82,12 @@ void findRevoluteTrees(RevoluteTrees& t, const std::vector<PreparedJoint>& prepa
     for (int r = 1; r < slots && !any; ++r) any = t.root[r] == r && isTree(r);
     if (!any) return;
     // Each joint's group, if it is a tree: -1 otherwise (t.treeOf, by prepared index).
-    t.treeOf.assign(prepared.size(), -1);
+    t.treeOf.assign(keys.size(), -1);
     int inTrees = 0;
     for (int k = 0; k < count; ++k) {
-        const PreparedJoint& j = prepared[k];
-        if (!pointRowsOnly(j) || (!movesA(j) && !movesB(j))) continue;
-        const int r = findRoot(t.root, movesA(j) ? j.indexA : j.indexB);
+        const JointKey& j = keys[k];
+        if (!j.pointRowsOnly || (!j.movesA && !j.movesB)) continue;
+        const int r = findRoot(t.root, j.movesA ? j.indexA : j.indexB);
         if (!isTree(r)) continue;
         t.treeOf[k] = r;
         ++inTrees;

@@ -16,6 +16,7 @@
 
 namespace perpdot {
 
+struct JointKey;
 struct PreparedJoint;
 
 struct RevoluteTrees {
@@ -30,8 +31,8 @@ struct RevoluteTrees {
     std::vector<Vec2> rA, rB;
 };
 
-// The trees among this step's prepared joints; `slots` is the solver's body count.
-void findRevoluteTrees(RevoluteTrees& trees, const std::vector<PreparedJoint>& prepared, int slots);
+// The trees among this step's prepared joints, by their keys; `slots` is the solver's body count.
+void findRevoluteTrees(RevoluteTrees& trees, const std::vector<JointKey>& keys, int slots);
 
 // Warm start (each joint's accumulated impulse) and one pass (with soft bias, or the relax pass
 // without) of every tree. A tree whose K does not factor is solved joint by joint instead.

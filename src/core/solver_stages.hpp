@@ -30,7 +30,7 @@ struct SolverStage {
 
 class SolverStages {
 public:
-    // The stages of one substep for this step's colours (after prepareJoints and prepareContacts),
+    // The stages of one substep for this step's colours (after colorJoints and prepareContacts),
     // and restitution's, run once after the substeps.
     void build(const World::Impl& w);
     // Every substep's stages, on the world's workers.

@@ -50,8 +50,9 @@ void World::step(float timeStep) {
 
     StepContext ctx = makeStepContext(w, timeStep);
     integrateVelocities(w, ctx);
-    startTreeRefit(w, ctx);  // the broadphase follows the predicted poses on a worker of its own
-    prepareJoints(w, ctx);  // prepare: effective masses, anchors, warm-start impulses
+    prepareJoints(w, ctx);   // prepare: effective masses, anchors, warm-start impulses
+    startTreeRefit(w, ctx);  // the broadphase follows the predicted poses on a worker of its own,
+    colorJoints(w);          // beside the joints' serial colouring
     prepareContacts(w, ctx);
     // Per substep: its forces, warm start, solve with soft bias, x += hs v, relax without bias;
     // then restitution, Hecker's bounce, once (solver_stages.hpp: the rows colour by colour, on
