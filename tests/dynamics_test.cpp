@@ -135,6 +135,20 @@ TEST(Dynamics, ForceAtAPointGivesLinearAndAngularAcceleration) {
     EXPECT_EQ(world.linearVelocity(box), v1);
 }
 
+// The step that does not integrate a body (put to sleep after the force) still ends its forces:
+// woken later, it does not take a force from steps before.
+TEST(Dynamics, AForceEndsWithTheStepEvenOnABodyPutToSleep) {
+    World world(zeroGravity());
+    const BodyId box = test::addBox(world, {0.0f, 0.0f}, 1.0f, 0.5f, test::material(1.0f));
+    world.applyForce(box, {3.0f, 0.0f}, world.worldCenter(box) + Vec2{0.0f, 0.5f});
+    world.setAwake(box, false);
+    world.step(dt);
+    world.setAwake(box, true);
+    world.step(dt);
+    EXPECT_EQ(world.linearVelocity(box), Vec2{});
+    EXPECT_EQ(world.angularVelocity(box), 0.0f);
+}
+
 TEST(Dynamics, TorqueIsTakenAboutTheCentreOfMassNotTheOrigin) {
     // Box at local (1, 0), body turned 90°: the CM is at world (0, 1). F = (1, 0) at the body
     // origin (0, 0) has r = (0, -1), τ = perpDot(r, F) = 1; the same force at the CM has τ = 0.

@@ -40,16 +40,20 @@ void markTouching(World::Impl& w) {
 // Gather awake bodies into the solver arrays and integrate forces: whole step for free bodies,
 // substep pieces (SubstepForces) for constrained ones.
 void integrateVelocities(World::Impl& w, const StepContext& ctx) {
-    w.scratch.awakeBodies.clear();
     markTouching(w);
+    // Slot k + 1 for the k-th awake body in store order; 0 (the static slot) for the others.
     w.scratch.bodySlots.assign(static_cast<size_t>(w.bodies.capacity()), 0);
-    for (int i = 0; i < w.bodies.capacity(); ++i) {
-        const Body& b = w.bodies[i];
-        if (!b.alive || b.type == BodyType::Static || !b.awake) continue;
-        w.scratch.awakeBodies.push_back(i);
-        w.scratch.bodySlots[static_cast<size_t>(i)] = static_cast<int>(w.scratch.awakeBodies.size());
-    }
-    const int count = static_cast<int>(w.scratch.awakeBodies.size());
+    const int count = w.workers.parallelSelect(
+        w.bodies.capacity(),
+        [&](int i) {
+            const Body& b = w.bodies[i];
+            return b.alive && b.type != BodyType::Static && b.awake;
+        },
+        [&](int total) { w.scratch.awakeBodies.resize(static_cast<size_t>(total)); },
+        [&](int k, int i) {
+            w.scratch.awakeBodies[static_cast<size_t>(k)] = i;
+            w.scratch.bodySlots[static_cast<size_t>(i)] = k + 1;
+        });
     w.scratch.states.resize(static_cast<size_t>(count) + 1);
     w.scratch.states[0] = BodyState{};
     w.scratch.substepForces.resize(static_cast<size_t>(count) + 1);
@@ -135,6 +139,8 @@ void finalizeBodies(World::Impl& w, const StepContext& ctx) {
     w.workers.parallelFor(count, 256, [&](int begin, int end, int) {
         for (int k = begin; k < end; ++k) {
             Body& b = w.bodies[w.scratch.awakeBodies[k]];
+            b.force = {};  // applied: forces last one step
+            b.torque = 0.0f;
             const BodyState& s = w.scratch.states[k + 1];
             const float dAngle = w.scratch.stepRotation[k + 1];
             if (!isFinite(s.v) || !std::isfinite(s.w) || !isFinite(s.dp) || !std::isfinite(dAngle)) {
@@ -162,8 +168,8 @@ void finalizeBodies(World::Impl& w, const StepContext& ctx) {
         }
     });
     w.scratch.movers.clear();
-    bool anyBullet = false;
     for (int k = 0; k < count; ++k) {
+        if (w.scratch.bodyMotion[k] == MovedInside) continue;  // most bodies: no more to do
         const int index = w.scratch.awakeBodies[k];
         Body& b = w.bodies[index];
         const BodyState& s = w.scratch.states[k + 1];
@@ -172,8 +178,6 @@ void finalizeBodies(World::Impl& w, const StepContext& ctx) {
             w.synchronizeProxies(index, b.xf, {});  // perhaps outside the boxes re-fitted ahead
             continue;
         }
-        anyBullet = anyBullet || b.bullet;
-        if (w.scratch.bodyMotion[k] == MovedInside) continue;
         if (w.scratch.bodyMotion[k] == Moved) {
             refitEscaped(w, index, b.center, b.xf, s.dp);
             continue;
@@ -185,10 +189,18 @@ void finalizeBodies(World::Impl& w, const StepContext& ctx) {
             refitEscaped(w, index, b.center, b.xf, b.center - start.center);
         }
     }
-    if (anyBullet && !w.scratch.movers.empty()) solveMovingImpacts(w, ctx);
-    for (Body& b : w.bodies.slots()) {
-        b.force = {};
-        b.torque = 0.0f;
+    // Bullets wait for every other body, then meet the fast ones too (continuous_impacts.cpp).
+    const auto anyBullet = [&] {
+        for (int k = 0; k < count; ++k)
+            if (w.scratch.bodyMotion[k] != NonFinite && w.bodies[w.scratch.awakeBodies[k]].bullet) return true;
+        return false;
+    };
+    if (!w.scratch.movers.empty() && anyBullet()) solveMovingImpacts(w, ctx);
+    // The forces of the bodies outside the solver (a body put to sleep with its forces) go too.
+    for (int i = 0; i < w.bodies.capacity(); ++i) {
+        if (w.scratch.bodySlots[static_cast<size_t>(i)] != 0) continue;
+        w.bodies[i].force = {};
+        w.bodies[i].torque = 0.0f;
     }
 }
 
