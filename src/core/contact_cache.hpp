@@ -17,11 +17,12 @@
 
 namespace perpdot {
 
+// A manifold point, the fields the solver reads and writes first (prefetchSolverFields).
 struct ContactPointState {
-    Vec2 point;             // world, at the last narrowphase
     Vec2 anchorA, anchorB;  // from each body's centre of mass to the point
     float separation = 0;
     float normalImpulse = 0, tangentImpulse = 0, maxNormalImpulse = 0;
+    Vec2 point;  // world, at the last narrowphase
     uint32_t id = 0;
     float baseSeparation = 0;  // at the last narrowphase, for a kept manifold (manifold_reuse.hpp)
 };
@@ -53,19 +54,19 @@ struct Contact {
     Edge edges[2];  // in bodyA's list (side 0) and bodyB's (side 1): ContactCache::bodyLists
 };
 
-// Starts loading the lines of a contact that the solver reads and writes (all before its kept pose),
-// for reading (0) or writing (1): a block's lanes ask for theirs together, so that the misses overlap.
-// Four loads cover every line of the fields wherever in a line the contact begins:
-// bytes 0, 64 and 128 lie in three lines in a row, and the last byte in the fourth if there is one.
+// Starts loading the lines of a contact that the solver reads and writes, from its friction to
+// its last point's impulses (112 bytes), for reading (0) or writing (1): a block's lanes ask for
+// theirs together, so that the misses overlap. The first byte and the 64th lie in two lines in a
+// row, the last byte in the third if there is one.
 template <int forWrite>
 inline void prefetchSolverFields(const Contact& c) {
-    constexpr std::size_t fieldBytes = offsetof(Contact, reuseValid);
-    static_assert(fieldBytes > 128 && fieldBytes <= 192, "the solver's fields span three or four lines");
+    constexpr std::size_t first = offsetof(Contact, friction);
+    constexpr std::size_t end = offsetof(Contact, points) + sizeof(ContactPointState) + offsetof(ContactPointState, point);
+    static_assert(end - first > 64 && end - first <= 128, "the solver's fields span two or three lines");
     const auto* bytes = reinterpret_cast<const char*>(&c);
-    __builtin_prefetch(bytes, forWrite);
-    __builtin_prefetch(bytes + 64, forWrite);
-    __builtin_prefetch(bytes + 128, forWrite);
-    __builtin_prefetch(bytes + fieldBytes - 1, forWrite);
+    __builtin_prefetch(bytes + first, forWrite);
+    __builtin_prefetch(bytes + first + 64, forWrite);
+    __builtin_prefetch(bytes + end - 1, forWrite);
 }
 
 struct ShapeData;
