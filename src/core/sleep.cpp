@@ -1,7 +1,6 @@
 // Sleeping: bodies joined by touching contacts or joints form islands (union-find); an island
 // whose every body has been slower than the tolerances for timeToSleep falls asleep as a whole.
 #include <algorithm>
-#include <atomic>
 #include <limits>
 #include <numeric>
 
@@ -22,20 +21,17 @@ constexpr float timeToSleep = 0.5f;                       // s
 void updateSleep(World::Impl& w, float h) {
     if (!w.def.enableSleep) return;
     const size_t n = w.bodies.capacity();
-    // Each awake body's time at rest, on the workers; a flag only ever set, so they agree.
     bool anySleepy = false;
-    w.workers.parallelFor(static_cast<int>(w.scratch.awakeBodies.size()), 256, [&](int begin, int end, int) {
-        for (int k = begin; k < end; ++k) {
-            Body& b = w.bodies[w.scratch.awakeBodies[k]];
-            if (!b.allowSleep || b.w * b.w > angularSleepTolerance * angularSleepTolerance ||
-                dot(b.v, b.v) > linearSleepTolerance * linearSleepTolerance) {
-                b.sleepTime = 0.0f;
-            } else {
-                b.sleepTime += h;
-                if (b.sleepTime >= timeToSleep) std::atomic_ref(anySleepy).store(true, std::memory_order_relaxed);
-            }
+    for (int i : w.scratch.awakeBodies) {
+        Body& b = w.bodies[i];
+        if (!b.allowSleep || b.w * b.w > angularSleepTolerance * angularSleepTolerance ||
+            dot(b.v, b.v) > linearSleepTolerance * linearSleepTolerance) {
+            b.sleepTime = 0.0f;
+        } else {
+            b.sleepTime += h;
+            anySleepy = anySleepy || b.sleepTime >= timeToSleep;
         }
-    });
+    }
     if (!anySleepy) return;
 
     // Every body starts as its own island, those woken after the step's integration (by a broken
