@@ -7,7 +7,6 @@
 #include <random>
 #include <vector>
 
-#include "core/joint_revolute.hpp"
 #include "core/joint_rows.hpp"
 #include "core/joint_tree.hpp"
 #include "joint_helpers.hpp"

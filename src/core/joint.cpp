@@ -208,8 +208,6 @@ void prepareJoints(World::Impl& w, const StepContext& ctx) {
             d.awake.resize(total);
             d.prepared.resize(total);
             d.keys.resize(total);
-            d.colors.resize(total);
-            d.laneRows.resize(total);
         },
         [&](int k, int index) {
             d.awake[k] = index;
@@ -227,6 +225,8 @@ void colorJoints(World::Impl& w) {
     constexpr int overflow = GraphColoring::overflow;
     JointScratch& d = jointScratch(w);
     const int count = static_cast<int>(d.keys.size());
+    d.colors.resize(d.keys.size());
+    d.laneRows.resize(d.keys.size());
     // One colouring for joints and contacts (the constraint graph): joints first, contacts then
     // take the colours their bodies' joints left (prepareContactBlocks).
     GraphColoring& coloring = w.scratch.coloring;
