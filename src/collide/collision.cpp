@@ -5,6 +5,7 @@
 #include "collide/b2_convert.hpp"
 #include "collide/capsule_b2.hpp"
 #include "collide/polygon_b2.hpp"
+#include "core/simd.hpp"
 
 #include <box2d/b2_circle_shape.h>
 #include <box2d/b2_collision.h>
@@ -373,29 +374,44 @@ void CollisionSystem::queryImpl(const AABB& aabb, void* context, bool (*visit)(v
 }
 
 void CollisionSystem::queryNewPairsImpl(const int* group, int count, void* context, void (*visit)(void*, int, int)) const {
+    static_assert(groupSize == 8, "the members' boxes are tested four at a time, in two halves");
+    using simd::Float4;
     struct Callback {
         const Impl& impl;
         const int* group;
         int count;
-        AABB boxes[groupSize];
+        // The members' boxes by coordinate; a lane past the members holds a box no box overlaps.
+        alignas(16) float lowerX[groupSize], lowerY[groupSize], upperX[groupSize], upperY[groupSize];
         void* context;
         void (*visit)(void*, int, int);
         // The tree tested the hit's box against the union box; b2TestOverlap(leaf, member) is
-        // `overlaps` (touching counts), so each member sees exactly what its own query would.
+        // `overlaps` (touching counts), so each member sees exactly what its own query would. The
+        // members whose box the hit overlaps are found four at a time: no lane is apart on an axis.
         bool QueryCallback(int32 other) {
             const AABB& box = impl.fat[other];
-            for (int m = 0; m < count; ++m) {
-                const int proxy = group[m];
-                if (!overlaps(box, boxes[m]) || other == proxy || (other < proxy && impl.tree.WasMoved(other))) continue;
+            unsigned overlapping = 0;
+            for (int half = 0; half < count; half += 4) {
+                const simd::Mask4 apart = (Float4::load(lowerX + half) > Float4(box.upper.x)) | (Float4::load(lowerY + half) > Float4(box.upper.y)) |
+                                          (Float4(box.lower.x) > Float4::load(upperX + half)) | (Float4(box.lower.y) > Float4::load(upperY + half));
+                overlapping |= (~simd::laneBits(apart) & 0xFu) << half;
+            }
+            overlapping &= (1u << count) - 1u;  // (a NaN box is apart from none, the empty lanes included)
+            for (; overlapping != 0; overlapping &= overlapping - 1) {
+                const int proxy = group[std::countr_zero(overlapping)];
+                if (other == proxy || (other < proxy && impl.tree.WasMoved(other))) continue;
                 if (!impl.overlappedBefore(proxy, other)) visit(context, proxy, other);
             }
             return true;
         }
-    } callback{*impl_, group, count, {}, context, visit};
+    } callback{*impl_, group, count, {}, {}, {}, {}, context, visit};
     AABB all = impl_->fat[group[0]];
-    for (int m = 0; m < count; ++m) {
-        callback.boxes[m] = impl_->fat[group[m]];
-        all = combine(all, callback.boxes[m]);
+    for (int m = 0; m < groupSize; ++m) {
+        const AABB box = m < count ? impl_->fat[group[m]] : AABB{{b2_maxFloat, b2_maxFloat}, {-b2_maxFloat, -b2_maxFloat}};
+        callback.lowerX[m] = box.lower.x;
+        callback.lowerY[m] = box.lower.y;
+        callback.upperX[m] = box.upper.x;
+        callback.upperY[m] = box.upper.y;
+        if (m < count) all = combine(all, box);
     }
     impl_->tree.Query(&callback, b2AABB{toB2(all.lower), toB2(all.upper)});
 }

@@ -60,6 +60,9 @@ inline Float4 sqrt(Float4 a) { return Float4(_mm_sqrt_ps(a.v)); }
 inline Float4 select(Mask4 mask, Float4 ifTrue, Float4 ifFalse) {
     return Float4(_mm_or_ps(_mm_and_ps(mask.m, ifTrue.v), _mm_andnot_ps(mask.m, ifFalse.v)));
 }
+inline Mask4 operator|(Mask4 a, Mask4 b) { return {_mm_or_ps(a.m, b.m)}; }
+// Bit i set where lane i holds.
+inline unsigned laneBits(Mask4 mask) { return static_cast<unsigned>(_mm_movemask_ps(mask.m)); }
 // Whether a mask holds in no lane, in every lane.
 inline bool noLane(Mask4 mask) { return _mm_movemask_ps(mask.m) == 0; }
 inline bool allLanes(Mask4 mask) { return _mm_movemask_ps(mask.m) == 0xF; }
@@ -126,6 +129,8 @@ inline Float4 select(Mask4 mask, Float4 ifTrue, Float4 ifFalse) {
     for (int i = 0; i < 4; ++i) r.v[i] = mask.m[i] ? ifTrue.v[i] : ifFalse.v[i];
     return r;
 }
+inline Mask4 operator|(Mask4 a, Mask4 b) { return {{a.m[0] || b.m[0], a.m[1] || b.m[1], a.m[2] || b.m[2], a.m[3] || b.m[3]}}; }
+inline unsigned laneBits(Mask4 mask) { return (mask.m[0] ? 1u : 0u) | (mask.m[1] ? 2u : 0u) | (mask.m[2] ? 4u : 0u) | (mask.m[3] ? 8u : 0u); }
 inline bool noLane(Mask4 mask) { return !(mask.m[0] || mask.m[1] || mask.m[2] || mask.m[3]); }
 inline bool allLanes(Mask4 mask) { return mask.m[0] && mask.m[1] && mask.m[2] && mask.m[3]; }
 
