@@ -83,10 +83,11 @@ void prepareContacts(World::Impl& w, const StepContext& ctx) {
     // Contacts are not read: updateContacts left their points and bodies in dense arrays.
     const std::vector<int>& slotOf = s.bodySlots;
     const ContactCache& cache = w.contactCache;
+    // Without a branch on whether a contact touches, which pool order mixes: every slot's bodies
+    // are looked up (a free slot's are bodies its last contact had, still in the pool's range).
     auto constrains = [&](int index) {
-        if (cache.touchingPoints[index] == 0) return false;
         const auto [bodyA, bodyB] = cache.bodiesOf[index];
-        return slotOf[bodyA] != 0 || slotOf[bodyB] != 0;
+        return cache.touchingPoints[index] * (slotOf[bodyA] | slotOf[bodyB]) != 0;  // points, and a body in the solver
     };
     w.workers.parallelSelect(
         w.contactCache.contacts.capacity(), constrains,
