@@ -156,6 +156,48 @@ struct CollisionSystem::Impl {
         }
         return std::nullopt;
     }
+    // Calls hit.QueryCallback(leaf) for every leaf of `tree` whose box overlaps `box`, as
+    // tree.Query would (b2TestOverlap: touching counts), given a leaf `inside` that lies within
+    // `box`. The descent tests a node's two children together and asks for the nodes below an
+    // overlapping child as it finds it, so that the loads of the nodes it visits overlap (Query
+    // tests each node as it takes it from its stack: one load waits on the next). The root is
+    // found by climbing from `inside`: the nodes on the way hold its box, so the descent visits
+    // them again.
+    template <class Hit>
+    void descend(int inside, const AABB& box, Hit& hit) const {
+        const b2TreeNode* nodes = treeNodes(tree, inside);
+        int root = inside;
+        while (nodes[root].parent != b2_nullNode) root = nodes[root].parent;
+        const b2AABB query{toB2(box.lower), toB2(box.upper)};
+        // The nodes left to visit: a pending sibling per level at most.
+        constexpr int stackSize = 128;
+        if (nodes[root].height >= stackSize) {
+            tree.Query(&hit, query);
+            return;
+        }
+        if (!b2TestOverlap(nodes[root].aabb, query)) return;
+        if (nodes[root].IsLeaf()) {
+            hit.QueryCallback(root);
+            return;
+        }
+        int stack[stackSize];
+        int count = 0;
+        stack[count++] = root;
+        while (count > 0) {
+            const b2TreeNode& node = nodes[stack[--count]];
+            for (const int child : {node.child1, node.child2}) {
+                const b2TreeNode& c = nodes[child];
+                if (!b2TestOverlap(c.aabb, query)) continue;
+                if (c.IsLeaf()) {
+                    hit.QueryCallback(child);
+                    continue;
+                }
+                __builtin_prefetch(&nodes[c.child1]);
+                __builtin_prefetch(&nodes[c.child2]);
+                stack[count++] = child;
+            }
+        }
+    }
     // Whether both proxies' fat AABBs were known to overlap when pairs were last updated.
     bool overlappedBefore(int proxyA, int proxyB) const {
         const std::optional<AABB> a = priorOf(proxyA), b = priorOf(proxyB);
@@ -413,7 +455,7 @@ void CollisionSystem::queryNewPairsImpl(const int* group, int count, void* conte
         callback.upperY[m] = box.upper.y;
         if (m < count) all = combine(all, box);
     }
-    impl_->tree.Query(&callback, b2AABB{toB2(all.lower), toB2(all.upper)});
+    impl_->descend(group[0], all, callback);
 }
 
 void CollisionSystem::queryStaticImpl(const AABB& aabb, void* context, bool (*visit)(void*, int)) const {
