@@ -99,6 +99,10 @@ public:
     // more); returns whether it moved.
     bool moveProxy(int proxy, const AABB& aabb, Vec2 displacement);
     AABB fatAABB(int proxy) const;
+    // Builds the tree anew once it has inserted and removed as many leaves as it holds
+    // (tree_rebuild.hpp), and says whether it did: the same proxies and boxes, so every query
+    // finds what it found before, through fewer nodes.
+    bool rebuildTreeIfWorn();
     // The least distance from aabb to a side of the proxy's fat AABB: >= 0 when the fat AABB holds
     // it, negative when it sticks out (and moveProxy would re-fit). Reads only, so workers may ask
     // side by side between tree updates.

@@ -1,0 +1,113 @@
+// The dynamic tree is built anew once it has re-inserted as many leaves as it holds
+// (CollisionSystem::rebuildTreeIfWorn, tree_rebuild.cpp), rewriting its nodes' links, boxes and
+// heights. Afterwards the tree must still find exactly the fat boxes that overlap a probe (every
+// node holds its leaves), group queries must still visit what each member's own query would, and
+// Box2D's own re-insertions and the in-place moves must go on from the new shape.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "collide/collision.hpp"
+#include "tree_probe.hpp"
+
+namespace perpdot::collide {
+namespace {
+
+using Pairs = std::set<std::pair<int, int>>;
+
+TEST(TreeRebuild, AWornTreeIsBuiltAnewAndFindsWhatItFoundBefore) {
+    CollisionSystem collision;
+    std::mt19937 random(11);
+    collision.setGeometry(0, makeBox(0.2f, 0.2f));
+    collision.setGeometry(1, makeBox(6.0f, 0.5f));  // walls: boxes that hold many others
+    std::vector<int> proxies;
+    std::vector<AABB> boxes;
+    std::vector<Vec2> velocity;
+    std::uniform_real_distribution<float> speed(-0.3f, 0.3f), place(-2.0f, 14.0f);
+    for (int i = 0; i < 30; ++i)
+        for (int j = 0; j < 30; ++j) {
+            const AABB box = collision.computeAABB(0, 0, {{0.45f * i, 0.45f * j}, Rot::fromAngle(0.0f)});
+            proxies.push_back(collision.createProxy(box, {0, i * 30 + j}, false));
+            boxes.push_back(box);
+            velocity.push_back({speed(random), speed(random)});
+        }
+    for (int k = 0; k < 4; ++k) {
+        const AABB box = collision.computeAABB(1, 0, {{6.0f, k < 2 ? 0.0f : 13.0f}, Rot::fromAngle(1.5708f * (k % 2))});
+        proxies.push_back(collision.createProxy(box, {1, k}, false));
+        boxes.push_back(box);
+        velocity.push_back({0.02f * (k % 2 == 0 ? 1.0f : -1.0f), 0.0f});
+    }
+    std::vector<AABB> prior(proxies.size());
+    std::vector<size_t> indexOf(static_cast<size_t>(*std::max_element(proxies.begin(), proxies.end())) + 1);
+    for (size_t k = 0; k < proxies.size(); ++k) indexOf[static_cast<size_t>(proxies[k])] = k;
+    int rebuilds = 0;
+    size_t groupPairs = 0;
+    for (int round = 0; round < 80; ++round) {
+        // Pair updates rebuild a worn tree before they query it.
+        if (collision.rebuildTreeIfWorn()) {
+            ++rebuilds;
+            for (int probe = 0; probe < 40; ++probe) {
+                const Vec2 c{place(random), place(random)};
+                const AABB box{c - Vec2{0.8f, 0.5f}, c + Vec2{0.8f, 0.5f}};
+                const auto [found, expected] = test::foundAndExpected(collision, proxies, box);
+                ASSERT_EQ(found, expected) << "after rebuild " << rebuilds << ", probe " << probe;
+            }
+            // Groups of neighbours (in creation order: on the grid) visit what their members' own
+            // queries find, less a lower moved proxy's pairs and pairs whose boxes overlapped at
+            // the last pair update.
+            for (size_t first = 0; first + CollisionSystem::groupSize <= proxies.size(); first += 97) {
+                const std::vector<int> group(proxies.begin() + static_cast<std::ptrdiff_t>(first),
+                                             proxies.begin() + static_cast<std::ptrdiff_t>(first) + CollisionSystem::groupSize);
+                Pairs own, grouped;
+                for (int proxy : group)
+                    collision.query(collision.fatAABB(proxy), [&](int other) {
+                        const bool reportedByOther = other < proxy && collision.wasMoved(other);
+                        const bool overlappedBefore = round > 0 && overlaps(prior[indexOf[proxy]], prior[indexOf[other]]);
+                        if (other != proxy && !reportedByOther && !overlappedBefore) own.emplace(proxy, other);
+                        return true;
+                    });
+                collision.queryNewPairs(group.data(), static_cast<int>(group.size()), [&](int proxy, int other) { grouped.emplace(proxy, other); });
+                EXPECT_EQ(grouped, own) << "after rebuild " << rebuilds << ", group at " << first;
+                groupPairs += own.size();
+            }
+        }
+        for (size_t k = 0; k < proxies.size(); ++k) {
+            collision.clearMoved(proxies[k]);
+            prior[k] = collision.fatAABB(proxies[k]);  // the box the next pair update compares with
+        }
+        // Everything drifts (the walls too): many re-fits, most of them re-insertions.
+        for (size_t k = 0; k < proxies.size(); ++k) {
+            if (boxes[k].lower.x < -2.0f || boxes[k].upper.x > 16.0f) velocity[k].x = -velocity[k].x;
+            if (boxes[k].lower.y < -2.0f || boxes[k].upper.y > 16.0f) velocity[k].y = -velocity[k].y;
+            boxes[k] = {boxes[k].lower + velocity[k], boxes[k].upper + velocity[k]};
+            if (collision.room(proxies[k], boxes[k]) >= 0.0f) continue;
+            ASSERT_TRUE(collision.moveProxy(proxies[k], boxes[k], velocity[k]));
+            EXPECT_GE(collision.room(proxies[k], boxes[k]), 0.0f);
+        }
+        // Between rebuilds the tree still finds exactly the overlapping boxes.
+        const Vec2 c{place(random), place(random)};
+        const AABB box{c - Vec2{1.0f, 1.0f}, c + Vec2{1.0f, 1.0f}};
+        const auto [found, expected] = test::foundAndExpected(collision, proxies, box);
+        ASSERT_EQ(found, expected) << "round " << round;
+    }
+    EXPECT_GE(rebuilds, 3);
+    EXPECT_GT(groupPairs, 50u);  // the groups do find new pairs
+}
+
+TEST(TreeRebuild, ARestingTreeIsNotRebuilt) {
+    CollisionSystem collision;
+    collision.setGeometry(0, makeBox(0.2f, 0.2f));
+    for (int i = 0; i < 25; ++i)
+        for (int j = 0; j < 20; ++j)
+            collision.createProxy(collision.computeAABB(0, 0, {{0.5f * static_cast<float>(i), 0.5f * static_cast<float>(j)}, Rot::fromAngle(0.0f)}), {0, 20 * i + j}, false);
+    // Creating the proxies inserted each once: the tree is worn out once, never again.
+    EXPECT_TRUE(collision.rebuildTreeIfWorn());
+    for (int round = 0; round < 10; ++round) EXPECT_FALSE(collision.rebuildTreeIfWorn());
+}
+
+}  // namespace
+}  // namespace perpdot::collide
