@@ -205,7 +205,6 @@ void groupMovedProxies(const World::Impl& w, ContactCache& cache) {
 void updatePairs(World::Impl& w) {
     ContactCache& cache = w.contactCache;
     collide::CollisionSystem& collision = w.collision;
-    collision.rebuildTreeIfWorn();
     groupMovedProxies(w, cache);
     // The workers query the tree side by side, each into its own list.
     // Their lists hold as many pairs as the contact pool has slots: more would grow the pool anyway.

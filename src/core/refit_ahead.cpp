@@ -82,6 +82,8 @@ void refitPredicted(int, int, int, void* world) {
         foldRoom(below, above, p.sole.box, w.collision.fatAABB(p.sole.proxy));
         rememberRoom(w.boxRooms[body], p.center, p.xf.q, below, above);
     }
+    // A worn tree is built anew here too, beside the solver rather than before the next queries.
+    w.collision.rebuildTreeIfWorn();
 }
 
 }  // namespace
