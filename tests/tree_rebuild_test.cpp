@@ -98,6 +98,31 @@ TEST(TreeRebuild, AWornTreeIsBuiltAnewAndFindsWhatItFoundBefore) {
     EXPECT_GT(groupPairs, 50u);  // the groups do find new pairs
 }
 
+TEST(TreeRebuild, CentresSpreadBeyondTheFloatRangeOrBelowItsResolution) {
+    // Boxes at ±2e38 (their centres' spread overflows) and two dozen whose centres differ by
+    // subnormals (the bins' scale overflows): the split must still bin every leaf, and the tree
+    // must still find exactly the overlapping boxes.
+    CollisionSystem collision;
+    std::vector<int> proxies;
+    for (int i = 0; i < 40; ++i) {
+        const float c = (i % 2 == 0 ? 2e38f : -2e38f) * (1.0f + 0.01f * static_cast<float>(i));
+        proxies.push_back(collision.restoreProxy({{c, c}, {c, c}}, {i, 0}, false));
+    }
+    for (int i = 0; i < 24; ++i) {
+        const float tiny = 1.4e-45f * static_cast<float>(i);
+        proxies.push_back(collision.restoreProxy({{0.0f, 0.0f}, {tiny, tiny}}, {40 + i, 0}, false));
+    }
+    for (int i = 0; i < 40; ++i)
+        proxies.push_back(collision.restoreProxy({{static_cast<float>(i), 1.0f}, {static_cast<float>(i) + 0.5f, 1.5f}}, {64 + i, 0}, false));
+    ASSERT_TRUE(collision.rebuildTreeIfWorn());
+    for (const AABB& probe : {AABB{{-1.0f, -1.0f}, {1.0f, 1.0f}}, AABB{{0.0f, 0.0f}, {0.0f, 0.0f}}, AABB{{1e38f, 1e38f}, {3e38f, 3e38f}},
+                              AABB{{-3e38f, -3e38f}, {0.0f, 0.0f}}, AABB{{5.0f, 0.0f}, {20.0f, 2.0f}}}) {
+        const auto [found, expected] = test::foundAndExpected(collision, proxies, probe);
+        EXPECT_EQ(found, expected);
+        EXPECT_FALSE(expected.empty());
+    }
+}
+
 TEST(TreeRebuild, ARestingTreeIsNotRebuilt) {
     CollisionSystem collision;
     collision.setGeometry(0, makeBox(0.2f, 0.2f));

@@ -29,8 +29,12 @@ struct Builder {
     int splitAt(int begin, int end, int axis, float lo, float hi) {
         TreeRebuild::Leaf* leaves = s.leaves.data();
         const float scale = static_cast<float>(bins) / (hi - lo);
+        // A bin for any float: centres spread wider than the float range (an infinite spread, a
+        // zero scale) or narrower than its resolution (an infinite scale, NaN for the lowest)
+        // fall in the end bins, never outside them.
         auto binOf = [&](const TreeRebuild::Leaf& leaf) {
-            return std::min(bins - 1, static_cast<int>(((axis == 0 ? leaf.x : leaf.y) - lo) * scale));
+            const float t = ((axis == 0 ? leaf.x : leaf.y) - lo) * scale;
+            return t < static_cast<float>(bins) ? (t > 0.0f ? static_cast<int>(t) : 0) : bins - 1;
         };
         int count[bins] = {};
         b2AABB box[bins];
@@ -59,7 +63,7 @@ struct Builder {
                 split = b;
             }
         }
-        if (split < 0) return begin + (end - begin) / 2;  // (never: the centres span the bins)
+        if (split < 0) return begin + (end - begin) / 2;  // all in one bin (binOf's end bins)
         return static_cast<int>(std::partition(leaves + begin, leaves + end, [&](const TreeRebuild::Leaf& leaf) { return binOf(leaf) <= split; }) - leaves);
     }
 
@@ -109,7 +113,8 @@ void rebuildTree(b2TreeNode* nodes, int root, TreeRebuild& s) {
         s.stack.pop_back();
         const b2TreeNode& n = nodes[node];
         if (n.IsLeaf()) {
-            s.leaves.push_back({n.aabb.lowerBound.x + n.aabb.upperBound.x, n.aabb.lowerBound.y + n.aabb.upperBound.y, n.aabb, node});
+            const b2Vec2 center = 0.5f * n.aabb.lowerBound + 0.5f * n.aabb.upperBound;  // (halves: no overflow)
+            s.leaves.push_back({center.x, center.y, n.aabb, node});
             continue;
         }
         s.internals.push_back(node);

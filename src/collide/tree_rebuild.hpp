@@ -16,7 +16,7 @@ namespace perpdot::collide {
 // Scratch kept from one rebuild to the next.
 struct TreeRebuild {
     struct Leaf {
-        float x, y;  // twice the centre of its box
+        float x, y;  // the centre of its box
         b2AABB box;
         int node;
     };
