@@ -103,7 +103,6 @@ void prepareContacts(World::Impl& w, const StepContext& ctx) {
             c.indexA = slotOf[bodyA];
             c.indexB = slotOf[bodyB];
             c.pointCount = cache.touchingPoints[index];
-            c.block = -1;
             s.constraintSlots[k] = {c.indexA, c.indexB};
         });
     s.freeVelocities.resize(s.states.size());

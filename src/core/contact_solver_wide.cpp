@@ -128,8 +128,6 @@ void layOutBlocks(World::Impl& w, const StepContext& ctx, const ColorStarts& sta
                 block.bodyB[lane] = used ? c->indexB : 0;
                 for (int i = 0; i < 2; ++i) present[i][lane] = used && i < c->pointCount ? 1.0f : 0.0f;
                 if (!used) continue;
-                c->block = b;
-                c->lane = lane;
                 gatherContactLane(w, *c, block.rowData() + lane, width);
             }
             deriveBlock(w, ctx, block, present);
@@ -158,7 +156,7 @@ void prepareContactBlocks(World::Impl& w, const StepContext& ctx) {
         const auto [slotA, slotB] = s.constraintSlots[index];
         s.contactColors[index] = direct[index] ? overflow : s.coloring.assign(slotA, slotB);
     }
-    const ColorStarts start = sortByColor(s.contactColors, s.contactOrder);
+    const ColorStarts& start = s.contactStart = sortByColor(s.contactColors, s.contactOrder);
 #ifdef PERPDOT_AVX2
     if (s.contactLanes == 8) layOutBlocks(w, ctx, start, s.contactBlocks8);
     else
@@ -173,14 +171,25 @@ void prepareContactBlocks(World::Impl& w, const StepContext& ctx) {
     }
 }
 
+// Where each constraint's rows are: lane slot % lanes of block slot / lanes, or -1 for its own
+// rows. Layout leaves this implicit in the colour order: writing it into the constraints there,
+// scattered, had the workers share the constraints' cache lines.
+void locateContactRows(World::Impl& w) {
+    StepScratch& s = w.scratch;
+    s.contactRowSlot.assign(s.constraints.size(), -1);
+    for (int color = 0; color < GraphColoring::overflow; ++color)
+        for (int p = s.contactStart[color]; p < s.contactStart[color + 1]; ++p)
+            s.contactRowSlot[s.contactOrder[p]] = s.contactBlockStart[color] * s.contactLanes + (p - s.contactStart[color]);
+}
+
 // Field `field` (a float index, pointField) of constraint k's rows, in its lane or its own rows.
 float contactRowField(const World::Impl& w, int k, std::size_t field) {
-    const ContactConstraint& c = w.scratch.constraints[k];
-    if (c.block < 0) return floatsOf(w.scratch.constraintRows[k])[field];
+    const int slot = w.scratch.contactRowSlot[k];
+    if (slot < 0) return floatsOf(w.scratch.constraintRows[k])[field];
 #ifdef PERPDOT_AVX2
-    if (w.scratch.contactLanes == 8) return w.scratch.contactBlocks8[c.block].rowData()[field * ContactBlock8::lanes + c.lane];
+    if (w.scratch.contactLanes == 8) return w.scratch.contactBlocks8[slot / 8].rowData()[field * ContactBlock8::lanes + slot % 8];
 #endif
-    return w.scratch.contactBlocks[c.block].rowData()[field * ContactBlock::lanes + c.lane];
+    return w.scratch.contactBlocks[slot / 4].rowData()[field * ContactBlock::lanes + slot % 4];
 }
 
 int contactBlockCount(const World::Impl& w, int color) {

@@ -38,6 +38,7 @@ void World::Impl::reportTouch(const Contact& c, bool begin) {
 // approached faster than the threshold and actually pushed (λn > 0 at some substep).
 void reportHitEvents(World::Impl& w) {
     if (!w.shapes.anyHitEvents) return;
+    locateContactRows(w);
     for (int k = 0; k < static_cast<int>(w.scratch.constraints.size()); ++k) {
         const ContactConstraint& c = w.scratch.constraints[k];
         const Contact& contact = w.contactCache.contacts[c.contact];

@@ -25,7 +25,6 @@ struct ContactConstraint {
     int indexA = 0, indexB = 0;  // solver slots
     int contact = -1;
     int pointCount = 0;
-    int block = -1, lane = 0;  // block -1: its own rows
 };
 
 // A body's path over the rest of a step, for continuous collision between moving bodies
@@ -100,7 +99,9 @@ struct StepScratch {
     std::vector<ContactBlock8> contactBlocks8;   // or eight (contactLanes = 8)
     ColorStarts contactBlockStart{};             // colour c is contactBlocks[start[c] .. start[c + 1])
     std::vector<int> contactColors;              // prepareContactBlocks scratch: colour of each constraint,
-    std::vector<int> contactOrder;               // and the constraints sorted by colour
+    std::vector<int> contactOrder;               // and the constraints sorted by colour,
+    ColorStarts contactStart{};                  // colour c at contactOrder[start[c] .. start[c + 1])
+    std::vector<int> contactRowSlot;             // by constraint, for hit events (locateContactRows)
     std::vector<int> overflowConstraints;        // constraints no colour could take: solved one by one
     ContactGroups contactGroups;                 // constraints solved a group at a time (contact_groups.hpp)
     SolverStages solverStages;                   // the substeps' stages for the workers

@@ -91,7 +91,9 @@ void serialContactRows(World::Impl& world, const StepContext& ctx, RowPass pass)
 // The accumulated impulses, restitution's included, into the contacts (the blocks' straight from
 // their lanes).
 void storeContactImpulses(World::Impl& world);
-// Field `field` (a float index of ContactRows<float>, pointField) of a constraint's rows.
+// Field `field` (a float index of ContactRows<float>, pointField) of a constraint's rows, once
+// locateContactRows has found where each constraint's rows are.
+void locateContactRows(World::Impl& world);
 float contactRowField(const World::Impl& world, int constraint, std::size_t field);
 void reportHitEvents(World::Impl& world);
 
