@@ -6,6 +6,7 @@
 
 #include "core/contact_cache.hpp"
 #include "core/manifold_reuse.hpp"
+#include "core/radix_sort.hpp"
 #include "core/world_impl.hpp"
 
 namespace perpdot {
@@ -173,7 +174,7 @@ void groupMovedProxies(const World::Impl& w, ContactCache& cache) {
         const Vec2 cell = scale * (0.5f * (box.lower + box.upper) - bounds.lower);
         entry.first = spreadBits(cellOf(cell.x)) | (spreadBits(cellOf(cell.y)) << 1);
     }
-    std::sort(order.begin(), order.end());
+    radixSort(order, cache.mortonScratch);
     cache.queried.clear();
     cache.groupStarts.clear();
     cache.queried.reserve(order.size());

@@ -98,7 +98,7 @@ struct ContactCache {
     // updatePairs scratch: the moved proxies that look for pairs, in groups that share a tree
     // query (group g is queried[groupStarts[g], groupStarts[g + 1])).
     std::vector<int> queried, groupStarts;
-    std::vector<std::pair<uint32_t, int>> mortonOrder;
+    std::vector<std::pair<uint32_t, int>> mortonOrder, mortonScratch;  // (code, proxy), sorted by code
     std::vector<Narrowphase> narrowphase;          // updateContacts scratch, by contact
     // By contact slot, what updateContacts passes over contacts whose bodies both sleep with, and
     // markTouching and prepareContacts select constraints by, without reading the contacts' cache
