@@ -539,6 +539,7 @@ void World::restore(std::span<const uint8_t> bytes) {
     fresh->contactCache.queried = std::move(impl_->contactCache.queried);
     fresh->contactCache.groupStarts = std::move(impl_->contactCache.groupStarts);
     fresh->contactCache.mortonOrder = std::move(impl_->contactCache.mortonOrder);
+    fresh->contactCache.mortonScratch = std::move(impl_->contactCache.mortonScratch);
     fresh->contactCache.narrowphase = std::move(impl_->contactCache.narrowphase);
     // Moved proxies are state, but the frames re-simulated after a rollback move as many as this
     // world's did: room for them.
