@@ -92,58 +92,62 @@ void deriveBlock(World::Impl& w, const StepContext& ctx, ContactBlock8& block, c
 #endif
 
 // Blocks of Block::lanes constraints of one colour, in colour order (the last block of a colour
-// may have empty lanes): each lane's contact values gathered straight into it, then the block's
-// rows derived lanes at once (contact_prepare.hpp).
+// may have empty lanes): block b of colour c holds the constraints contactOrder[start[c] + lanes
+// (b − blockStart[c]) ...]. Sized here, laid out by the solver's first stages (layOutBlocks).
 template <class Block>
-void layOutBlocks(World::Impl& w, const StepContext& ctx, const ColorStarts& start, std::vector<Block>& blocks) {
+void sizeBlocks(StepScratch& s, std::vector<Block>& blocks) {
     constexpr int overflow = GraphColoring::overflow;
     constexpr int width = Block::lanes;
-    StepScratch& s = w.scratch;
+    const ColorStarts& start = s.contactStart;
     ColorStarts& blockStart = s.contactBlockStart;
     blockStart[0] = 0;
     for (int color = 0; color <= overflow; ++color)
         blockStart[color + 1] = blockStart[color] + (color < overflow ? (start[color + 1] - start[color] + width - 1) / width : 0);
     blocks.resize(static_cast<size_t>(blockStart[overflow]));  // reused memory: every field is rewritten
-    // Block b of colour c holds the constraints contactOrder[start[c] + width (b − blockStart[c]) ...].
-    w.workers.parallelFor(static_cast<int>(blocks.size()), 128 / width, [&](int begin, int stop, int) {
-        int color = static_cast<int>(std::upper_bound(blockStart.begin(), blockStart.end(), begin) - blockStart.begin()) - 1;
-        for (int b = begin; b < stop; ++b) {
-            while (b >= blockStart[color + 1]) ++color;
-            Block& block = blocks[b];
-            const int lanes = std::min(width, start[color + 1] - start[color] - width * (b - blockStart[color]));
-            alignas(32) float present[2][width];  // 1 where a lane's point is a manifold point
-            const int* order = &s.contactOrder[start[color] + width * (b - blockStart[color])];  // the lanes' constraints
-            // The lanes' contacts lie anywhere in the pool: the next block's (the constraints right
-            // after these in contactOrder) load while this block gathers, and this block's own were
-            // asked for by the block before (the first of a worker's run asks for them here).
-            const int position = static_cast<int>(order - s.contactOrder.data());
-            const int fetchEnd = std::min(position + lanes + width, static_cast<int>(s.contactOrder.size()));
-            for (int p = b == begin ? position : position + lanes; p < fetchEnd; ++p)
-                prefetchSolverFields<0>(w.contactCache.contacts[s.constraints[s.contactOrder[p]].contact]);
-            for (int lane = 0; lane < width; ++lane) {
-                const bool used = lane < lanes;
-                ContactConstraint* c = used ? &s.constraints[order[lane]] : nullptr;
-                block.contact[lane] = used ? c->contact : -1;
-                block.bodyA[lane] = used ? c->indexA : 0;  // an empty lane: the static slot
-                block.bodyB[lane] = used ? c->indexB : 0;
-                for (int i = 0; i < 2; ++i) present[i][lane] = used && i < c->pointCount ? 1.0f : 0.0f;
-                if (!used) continue;
-                gatherContactLane(w, *c, block.rowData() + lane, width);
-            }
-            deriveBlock(w, ctx, block, present);
-            // An empty lane: no mass, no impulse, nothing at all.
-            for (int lane = lanes; lane < width; ++lane)
-                for (std::size_t field = 0; field < rowFloats; ++field) block.rowData()[field * width + static_cast<std::size_t>(lane)] = 0.0f;
+}
+
+// Blocks [begin, end) of colour `color`: each lane's contact values gathered straight into it,
+// then the block's rows derived lanes at once (contact_prepare.hpp).
+template <class Block>
+void layOutBlocks(World::Impl& w, const StepContext& ctx, std::vector<Block>& blocks, int color, int begin, int end) {
+    constexpr int width = Block::lanes;
+    StepScratch& s = w.scratch;
+    const int colorStart = s.contactStart[color], colorEnd = s.contactStart[color + 1];
+    for (int b = begin; b < end; ++b) {
+        Block& block = blocks[s.contactBlockStart[color] + b];
+        const int position = colorStart + width * b;  // of the lanes' constraints in contactOrder
+        const int lanes = std::min(width, colorEnd - position);
+        alignas(32) float present[2][width];  // 1 where a lane's point is a manifold point
+        const int* order = &s.contactOrder[position];
+        // The lanes' contacts lie anywhere in the pool: the next block's (the constraints right
+        // after these in contactOrder) load while this block gathers, and this block's own were
+        // asked for by the block before (the first of a range asks for them here).
+        const int fetchEnd = std::min(position + lanes + width, colorEnd);
+        for (int p = b == begin ? position : position + lanes; p < fetchEnd; ++p)
+            prefetchSolverFields<0>(w.contactCache.contacts[s.constraints[s.contactOrder[p]].contact]);
+        for (int lane = 0; lane < width; ++lane) {
+            const bool used = lane < lanes;
+            const ContactConstraint* c = used ? &s.constraints[order[lane]] : nullptr;
+            block.contact[lane] = used ? c->contact : -1;
+            block.bodyA[lane] = used ? c->indexA : 0;  // an empty lane: the static slot
+            block.bodyB[lane] = used ? c->indexB : 0;
+            for (int i = 0; i < 2; ++i) present[i][lane] = used && i < c->pointCount ? 1.0f : 0.0f;
+            if (used) gatherContactLane(w, *c, block.rowData() + lane, width);
         }
-    });
+        deriveBlock(w, ctx, block, present);
+        // An empty lane: no mass, no impulse, nothing at all.
+        for (int lane = lanes; lane < width; ++lane)
+            for (std::size_t field = 0; field < rowFloats; ++field) block.rowData()[field * width + static_cast<std::size_t>(lane)] = 0.0f;
+    }
 }
 
 }  // namespace
 
 // Colour the constraints in order, in the colouring the joints began (colorJoints: one graph, so
-// a colour's joints and contacts share no moving body either), then lay them out colour by colour
-// (Box2D v3's solve order: it keeps stacks as stiff as the plain constraint order does), four or
-// eight to a block; overflow last, prepared into their own rows. The lane width changes no result:
+// a colour's joints and contacts share no moving body either), then size their blocks colour by
+// colour (Box2D v3's solve order: it keeps stacks as stiff as the plain constraint order does),
+// four or eight to a block, laid out by the solver's first stages; overflow last, prepared here
+// into their own rows. The lane width changes no result:
 // a colour's constraints share no moving body. The constraints of contact groups solved directly
 // (contact_groups.hpp) take no colour: their groups prepared them.
 void prepareContactBlocks(World::Impl& w, const StepContext& ctx) {
@@ -158,10 +162,10 @@ void prepareContactBlocks(World::Impl& w, const StepContext& ctx) {
     }
     const ColorStarts& start = s.contactStart = sortByColor(s.contactColors, s.contactOrder);
 #ifdef PERPDOT_AVX2
-    if (s.contactLanes == 8) layOutBlocks(w, ctx, start, s.contactBlocks8);
+    if (s.contactLanes == 8) sizeBlocks(s, s.contactBlocks8);
     else
 #endif
-        layOutBlocks(w, ctx, start, s.contactBlocks);
+        sizeBlocks(s, s.contactBlocks);
     s.overflowConstraints.clear();
     for (int position = start[overflow]; position < count; ++position) {
         const int index = s.contactOrder[position];
@@ -190,6 +194,13 @@ float contactRowField(const World::Impl& w, int k, std::size_t field) {
     if (w.scratch.contactLanes == 8) return w.scratch.contactBlocks8[slot / 8].rowData()[field * ContactBlock8::lanes + slot % 8];
 #endif
     return w.scratch.contactBlocks[slot / 4].rowData()[field * ContactBlock::lanes + slot % 4];
+}
+
+void layOutContactBlocks(World::Impl& w, const StepContext& ctx, int color, int begin, int end) {
+#ifdef PERPDOT_AVX2
+    if (w.scratch.contactLanes == 8) return layOutBlocks(w, ctx, w.scratch.contactBlocks8, color, begin, end);
+#endif
+    layOutBlocks(w, ctx, w.scratch.contactBlocks, color, begin, end);
 }
 
 int contactBlockCount(const World::Impl& w, int color) {

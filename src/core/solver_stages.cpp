@@ -36,6 +36,10 @@ void SolverStages::build(const World::Impl& w) {
         add(Work::SerialContacts, pass, 0, w.scratch.overflowConstraints.empty() ? 0 : 1, 1);
         add(Work::ContactGroups, pass, 0, w.scratch.contactGroups.start.size() > 1 ? 1 : 0, 1);
     };
+    // A block is laid out in the item the passes solve it in: by the worker that solves it first.
+    for (int color = 0; color < GraphColoring::overflow; ++color)
+        add(Work::LayOutContacts, RowPass::WarmStart, color, contactBlockCount(w, color), contactsPerItem / w.scratch.contactLanes);
+    firstSubstepStage_ = stages_.size();
     add(Work::SubstepForces, RowPass::WarmStart, 0, bodies, bodiesPerItem);
     rows(RowPass::WarmStart);
     rows(RowPass::Solve);
@@ -48,6 +52,7 @@ void SolverStages::build(const World::Impl& w) {
 void SolverStages::execute(World::Impl& w, const StepContext& ctx, const SolverStage& stage, int begin, int end) const {
     using Work = SolverStage::Work;
     switch (stage.work) {
+        case Work::LayOutContacts: layOutContactBlocks(w, ctx, stage.color, begin, end); break;
         case Work::SubstepForces: applySubstepForces(w, begin + 1, end + 1); break;
         case Work::Joints: jointRows(w, ctx, stage.pass, stage.color, begin, end); break;
         case Work::SerialJoints: serialJointRows(w, ctx, stage.pass); break;
@@ -84,15 +89,17 @@ void SolverStages::participate(World::Impl& w, const StepContext& ctx, int worke
         for (int spins = 0; sync.done.load(std::memory_order_acquire) < items; ++spins)
             if (spins > 100) std::this_thread::yield();
     };
+    for (size_t s = 0; s < firstSubstepStage_; ++s) walk(ctx.substeps, s, 0);  // the extra round's syncs
     for (int substep = 0; substep < ctx.substeps; ++substep)
-        for (size_t s = 0; s < substepStages_; ++s) walk(substep, s, substep);
+        for (size_t s = firstSubstepStage_; s < substepStages_; ++s) walk(substep, s, substep);
     for (size_t s = substepStages_; s < count; ++s) walk(ctx.substeps, s, 0);
 }
 
 void SolverStages::run(World::Impl& w, const StepContext& ctx) {
     if (w.workers.count() == 1) {
+        for (size_t s = 0; s < firstSubstepStage_; ++s) execute(w, ctx, stages_[s], 0, stages_[s].units);
         for (int substep = 0; substep < ctx.substeps; ++substep)
-            for (size_t s = 0; s < substepStages_; ++s) execute(w, ctx, stages_[s], 0, stages_[s].units);
+            for (size_t s = firstSubstepStage_; s < substepStages_; ++s) execute(w, ctx, stages_[s], 0, stages_[s].units);
         for (size_t s = substepStages_; s < stages_.size(); ++s) execute(w, ctx, stages_[s], 0, stages_[s].units);
         return;
     }

@@ -1,5 +1,6 @@
-// The substeps of World::step as a list of stages — a substep's forces, then per pass the joint
-// and contact rows colour by colour, and x += hs v between the solve and the relax — run in order
+// The substeps of World::step as a list of stages — once, the contact blocks laid out; per substep
+// its forces, then per pass the joint and contact rows colour by colour, and x += hs v between
+// the solve and the relax — run in order
 // by every worker at once. The items of a stage share no moving body (graph colouring), so
 // workers claim them in any order: worker k of n starts at item k/n of every stage and goes
 // forward, then back from there, so the same worker keeps about the same bodies from stage to
@@ -19,7 +20,7 @@
 namespace perpdot {
 
 struct SolverStage {
-    enum class Work : uint8_t { SubstepForces, Joints, SerialJoints, Contacts, SerialContacts, ContactGroups, IntegratePositions };
+    enum class Work : uint8_t { LayOutContacts, SubstepForces, Joints, SerialJoints, Contacts, SerialContacts, ContactGroups, IntegratePositions };
     Work work = Work::SubstepForces;
     RowPass pass = RowPass::WarmStart;
     int color = 0;
@@ -31,7 +32,8 @@ struct SolverStage {
 class SolverStages {
 public:
     // The stages of one substep for this step's colours (after colorJoints and prepareContacts),
-    // and restitution's, run once after the substeps.
+    // after those run once before the substeps (the contact blocks laid out, colour by colour, by
+    // the workers that solve them), and restitution's, run once after.
     void build(const World::Impl& w);
     // Every substep's stages, on the world's workers.
     void run(World::Impl& w, const StepContext& ctx);
@@ -43,9 +45,10 @@ private:
     void execute(World::Impl& w, const StepContext& ctx, const SolverStage& stage, int begin, int end) const;
     void participate(World::Impl& w, const StepContext& ctx, int worker, int workerCount);
 
-    // stages_[0, substepStages_) run every substep, the rest (restitution) once after the last.
+    // stages_[0, firstSubstepStage_) run once before the substeps, [firstSubstepStage_,
+    // substepStages_) every substep, the rest (restitution) once after the last.
     std::vector<SolverStage> stages_;
-    size_t substepStages_ = 0;
+    size_t firstSubstepStage_ = 0, substepStages_ = 0;
     std::vector<int> firstClaim_;  // by stage: its first item's claim in claims_
     std::unique_ptr<Sync[]> sync_;
     size_t syncCapacity_ = 0;

@@ -83,9 +83,11 @@ struct World::Impl {
 // graph-coloured blocks of four).
 void prepareContacts(World::Impl& world, const StepContext& ctx);
 void prepareContactBlocks(World::Impl& world, const StepContext& ctx);
-// The blocks of colour `color` (below GraphColoring::overflow) in a pass: they share no moving
-// body, so they run in any order or side by side; then the overflow constraints, one by one.
+// The blocks of colour `color` (below GraphColoring::overflow), laid out (the solver's first
+// stages) and then in a pass: they share no moving body, so they run in any order or side by
+// side; then the overflow constraints, one by one.
 int contactBlockCount(const World::Impl& world, int color);
+void layOutContactBlocks(World::Impl& world, const StepContext& ctx, int color, int begin, int end);
 void contactRows(World::Impl& world, const StepContext& ctx, RowPass pass, int color, int begin, int end);
 void serialContactRows(World::Impl& world, const StepContext& ctx, RowPass pass);
 // The accumulated impulses, restitution's included, into the contacts (the blocks' straight from
