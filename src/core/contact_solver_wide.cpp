@@ -243,29 +243,30 @@ void storeBlockImpulses(World::Impl& w, const Block& block) {
 }
 
 template <class Block>
-void storeBlocks(World::Impl& w, const std::vector<Block>& blocks) {
-    w.workers.parallelFor(static_cast<int>(blocks.size()), 256 / Block::lanes, [&](int begin, int end, int) {
-        for (int k = begin; k < end; ++k) {
-            if (k + 1 < end)  // the next block's contacts load while this one's are written
-                for (int contact : blocks[k + 1].contact)
-                    if (contact >= 0) prefetchSolverFields<1>(w.contactCache.contacts[contact]);
-            storeBlockImpulses(w, blocks[k]);
-        }
-    });
+void storeBlocks(World::Impl& w, const std::vector<Block>& blocks, int begin, int end) {
+    for (int k = begin; k < end; ++k) {
+        if (k + 1 < end)  // the next block's contacts load while this one's are written
+            for (int contact : blocks[k + 1].contact)
+                if (contact >= 0) prefetchSolverFields<1>(w.contactCache.contacts[contact]);
+        storeBlockImpulses(w, blocks[k]);
+    }
 }
 
 }  // namespace
 
-// The impulses for the next step's warm start: the blocks' from their lanes, those of the overflow
-// constraints and of the contact groups solved directly from their rows (a contact has one
-// constraint: the workers write apart).
+// The impulses for the next step's warm start (a contact has one constraint: the workers write
+// apart). A colour's blocks from their lanes, as the solver's last stages (SolverStages) ...
+void storeContactBlocks(World::Impl& w, int color, int begin, int end) {
+    const int first = w.scratch.contactBlockStart[color];
+#ifdef PERPDOT_AVX2
+    if (w.scratch.contactLanes == 8) return storeBlocks(w, w.scratch.contactBlocks8, first + begin, first + end);
+#endif
+    storeBlocks(w, w.scratch.contactBlocks, first + begin, first + end);
+}
+
+// ... then those of the overflow constraints and of the contact groups solved directly, from their rows.
 void storeContactImpulses(World::Impl& w) {
     StepScratch& s = w.scratch;
-#ifdef PERPDOT_AVX2
-    if (s.contactLanes == 8) storeBlocks(w, s.contactBlocks8);
-    else
-#endif
-        storeBlocks(w, s.contactBlocks);
     auto storeRows = [&](int index) {
         const ContactConstraint& c = s.constraints[index];
         const ContactRows<float>& rows = s.constraintRows[index];

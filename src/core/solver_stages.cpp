@@ -47,6 +47,8 @@ void SolverStages::build(const World::Impl& w) {
     rows(RowPass::Relax);
     substepStages_ = stages_.size();
     rows(RowPass::Restitution);
+    for (int color = 0; color < GraphColoring::overflow; ++color)
+        add(Work::StoreContacts, RowPass::Restitution, color, contactBlockCount(w, color), contactsPerItem / w.scratch.contactLanes);
 }
 
 void SolverStages::execute(World::Impl& w, const StepContext& ctx, const SolverStage& stage, int begin, int end) const {
@@ -60,6 +62,7 @@ void SolverStages::execute(World::Impl& w, const StepContext& ctx, const SolverS
         case Work::SerialContacts: serialContactRows(w, ctx, stage.pass); break;
         case Work::ContactGroups: contactGroupRows(w, ctx, stage.pass); break;
         case Work::IntegratePositions: integratePositions(w, ctx, begin + 1, end + 1); break;
+        case Work::StoreContacts: storeContactBlocks(w, stage.color, begin, end); break;
     }
 }
 

@@ -20,7 +20,7 @@
 namespace perpdot {
 
 struct SolverStage {
-    enum class Work : uint8_t { LayOutContacts, SubstepForces, Joints, SerialJoints, Contacts, SerialContacts, ContactGroups, IntegratePositions };
+    enum class Work : uint8_t { LayOutContacts, SubstepForces, Joints, SerialJoints, Contacts, SerialContacts, ContactGroups, IntegratePositions, StoreContacts };
     Work work = Work::SubstepForces;
     RowPass pass = RowPass::WarmStart;
     int color = 0;
@@ -33,7 +33,8 @@ class SolverStages {
 public:
     // The stages of one substep for this step's colours (after colorJoints and prepareContacts),
     // after those run once before the substeps (the contact blocks laid out, colour by colour, by
-    // the workers that solve them), and restitution's, run once after.
+    // the workers that solve them), and those run once after: restitution's, then the contact
+    // blocks' impulses stored (by the workers that solved them last).
     void build(const World::Impl& w);
     // Every substep's stages, on the world's workers.
     void run(World::Impl& w, const StepContext& ctx);

@@ -60,7 +60,7 @@ void World::step(float timeStep) {
     w.scratch.solverStages.build(w);
     w.scratch.solverStages.run(w, ctx);
     projectJoints(w);         // project: the anchors of revolute trees meet again
-    storeContactImpulses(w);  // store: impulses for the next step's warm start, from the lanes
+    storeContactImpulses(w);  // store: impulses for the next step's warm start (the lanes' stored by the solver)
     storeJointImpulses(w, ctx);
     reportHitEvents(w);
     finishTreeRefit(w);

@@ -90,8 +90,10 @@ int contactBlockCount(const World::Impl& world, int color);
 void layOutContactBlocks(World::Impl& world, const StepContext& ctx, int color, int begin, int end);
 void contactRows(World::Impl& world, const StepContext& ctx, RowPass pass, int color, int begin, int end);
 void serialContactRows(World::Impl& world, const StepContext& ctx, RowPass pass);
-// The accumulated impulses, restitution's included, into the contacts (the blocks' straight from
-// their lanes).
+// The accumulated impulses, restitution's included, into the contacts: those of colour `color`'s
+// blocks [begin, end) straight from their lanes (the solver's last stages), and those of the
+// constraints solved from their own rows.
+void storeContactBlocks(World::Impl& world, int color, int begin, int end);
 void storeContactImpulses(World::Impl& world);
 // Field `field` (a float index of ContactRows<float>, pointField) of a constraint's rows, once
 // locateContactRows has found where each constraint's rows are.
