@@ -136,6 +136,7 @@ void finalizeBodies(World::Impl& w, const StepContext& ctx) {
     const int count = static_cast<int>(w.scratch.awakeBodies.size());
     w.scratch.bodyMotion.resize(static_cast<size_t>(count));
     w.scratch.stepStarts.resize(static_cast<size_t>(count));
+    std::atomic<bool> anyBullet{false};  // only ever set: the same for any split
     w.workers.parallelFor(count, 256, [&](int begin, int end, int) {
         for (int k = begin; k < end; ++k) {
             Body& b = w.bodies[w.scratch.awakeBodies[k]];
@@ -147,6 +148,7 @@ void finalizeBodies(World::Impl& w, const StepContext& ctx) {
                 w.scratch.bodyMotion[k] = NonFinite;
                 continue;
             }
+            if (b.bullet) anyBullet.store(true, std::memory_order_relaxed);
             const Vec2 c1 = b.center + s.dp;
             const float a1 = b.angle + dAngle;
             const int index = w.scratch.awakeBodies[k];
@@ -167,9 +169,8 @@ void finalizeBodies(World::Impl& w, const StepContext& ctx) {
             w.scratch.bodyMotion[k] = boxesInside(w, index, c1, b.xf) ? MovedInside : Moved;
         }
     });
-    w.scratch.movers.clear();
     for (int k = 0; k < count; ++k) {
-        if (w.scratch.bodyMotion[k] == MovedInside) continue;  // most bodies: no more to do
+        if (w.scratch.bodyMotion[k] == MovedInside || w.scratch.bodyMotion[k] == FastInside) continue;  // most bodies: no more to do
         const int index = w.scratch.awakeBodies[k];
         Body& b = w.bodies[index];
         const BodyState& s = w.scratch.states[k + 1];
@@ -182,20 +183,19 @@ void finalizeBodies(World::Impl& w, const StepContext& ctx) {
             refitEscaped(w, index, b.center, b.xf, s.dp);
             continue;
         }
-        const BodyPose& start = w.scratch.stepStarts[k];
-        w.scratch.movers.push_back({.body = index, .c0 = start.center, .c1 = b.center, .a0 = start.angle, .a1 = b.angle,
-                                    .v = b.v, .w = b.w, .stepStart = start.center, .fast = true});
-        if (w.scratch.bodyMotion[k] == Fast && !b.bullet) {
-            refitEscaped(w, index, b.center, b.xf, b.center - start.center);
-        }
+        if (!b.bullet) refitEscaped(w, index, b.center, b.xf, b.center - w.scratch.stepStarts[k].center);
     }
-    // Bullets wait for every other body, then meet the fast ones too (continuous_impacts.cpp).
-    const auto anyBullet = [&] {
-        for (int k = 0; k < count; ++k)
-            if (w.scratch.bodyMotion[k] != NonFinite && w.bodies[w.scratch.awakeBodies[k]].bullet) return true;
-        return false;
-    };
-    if (!w.scratch.movers.empty() && anyBullet()) solveMovingImpacts(w, ctx);
+    // Bullets wait for every other body, then meet the fast ones too (continuous_impacts.cpp):
+    // the fast bodies become movers, where there is a bullet.
+    w.scratch.movers.clear();
+    for (int k = 0; k < count && anyBullet.load(std::memory_order_relaxed); ++k) {
+        if (w.scratch.bodyMotion[k] != Fast && w.scratch.bodyMotion[k] != FastInside) continue;
+        const Body& b = w.bodies[w.scratch.awakeBodies[k]];
+        const BodyPose& start = w.scratch.stepStarts[k];
+        w.scratch.movers.push_back({.body = w.scratch.awakeBodies[k], .c0 = start.center, .c1 = b.center, .a0 = start.angle,
+                                    .a1 = b.angle, .v = b.v, .w = b.w, .stepStart = start.center, .fast = true});
+    }
+    if (!w.scratch.movers.empty()) solveMovingImpacts(w, ctx);
     // The forces of the bodies outside the solver (a body put to sleep with its forces) go too.
     for (int i = 0; i < w.bodies.capacity(); ++i) {
         if (w.scratch.bodySlots[static_cast<size_t>(i)] != 0) continue;
