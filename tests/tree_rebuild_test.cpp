@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "collide/collision.hpp"
+#include "collide/tree_rebuild.hpp"
 #include "tree_probe.hpp"
 
 namespace perpdot::collide {
@@ -121,6 +122,54 @@ TEST(TreeRebuild, CentresSpreadBeyondTheFloatRangeOrBelowItsResolution) {
         EXPECT_EQ(found, expected);
         EXPECT_FALSE(expected.empty());
     }
+}
+
+TEST(TreeRebuild, InternalNodesAreHandedOutDepthFirstInIndexOrder) {
+    // Box2D's own tree over scattered boxes, inserted in random order: its internal nodes lie
+    // anywhere. Rebuilt, the same internal indices must follow the new tree depth first (the
+    // root aside, which stays where Box2D keeps it), and every node must still hold its children.
+    b2DynamicTree tree;
+    std::mt19937 random(5);
+    std::uniform_real_distribution<float> at(-50.0f, 50.0f);
+    std::vector<int> leaves;
+    for (int i = 0; i < 300; ++i) {
+        const b2Vec2 c{at(random), at(random)};
+        leaves.push_back(tree.CreateProxy({c - b2Vec2{0.3f, 0.3f}, c + b2Vec2{0.3f, 0.3f}}, nullptr));
+    }
+    for (int i = 0; i < 300; i += 3) tree.MoveProxy(leaves[i], {{at(random), 60.0f}, {60.5f, 61.0f}}, {0.0f, 0.0f});
+    auto* nodes = const_cast<b2TreeNode*>(&reinterpret_cast<const b2TreeNode&>(tree.GetFatAABB(0)));
+    int root = leaves[0];
+    while (nodes[root].parent != b2_nullNode) root = nodes[root].parent;
+    auto internals = [&] {  // depth first, child1 before child2
+        std::vector<int> order, stack{root};
+        while (!stack.empty()) {
+            const int n = stack.back();
+            stack.pop_back();
+            if (nodes[n].IsLeaf()) continue;
+            order.push_back(n);
+            stack.push_back(nodes[n].child2);
+            stack.push_back(nodes[n].child1);
+        }
+        return order;
+    };
+    std::vector<int> before = internals();
+    ASSERT_FALSE(std::is_sorted(before.begin() + 1, before.end()));
+    TreeRebuild scratch;
+    rebuildTree(nodes, root, scratch);
+    const std::vector<int> after = internals();
+    EXPECT_EQ(after.front(), root);
+    EXPECT_TRUE(std::is_sorted(after.begin() + 1, after.end()));
+    std::sort(before.begin(), before.end());
+    std::vector<int> kept = after;
+    std::sort(kept.begin(), kept.end());
+    EXPECT_EQ(kept, before);  // the same indices
+    for (int n : after) {
+        EXPECT_TRUE(nodes[n].aabb.Contains(nodes[nodes[n].child1].aabb) && nodes[n].aabb.Contains(nodes[nodes[n].child2].aabb));
+        EXPECT_EQ(nodes[nodes[n].child1].parent, n);
+        EXPECT_EQ(nodes[nodes[n].child2].parent, n);
+    }
+    tree.Validate();
+    EXPECT_EQ(tree.GetHeight(), nodes[root].height);
 }
 
 TEST(TreeRebuild, ARestingTreeIsNotRebuilt) {

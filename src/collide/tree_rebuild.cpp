@@ -122,6 +122,10 @@ void rebuildTree(b2TreeNode* nodes, int root, TreeRebuild& s) {
         s.stack.push_back(n.child1);
     }
     if (s.leaves.size() < 2) return;
+    // The other internal nodes in the order of their indices: the new tree takes them depth first,
+    // so a subtree's nodes lie together in memory, and a query's or a re-fit's next node is
+    // often in a line just loaded.
+    std::sort(s.internals.begin() + 1, s.internals.end());
     Builder{nodes, s}.build(0, static_cast<int>(s.leaves.size()), b2_nullNode, 0);
 }
 

@@ -2,9 +2,10 @@
 // b2DynamicTree inserts a leaf where it costs least at that moment and keeps heights balanced by
 // rotations; after many re-insertions (a tumbling pile re-inserts a twentieth of its proxies a
 // step) its nodes overlap far more than a tree built over all leaves at once, and every query
-// descends through them. The tree stays Box2D's: its root, leaves and internal nodes keep their
-// indices and only their links, boxes and heights are rewritten, so its own insertion, removal
-// and balancing go on from the new shape. Only collision.cpp includes this header (Box2D types).
+// descends through them. The tree stays Box2D's: its root and leaves keep their indices, the
+// other internal nodes are the same set of indices (handed out in index order, depth first), and
+// only links, boxes and heights are rewritten, so its own insertion, removal and balancing go on
+// from the new shape. Only collision.cpp (and its test) includes this header (Box2D types).
 #pragma once
 
 #include <box2d/b2_dynamic_tree.h>
