@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdlib>
 #include <cstring>
+#include <type_traits>
 
 #include "core/contact_prepare.hpp"
 #include "core/world_impl.hpp"
@@ -33,6 +34,15 @@ int chooseContactLanes() {
 }
 
 namespace {
+
+// fn(blocks) on the step's contact blocks: of eight lanes (contactLanes = 8) or of four.
+template <class Scratch, class Fn>
+decltype(auto) onContactBlocks(Scratch& s, Fn fn) {
+#ifdef PERPDOT_AVX2
+    if (s.contactLanes == 8) return fn(s.contactBlocks8);
+#endif
+    return fn(s.contactBlocks);
+}
 
 // `rows(blockRows, a, b, slotsA, slotsB)` on the blocks of [begin, end) that `needs` (all by
 // default), or `rows(constraint, a, b, slotA, slotB)` on every overflow constraint when overflow is set.
@@ -161,11 +171,7 @@ void prepareContactBlocks(World::Impl& w, const StepContext& ctx) {
         s.contactColors[index] = direct[index] ? overflow : s.coloring.assign(slotA, slotB);
     }
     const ColorStarts& start = s.contactStart = sortByColor(s.contactColors, s.contactOrder);
-#ifdef PERPDOT_AVX2
-    if (s.contactLanes == 8) sizeBlocks(s, s.contactBlocks8);
-    else
-#endif
-        sizeBlocks(s, s.contactBlocks);
+    onContactBlocks(s, [&](auto& blocks) { sizeBlocks(s, blocks); });
     s.overflowConstraints.clear();
     for (int position = start[overflow]; position < count; ++position) {
         const int index = s.contactOrder[position];
@@ -190,17 +196,15 @@ void locateContactRows(World::Impl& w) {
 float contactRowField(const World::Impl& w, int k, std::size_t field) {
     const int slot = w.scratch.contactRowSlot[k];
     if (slot < 0) return floatsOf(w.scratch.constraintRows[k])[field];
-#ifdef PERPDOT_AVX2
-    if (w.scratch.contactLanes == 8) return w.scratch.contactBlocks8[slot / 8].rowData()[field * ContactBlock8::lanes + slot % 8];
-#endif
-    return w.scratch.contactBlocks[slot / 4].rowData()[field * ContactBlock::lanes + slot % 4];
+    return onContactBlocks(w.scratch, [&](const auto& blocks) {
+        constexpr std::size_t lanes = std::remove_cvref_t<decltype(blocks[0])>::lanes;
+        const auto place = static_cast<std::size_t>(slot);
+        return blocks[place / lanes].rowData()[field * lanes + place % lanes];
+    });
 }
 
 void layOutContactBlocks(World::Impl& w, const StepContext& ctx, int color, int begin, int end) {
-#ifdef PERPDOT_AVX2
-    if (w.scratch.contactLanes == 8) return layOutBlocks(w, ctx, w.scratch.contactBlocks8, color, begin, end);
-#endif
-    layOutBlocks(w, ctx, w.scratch.contactBlocks, color, begin, end);
+    onContactBlocks(w.scratch, [&](auto& blocks) { layOutBlocks(w, ctx, blocks, color, begin, end); });
 }
 
 int contactBlockCount(const World::Impl& w, int color) {
@@ -258,10 +262,7 @@ void storeBlocks(World::Impl& w, const std::vector<Block>& blocks, int begin, in
 // apart). A colour's blocks from their lanes, as the solver's last stages (SolverStages) ...
 void storeContactBlocks(World::Impl& w, int color, int begin, int end) {
     const int first = w.scratch.contactBlockStart[color];
-#ifdef PERPDOT_AVX2
-    if (w.scratch.contactLanes == 8) return storeBlocks(w, w.scratch.contactBlocks8, first + begin, first + end);
-#endif
-    storeBlocks(w, w.scratch.contactBlocks, first + begin, first + end);
+    onContactBlocks(w.scratch, [&](const auto& blocks) { storeBlocks(w, blocks, first + begin, first + end); });
 }
 
 // ... then those of the overflow constraints and of the contact groups solved directly, from their rows.

@@ -188,7 +188,8 @@ void finalizeBodies(World::Impl& w, const StepContext& ctx) {
     // Bullets wait for every other body, then meet the fast ones too (continuous_impacts.cpp):
     // the fast bodies become movers, where there is a bullet.
     w.scratch.movers.clear();
-    for (int k = 0; k < count && anyBullet.load(std::memory_order_relaxed); ++k) {
+    const bool listMovers = anyBullet.load(std::memory_order_relaxed);
+    for (int k = 0; listMovers && k < count; ++k) {
         if (w.scratch.bodyMotion[k] != Fast && w.scratch.bodyMotion[k] != FastInside) continue;
         const Body& b = w.bodies[w.scratch.awakeBodies[k]];
         const BodyPose& start = w.scratch.stepStarts[k];

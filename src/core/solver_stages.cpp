@@ -23,6 +23,11 @@ void SolverStages::build(const World::Impl& w) {
     auto add = [&](Work work, RowPass pass, int color, int units, int unitsPerItem) {
         if (units > 0) stages_.push_back({work, pass, color, units, unitsPerItem});
     };
+    // A colour's contact blocks: every stage that touches them (layout, passes, store) claims the
+    // same items, so a block stays with the worker that laid it out and solves it.
+    auto addContactBlocks = [&](Work work, RowPass pass, int color) {
+        add(work, pass, color, contactBlockCount(w, color), contactsPerItem / w.scratch.contactLanes);
+    };
     // Colour by colour, the colour's joints and then its contacts (one constraint graph: they share
     // no moving body); then the constraints no colour took, one by one: joints (and revolute
     // trees), contacts, contact groups. Restitution has the contact stages only.
@@ -30,15 +35,13 @@ void SolverStages::build(const World::Impl& w) {
         const bool joints = pass != RowPass::Restitution;
         for (int color = 0; color < GraphColoring::overflow; ++color) {
             if (joints) add(Work::Joints, pass, color, jointUnitCount(w, color), jointUnitsPerItem);
-            add(Work::Contacts, pass, color, contactBlockCount(w, color), contactsPerItem / w.scratch.contactLanes);
+            addContactBlocks(Work::Contacts, pass, color);
         }
         if (joints) add(Work::SerialJoints, pass, 0, serialJointCount(w) > 0 ? 1 : 0, 1);
         add(Work::SerialContacts, pass, 0, w.scratch.overflowConstraints.empty() ? 0 : 1, 1);
         add(Work::ContactGroups, pass, 0, w.scratch.contactGroups.start.size() > 1 ? 1 : 0, 1);
     };
-    // A block is laid out in the item the passes solve it in: by the worker that solves it first.
-    for (int color = 0; color < GraphColoring::overflow; ++color)
-        add(Work::LayOutContacts, RowPass::WarmStart, color, contactBlockCount(w, color), contactsPerItem / w.scratch.contactLanes);
+    for (int color = 0; color < GraphColoring::overflow; ++color) addContactBlocks(Work::LayOutContacts, RowPass::WarmStart, color);
     firstSubstepStage_ = stages_.size();
     add(Work::SubstepForces, RowPass::WarmStart, 0, bodies, bodiesPerItem);
     rows(RowPass::WarmStart);
@@ -47,8 +50,7 @@ void SolverStages::build(const World::Impl& w) {
     rows(RowPass::Relax);
     substepStages_ = stages_.size();
     rows(RowPass::Restitution);
-    for (int color = 0; color < GraphColoring::overflow; ++color)
-        add(Work::StoreContacts, RowPass::Restitution, color, contactBlockCount(w, color), contactsPerItem / w.scratch.contactLanes);
+    for (int color = 0; color < GraphColoring::overflow; ++color) addContactBlocks(Work::StoreContacts, RowPass::Restitution, color);
 }
 
 void SolverStages::execute(World::Impl& w, const StepContext& ctx, const SolverStage& stage, int begin, int end) const {
