@@ -20,6 +20,10 @@ struct BoxRoom {
     float reach = -1;           // of its shapes' box-placing points about the centre of mass; negative: not known
     Vec2 below{-1.0f, -1.0f};   // room under the boxes' lower sides (x, y); negative: not measured
     Vec2 above{-1.0f, -1.0f};   // room over their upper sides
+    // Known with reach, what continuous collision asks of the same shapes (isFast): a step's move
+    // longer than fastTravel may tunnel (half the least extent of its swept shapes; infinite when
+    // none sweeps), and no point of a swept shape lies farther than sweepRadius from the centre of mass.
+    float fastTravel = 0, sweepRadius = 0;
 
     // Whether the boxes at pose (c, r) are inside by this bound. The sum of the components' sizes
     // bounds |q₁ − q₀|; 1e-5 of the coordinates covers the rounding of the boxes' float operations.

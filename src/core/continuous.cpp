@@ -13,8 +13,6 @@ namespace perpdot {
 
 namespace {
 
-constexpr float safetyFactor = 0.5f;  // of the smallest extent: slower bodies cannot tunnel
-
 Vec2 middle(const AABB& box) { return 0.5f * (box.lower + box.upper); }
 
 // The world endpoints of a segment or of one chain child.
@@ -54,19 +52,12 @@ SegmentPass passOfCentre(Vec2 p1, Vec2 p2, bool oneSided, Vec2 start, Vec2 end, 
 
 }  // namespace
 
-bool isFast(const World::Impl& w, int index, Vec2 c0, float a0, Vec2 c1, float a1) {
-    const Body& b = w.bodies[index];
-    if (b.type != BodyType::Dynamic) return false;
-    float minExtent = std::numeric_limits<float>::max(), maxExtent = 0.0f;
-    for (int s : b.shapes) {
-        if (!sweeps(w.shapes[s])) continue;
-        minExtent = std::min(minExtent, w.shapes[s].minExtent);
-        maxExtent = std::max(maxExtent, w.shapes[s].maxExtent);
-    }
-    if (maxExtent == 0.0f) return false;
+bool isFast(World::Impl& w, int index, Vec2 c0, float a0, Vec2 c1, float a1) {
+    if (w.bodies[index].type != BodyType::Dynamic) return false;
+    const BoxRoom& shapes = knownShapes(w, index);
     // Largest distance any point travelled: |Δc| + |Δθ|·(radius about the centre of mass).
-    const float travel = distance(c0, c1) + std::fabs(a1 - a0) * (maxExtent + length(b.localCenter));
-    return travel > safetyFactor * minExtent;
+    const float travel = distance(c0, c1) + std::fabs(a1 - a0) * shapes.sweepRadius;
+    return travel > shapes.fastTravel;
 }
 
 float staticImpact(const World::Impl& w, int index, const collide::Sweep& sweep) {

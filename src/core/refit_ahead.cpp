@@ -16,6 +16,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/continuous.hpp"
 #include "core/stages.hpp"
 
 namespace perpdot {
@@ -40,17 +41,35 @@ bool rememberRoom(BoxRoom& known, Vec2 center, Rot q, Vec2 below, Vec2 above) {
 
 constexpr float most = std::numeric_limits<float>::max();
 
+}  // namespace
+
+BoxRoom& knownShapes(World::Impl& w, int body) {
+    BoxRoom& known = w.boxRooms[body];
+    if (known.reach >= 0.0f) return known;
+    // Forgotten: the shapes or the centre of mass changed.
+    const Body& b = w.bodies[body];
+    known.reach = 0.0f;
+    float minExtent = most, maxExtent = 0.0f;
+    for (int s : b.shapes) {
+        known.reach = std::max(known.reach, w.collision.turningReach(s, b.localCenter));
+        if (!sweeps(w.shapes[s])) continue;
+        minExtent = std::min(minExtent, w.shapes[s].minExtent);
+        maxExtent = std::max(maxExtent, w.shapes[s].maxExtent);
+    }
+    known.fastTravel = maxExtent > 0.0f ? safetyFactor * minExtent : std::numeric_limits<float>::infinity();
+    known.sweepRadius = maxExtent + length(b.localCenter);
+    return known;
+}
+
+namespace {
+
 // The body's boxes at pose xf against their fat AABBs, into its box room; with `refitAlong`, the
 // boxes that stick out are re-fitted first (grown along that displacement). Whether all were inside.
 // A body of one proxy leaves it and its box in `sole` (when given): its re-fit needs no second look.
 bool measureBoxes(World::Impl& w, int body, Vec2 center, const Transform& xf, const Vec2* refitAlong,
                   SoleBox* sole = nullptr) {
-    BoxRoom& known = w.boxRooms[body];
+    BoxRoom& known = knownShapes(w, body);
     const Body& b = w.bodies[body];
-    if (known.reach < 0.0f) {  // forgotten: the shapes or the centre of mass changed
-        known.reach = 0.0f;
-        for (int s : b.shapes) known.reach = std::max(known.reach, w.collision.turningReach(s, b.localCenter));
-    }
     Vec2 below{most, most}, above{most, most};
     for (int s : b.shapes) {
         const std::vector<int>& proxies = w.shapes[s].proxies;
