@@ -1,7 +1,8 @@
-// A moved proxy whose new box one of its nearest ancestors in the tree already holds keeps its
-// leaf where it is (CollisionSystem::Impl::moveInPlace); the others are re-inserted. Either way
-// every ancestor must still hold its leaves and the leaf must be marked moved: the tree then finds
-// exactly the fat boxes that overlap a probe, and pair finding sees the proxy as moved.
+// A moved dynamic proxy keeps its leaf where it is (CollisionSystem::Impl::moveInPlace): its
+// ancestors up to the nearest that holds the new box become the unions of their children again.
+// Every ancestor must still hold its leaves and the leaf must be marked moved: the tree then finds
+// exactly the fat boxes that overlap a probe, and pair finding sees the proxy as moved. A move
+// that no near ancestor holds wears the tree toward its next rebuild.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -48,6 +49,44 @@ TEST(MoveInPlace, SmallMovesKeepEveryAncestorHoldingItsLeaves) {
         for (int proxy : proxies) collision.clearMoved(proxy);
     }
     EXPECT_GT(moves, 1000);
+}
+
+TEST(MoveInPlace, FarMovesKeepEveryAncestorHoldingItsLeavesAndWearTheTree) {
+    CollisionSystem collision;
+    std::mt19937 random(11);
+    // Boxes thrown anywhere over a field forty times the grid's size: most land where no ancestor
+    // of their leaf near it holds them, some outside the root's box.
+    std::uniform_real_distribution<float> anywhere(-200.0f, 200.0f), place(-200.0f, 200.0f);
+    collision.setGeometry(0, makeBox(0.2f, 0.2f));
+    std::vector<int> proxies;
+    std::vector<AABB> boxes;
+    for (int i = 0; i < 25; ++i)
+        for (int j = 0; j < 25; ++j) {
+            const AABB box = collision.computeAABB(0, 0, {{0.4f * i, 0.4f * j}, Rot::fromAngle(0.0f)});
+            proxies.push_back(collision.createProxy(box, {0, i * 25 + j}, false));
+            boxes.push_back(box);
+        }
+    collision.rebuildTreeIfWorn();  // the creations' wear
+    int rebuilds = 0;
+    for (int round = 0; round < 30; ++round) {
+        for (size_t k = round % 3; k < proxies.size(); k += 3) {
+            const Vec2 d = Vec2{anywhere(random), anywhere(random)} - boxes[k].lower;
+            boxes[k] = {boxes[k].lower + d, boxes[k].upper + d};
+            ASSERT_TRUE(collision.moveProxy(proxies[k], boxes[k], Vec2{}));
+            EXPECT_TRUE(collision.wasMoved(proxies[k]));
+            EXPECT_GE(collision.room(proxies[k], boxes[k]), 0.0f);
+        }
+        for (int probe = 0; probe < 10; ++probe) {
+            const Vec2 c{place(random), place(random)};
+            const AABB box{c - Vec2{20.0f, 20.0f}, c + Vec2{20.0f, 20.0f}};
+            const auto [found, expected] = test::foundAndExpected(collision, proxies, box);
+            ASSERT_EQ(found, expected) << "round " << round << ", probe " << probe;
+        }
+        for (int proxy : proxies) collision.clearMoved(proxy);
+        rebuilds += collision.rebuildTreeIfWorn() ? 1 : 0;
+    }
+    // 6,250 far moves of 625 leaves: about one rebuild every three rounds.
+    EXPECT_GE(rebuilds, 5);
 }
 
 }  // namespace

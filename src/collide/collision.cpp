@@ -119,28 +119,26 @@ struct CollisionSystem::Impl {
         if (const int leaf = staticLeaf[proxy]; leaf >= 0) const_cast<b2AABB&>(staticTree.GetFatAABB(leaf)) = b;
         fat[proxy] = box;
     }
-    // Moves a dynamic proxy's leaf to `box` where it is, without re-inserting it, when one of its
-    // nearest ancestors already holds `box` (Box2D v3 enlarges leaves in place and rebuilds later;
-    // 2.4.1's tree has no rebuild, so only moves that keep the tree's boxes are made in place): the
-    // ancestors below that one become the union of their children again. A re-insertion
-    // (b2DynamicTree::MoveProxy) removes the leaf, descends from the root to insert it again and
-    // rebalances on the way back up.
-    // Either way the leaf's box is `box`: the pairs found do not depend on which was taken.
-    static constexpr int inPlaceLevels = 5;
-    bool moveInPlace(int proxy, const AABB& box) {
+    // Moves a dynamic proxy's leaf to `box` where it is, without re-inserting it, as Box2D v3
+    // enlarges escaped leaves in place: the ancestors below the nearest one that holds `box` (up to
+    // the root if none does) become the union of their children again. A move that none of its
+    // nearLevels nearest ancestors holds leaves the leaf far from its neighbours, its subtree's box
+    // spread over both places: it wears the tree as a re-insertion does, and counts toward the next
+    // rebuild (rebuildIfWorn). A re-insertion (b2DynamicTree::MoveProxy) would remove the leaf,
+    // descend from the root to insert it again and rebalance on the way back up: several times the
+    // cost, and a rebuild spends less per leaf. Either way the leaf's box is `box`: the pairs found
+    // do not depend on the tree's shape.
+    static constexpr int nearLevels = 5;
+    void moveInPlace(int proxy, const AABB& box) {
         const b2AABB b{toB2(box.lower), toB2(box.upper)};
         auto* nodes = const_cast<b2TreeNode*>(treeNodes(tree, proxy));  // the tree's own, non-const storage
-        int holder = nodes[proxy].parent;
-        for (int level = 0; holder != b2_nullNode && !nodes[holder].aabb.Contains(b); ++level) {
-            if (level + 1 == inPlaceLevels) return false;
-            holder = nodes[holder].parent;
-        }
-        if (holder == b2_nullNode) return false;
+        int holder = nodes[proxy].parent, levels = 0;
+        for (; holder != b2_nullNode && !nodes[holder].aabb.Contains(b); ++levels) holder = nodes[holder].parent;
+        if (levels >= nearLevels || !overlaps(fat[proxy], box)) ++insertions;
         fit(proxy, box);
         nodes[proxy].moved = true;
         for (int n = nodes[proxy].parent; n != holder; n = nodes[n].parent)
             nodes[n].aabb.Combine(nodes[nodes[n].child1].aabb, nodes[nodes[n].child2].aabb);
-        return true;
     }
     // By proxy id, what is known of its fat AABB when pairs were last updated (overlappedBefore):
     // unchanged since, moved from the box in priorFat, or unknown (created, restored, requeried).
@@ -203,8 +201,8 @@ struct CollisionSystem::Impl {
     // last built anew, and the proxies it holds.
     int insertions = 0, proxyCount = 0;
     TreeRebuild rebuildScratch;
-    // The tree is built anew (tree_rebuild.hpp) once it has inserted or removed as many leaves
-    // as it holds, 64 at least: in bench_tumbler's tumbling pile of 2,000 boxes every twenty
+    // The tree is built anew (tree_rebuild.hpp) once it has inserted, removed or moved far in place
+    // as many leaves as it holds, 64 at least: in bench_tumbler's tumbling pile of 2,000 boxes every twenty
     // steps or so, in a resting world never. A proxy in the tree climbs to the root.
     bool rebuildIfWorn() {
         if (insertions < std::max(64, proxyCount)) return false;
@@ -375,8 +373,10 @@ bool CollisionSystem::moveProxy(int proxy, const AABB& aabb, Vec2 displacement) 
     const Vec2 growth = b2_aabbMultiplier * Vec2{d.x, d.y};
     (growth.x < 0.0f ? fit.lower.x : fit.upper.x) += growth.x;
     (growth.y < 0.0f ? fit.lower.y : fit.upper.y) += growth.y;
-    const bool escaped = room(proxy, aabb) < 0.0f;
-    if (!(escaped && impl_->staticLeaf[proxy] < 0 && impl_->moveInPlace(proxy, fit))) {
+    // A static proxy's mirror in the static tree is re-inserted there, and its leaf here too.
+    if (room(proxy, aabb) < 0.0f && impl_->staticLeaf[proxy] < 0) {
+        impl_->moveInPlace(proxy, fit);
+    } else {
         if (!impl_->tree.MoveProxy(proxy, box, d)) return false;
         ++impl_->insertions;
         impl_->fit(proxy, fit);
