@@ -18,6 +18,8 @@ struct Body {
     // reads their poses, so these share a cache line. (A body's solver slot during a step is
     // StepScratch::bodySlots.)
     bool awake = true;
+    int jointCount = 0;    // joints attached (maintained by the joint store); beside the type, for
+                           // the contact groups' per-step look at every awake body's kind
     Transform xf;          // origin frame
     float angle = 0;       // accumulated θ; xf.q = Rot(θ)
     Vec2 localCenter;      // centre of mass, body frame
@@ -30,11 +32,10 @@ struct Body {
     float inertia = 0, invInertia = 0;  // scalar I about the centre of mass
     float linearDamping = 0, angularDamping = 0, gravityScale = 1;
     bool fixedRotation = false, bullet = false, allowSleep = true;
+    int islandNext = -1;   // next body of the island it fell asleep with
     float sleepTime = 0;
     void* userData = nullptr;
     std::vector<int> shapes;
-    int jointCount = 0;    // joints attached (maintained by the joint store)
-    int islandNext = -1;   // next body of the island it fell asleep with
 
     // Body{}, keeping the shape list's memory (Pool::restoreSlots).
     void resetKeepingMemory() {

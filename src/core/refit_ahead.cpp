@@ -128,7 +128,7 @@ void startTreeRefit(World::Impl& w, const StepContext& ctx) {
             p.displacement = ctx.h * s.v;
             const float turn = ctx.h * s.w;
             p.refit = false;
-            if (b.shapes.empty() || !isFinite(p.displacement) || !std::isfinite(turn)) continue;
+            if (!isFinite(p.displacement) || !std::isfinite(turn)) continue;
             const Rot q = integrateRotation(b.xf.q, turn);  // R(θ + hω), to first order: a prediction
             p.center = b.center + p.displacement;
             p.xf = {p.center - rotate(q, b.localCenter), q};
@@ -136,7 +136,10 @@ void startTreeRefit(World::Impl& w, const StepContext& ctx) {
             // overflow the prediction: no box is made of it, the real end pose decides.
             if (!isFinite(p.xf.p) || !std::isfinite(q.c) || !std::isfinite(q.s)) continue;
             p.sole.proxy = -1;
-            p.refit = !w.boxRooms[index].holds(p.center, p.xf.q) && !measureBoxes(w, index, p.center, p.xf, nullptr, &p.sole);
+            // A body without shapes is never measured, so its box room never holds: its shape list
+            // (the body's last cache line) is read only then.
+            p.refit = !w.boxRooms[index].holds(p.center, p.xf.q) && !b.shapes.empty() &&
+                      !measureBoxes(w, index, p.center, p.xf, nullptr, &p.sole);
         }
     });
     w.workers.runAside(&refitPredicted, &w);
