@@ -31,9 +31,6 @@ ContactRows<float> randomRows(Random& r, int pointCount, bool rolling) {
     c.rollingMass = rolling ? 1.0f / (c.invIA + c.invIB) : 0.0f;
     c.rollingImpulse = rolling ? r(-0.1f, 0.1f) : 0.0f;
     c.tangentSpeed = r(-0.5f, 0.5f);
-    c.biasRate = r(10.0f, 60.0f);
-    c.massScale = r(0.5f, 1.0f);
-    c.impulseScale = r(0.0f, 0.5f);
     c.restitution = r(0.0f, 1.0f) < 0.3f ? 0.0f : r(0.1f, 1.0f);
     for (int i = 0; i < pointCount; ++i) {
         ContactPointRows<float>& p = c.points[i];
@@ -58,6 +55,9 @@ TEST(ContactSolverWide, FourLanesEqualFourScalarSolves) {
     ctx.invH = 60.0f;
     Random r{987654321u};
     for (int round = 0; round < 50; ++round) {
+        // The rows' softness, against the static body (lane 2) or not, comes from the step.
+        ctx.contactSoftness = {r(10.0f, 60.0f), r(0.5f, 1.0f), r(0.0f, 0.5f)};
+        ctx.staticSoftness = {r(10.0f, 60.0f), r(0.5f, 1.0f), r(0.0f, 0.5f)};
         // Lanes: a two-point manifold, a one-point one with rolling resistance, one against the
         // static slot 0, and an empty lane (round % 2) or another two-point manifold.
         const bool emptyLast = round % 2 == 0;

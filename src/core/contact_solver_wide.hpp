@@ -34,7 +34,6 @@ struct ContactRows {
     F friction{}, restitution{};
     F rollingResistance{}, tangentSpeed{};
     F rollingMass{}, rollingImpulse{};  // angular row: 1/(1/IA + 1/IB), accumulated λ
-    F biasRate{}, massScale{}, impulseScale{};  // the row's Softness (softness.hpp)
     // 1 where a body's surface is flat: its anchor is a point of the body and turns with it. 0 for a
     // round surface, whose contact point stays under its centre as it rolls.
     F turnsA{}, turnsB{};
@@ -82,20 +81,14 @@ F effectiveMass(const Masses& m, Vec2T<F> rA, Vec2T<F> rB, Vec2T<F> d) {
 // once, after the contact's values were gathered into them (prepareContactRows, contact_prepare.hpp):
 // each point's separation in baseSeparation and its last accumulated impulses, zeros for no point.
 // a, b: the bodies' velocities without contacts (v, ω); present[i]: 1 where point i is a manifold
-// point, else 0. Warm start, rolling mass, softness (against a body that cannot move: the static
-// one), and per point base separation, approach speed and effective masses.
+// point, else 0. Warm start, rolling mass, and per point base separation, approach speed and
+// effective masses.
 template <class F>
 void deriveContactRows(ContactRows<F>& c, const BodyLanes<F>& a, const BodyLanes<F>& b, const F (&present)[2], const StepContext& ctx) {
     using simd::select;
     if (!ctx.enableWarmStarting) c.rollingImpulse = F(0.0f);
     const F kRolling = c.invIA + c.invIB;
     c.rollingMass = select(c.rollingResistance > F(0.0f), select(kRolling > F(0.0f), F(1.0f) / kRolling, F(0.0f)), F(0.0f));
-    auto soft = [&](float contactValue, float staticValue) {
-        return select(c.invMassA != F(0.0f), select(c.invMassB != F(0.0f), F(contactValue), F(staticValue)), F(staticValue));
-    };
-    c.biasRate = soft(ctx.contactSoftness.biasRate, ctx.staticSoftness.biasRate);
-    c.massScale = soft(ctx.contactSoftness.massScale, ctx.staticSoftness.massScale);
-    c.impulseScale = soft(ctx.contactSoftness.impulseScale, ctx.staticSoftness.impulseScale);
     const Vec2T<F> n = c.normal, t = perp(n);
     for (int i = 0; i < 2; ++i) {
         ContactPointRows<F>& cp = c.points[i];
@@ -139,6 +132,18 @@ void solveContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, const Ste
     using simd::max;
     using simd::select;
     const Vec2T<F> n = c.normal;
+    // The rows' Softness (softness.hpp): stiffer against a body that cannot move, the static one.
+    // Chosen here from the masses rather than kept in the rows: three fields less to stream through
+    // every pass.
+    [[maybe_unused]] SoftnessT<F> soft;
+    if constexpr (useBias && normalRows) {
+        auto pick = [&](float contactValue, float staticValue) {
+            return select(c.invMassA != F(0.0f), select(c.invMassB != F(0.0f), F(contactValue), F(staticValue)), F(staticValue));
+        };
+        soft = {pick(ctx.contactSoftness.biasRate, ctx.staticSoftness.biasRate),
+                pick(ctx.contactSoftness.massScale, ctx.staticSoftness.massScale),
+                pick(ctx.contactSoftness.impulseScale, ctx.staticSoftness.impulseScale)};
+    }
     F totalNormalImpulse = 0.0f;
     for (ContactPointRows<F>& cp : c.points) {
         if constexpr (normalRows) {
@@ -150,10 +155,10 @@ void solveContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, const Ste
             F massScale = 1.0f, impulseScale = 0.0f;
             if constexpr (useBias) {
                 // Soft push-out of the overlap, at most maxBiasVelocity.
-                const F push = max(c.biasRate * simd::min(s + F(ctx.pushSlop), F(0.0f)), F(-ctx.maxBiasVelocity));
+                const F push = max(soft.biasRate * simd::min(s + F(ctx.pushSlop), F(0.0f)), F(-ctx.maxBiasVelocity));
                 bias = select(speculative, bias, push);
-                massScale = select(speculative, massScale, c.massScale);
-                impulseScale = select(speculative, impulseScale, c.impulseScale);
+                massScale = select(speculative, massScale, soft.massScale);
+                impulseScale = select(speculative, impulseScale, soft.impulseScale);
             }
             const F vn = dot(relativeVelocity(a, b, rA, rB), n);
             F impulse = -cp.normalMass * massScale * (vn + bias) - impulseScale * cp.normalImpulse;

@@ -61,15 +61,6 @@ inline void applyRow(JointPairT<F>& p, const RowT<F>& r, F impulse) {
 // in the relax pass.
 inline Softness rigidSoftness(const StepContext& ctx, bool useBias) { return useBias ? ctx.jointSoftness : Softness{}; }
 
-// A Softness per lane (for F = float, Softness itself): a spring's where a lane's joint has one,
-// the rigid row's where not.
-template <class F>
-struct SoftnessLanes {
-    F biasRate{}, massScale{}, impulseScale{};
-};
-template <class F>
-using SoftnessT = std::conditional_t<std::is_same_v<F, float>, Softness, SoftnessLanes<F>>;
-
 // The same Softness in every lane.
 template <class F>
 inline SoftnessT<F> everyLane(const Softness& s) {

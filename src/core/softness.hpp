@@ -2,6 +2,8 @@
 // solved over substep h, becomes  Δλ = -effectiveMass⁻¹·massScale·(v + biasRate·C) - impulseScale·λ.
 #pragma once
 
+#include <type_traits>
+
 #include "perpdot/math.hpp"
 
 namespace perpdot {
@@ -22,5 +24,14 @@ inline Softness makeSoftness(float hertz, float zeta, float h) {
     const float a3 = 1.0f / (1.0f + a2);
     return {omega / a1, a2 * a3, a3};
 }
+
+// A Softness per lane of a block of rows (for F = float, Softness itself): a joint's spring's where
+// a lane's joint has one, the rigid row's where not; a contact's against the static body or not.
+template <class F>
+struct SoftnessLanes {
+    F biasRate{}, massScale{}, impulseScale{};
+};
+template <class F>
+using SoftnessT = std::conditional_t<std::is_same_v<F, float>, Softness, SoftnessLanes<F>>;
 
 }  // namespace perpdot
