@@ -11,8 +11,8 @@
 
 namespace perpdot {
 
-static_assert(sizeof(BodyState) == 7 * sizeof(float) && offsetof(BodyState, dp) == 3 * sizeof(float),
-              "a body's state is the floats v.x, v.y, ω, Δp.x, Δp.y, Δq.c, Δq.s");
+static_assert(sizeof(BodyState) == 8 * sizeof(float) && offsetof(BodyState, dp) == 3 * sizeof(float),
+              "a body's state is the floats v.x, v.y, ω, Δp.x, Δp.y, Δq.c, Δq.s and a float of padding");
 
 // v, ω, Δp and Δq of the bodies in four solver slots: each body's (v.x, v.y, ω, Δp.x) and
 // (Δp.x, Δp.y, Δq.c, Δq.s) as a row, then rows turned into lanes.

@@ -74,8 +74,10 @@ Vec2Lanes<F> rotate(RotLanes<F> q, Vec2Lanes<F> v) {
 }
 
 // Per-substep state of a solver body (see BodyState in step_context.hpp, which is BodyLanes<float>).
+// Seven floats, aligned on 32 bytes (one float of padding): the rows gather the states of the
+// bodies of every lane from anywhere in the array, and a state never spans two cache lines.
 template <class F>
-struct BodyLanes {
+struct alignas(32) BodyLanes {
     Vec2T<F> v;   // linear velocity of the centre of mass
     F w{};        // angular velocity ω
     Vec2T<F> dp;  // centre-of-mass displacement since the step began

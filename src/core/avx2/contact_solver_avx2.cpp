@@ -17,13 +17,12 @@ using simd::Float8;
 
 namespace {
 
-// Each body's state (v.x, v.y, ω, Δp.x, Δp.y, Δq.c, Δq.s: body_lanes.hpp) as a row of eight
-// floats, the eighth masked off (a state is seven floats, and the last one's row must not read
-// past the array), then the 8x8 transpose: unpack pairs of rows, shuffle quads, swap halves.
+// Each body's state (v.x, v.y, ω, Δp.x, Δp.y, Δq.c, Δq.s and its padding: body_lanes.hpp) as an
+// aligned row of eight floats, then the 8x8 transpose: unpack pairs of rows, shuffle quads, swap halves.
 [[gnu::always_inline]] inline BodyLanes<Float8> gatherBodies8(const BodyState* states, const int (&slots)[8]) {
-    const __m256i sevenFloats = _mm256_setr_epi32(-1, -1, -1, -1, -1, -1, -1, 0);
+    static_assert(sizeof(BodyState) == 8 * sizeof(float) && alignof(BodyState) == 32);
     __m256 row[8];
-    for (int i = 0; i < 8; ++i) row[i] = _mm256_maskload_ps(reinterpret_cast<const float*>(&states[slots[i]]), sevenFloats);
+    for (int i = 0; i < 8; ++i) row[i] = _mm256_load_ps(reinterpret_cast<const float*>(&states[slots[i]]));
     __m256 pairs[8], quads[8];
     for (int i = 0; i < 8; i += 2) {
         pairs[i] = _mm256_unpacklo_ps(row[i], row[i + 1]);
