@@ -21,9 +21,7 @@ using lanes_test::sameBits;
 
 ContactRows<float> randomRows(Random& r, int pointCount, bool rolling) {
     ContactRows<float> c;
-    c.invMassA = r(0.1f, 2.0f);
     c.invIA = r(0.1f, 4.0f);
-    c.invMassB = r(0.1f, 2.0f);
     c.invIB = r(0.1f, 4.0f);
     c.normal = normalize(Vec2{r(-1.0f, 1.0f), r(0.2f, 1.0f)});
     c.friction = r(0.0f, 1.0f);
@@ -65,7 +63,7 @@ TEST(ContactSolverWide, FourLanesEqualFourScalarSolves) {
         for (int i = 1; i < 9; ++i) states[i] = randomBody(r);
         std::array<ContactRows<float>, 4> rows = {randomRows(r, 2, false), randomRows(r, 1, true), randomRows(r, 2, false),
                                                   emptyLast ? ContactRows<float>{} : randomRows(r, 2, true)};
-        rows[2].invMassA = rows[2].invIA = 0.0f;  // body A of lane 2 is static
+        rows[2].invIA = 0.0f;  // body A of lane 2 is the static slot 0 (its state's 1/m is 0)
         const int bodyA[4] = {1, 3, 0, emptyLast ? 0 : 7};
         const int bodyB[4] = {2, 4, 5, emptyLast ? 0 : 8};
 
@@ -138,7 +136,7 @@ TEST(ContactSolverWide, DerivedRowsInFourLanesEqualFourScalarDerivations) {
             rows[lane] = randomRows(r, pointCounts[lane], lane % 2 == 1);
             for (int i = 0; i < pointCounts[lane]; ++i) rows[lane].points[i].baseSeparation = r(-0.05f, 0.05f);  // the separation
         }
-        rows[2].invMassA = rows[2].invIA = 0.0f;  // body A of lane 2 is static
+        rows[2].invIA = 0.0f;  // body A of lane 2 is the static slot 0 (its state's 1/m is 0)
         const int bodyA[4] = {1, 3, 0, 7};
         const int bodyB[4] = {2, 4, 5, 8};
 

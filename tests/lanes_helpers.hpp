@@ -24,7 +24,7 @@ struct Random {
 // A body mid-substep: some velocity, a small displacement and turn since the step began.
 inline BodyState randomBody(Random& r) {
     const float angle = r(-0.1f, 0.1f);
-    return {{r(-2.0f, 2.0f), r(-2.0f, 2.0f)}, r(-3.0f, 3.0f), {r(-0.1f, 0.1f), r(-0.1f, 0.1f)}, Rot::fromAngle(angle)};
+    return {{r(-2.0f, 2.0f), r(-2.0f, 2.0f)}, r(-3.0f, 3.0f), {r(-0.1f, 0.1f), r(-0.1f, 0.1f)}, Rot::fromAngle(angle), r(0.1f, 2.0f)};
 }
 
 inline bool sameBits(float a, float b) { return std::bit_cast<uint32_t>(a) == std::bit_cast<uint32_t>(b); }

@@ -12,21 +12,21 @@
 namespace perpdot {
 
 static_assert(sizeof(BodyState) == 8 * sizeof(float) && offsetof(BodyState, dp) == 3 * sizeof(float),
-              "a body's state is the floats v.x, v.y, ω, Δp.x, Δp.y, Δq.c, Δq.s and a float of padding");
+              "a body's state is the floats v.x, v.y, ω, Δp.x, Δp.y, Δq.c, Δq.s, 1/m");
 
-// v, ω, Δp and Δq of the bodies in four solver slots: each body's (v.x, v.y, ω, Δp.x) and
-// (Δp.x, Δp.y, Δq.c, Δq.s) as a row, then rows turned into lanes.
+// The states of the bodies in four solver slots: each body's (v.x, v.y, ω, Δp.x) and
+// (Δp.y, Δq.c, Δq.s, 1/m) as a row, then rows turned into lanes.
 inline BodyLanes<simd::Float4> gatherBodies(const std::vector<BodyState>& states, const int (&slots)[4]) {
     using simd::Float4;
     Float4 head[4], tail[4];
     for (int i = 0; i < 4; ++i) {
         const BodyState& s = states[slots[i]];
         head[i] = Float4::loadBytes(&s);
-        tail[i] = Float4::loadBytes(&s.dp);
+        tail[i] = Float4::loadBytes(&s.dp.y);
     }
     simd::transpose(head);
     simd::transpose(tail);
-    return {{head[0], head[1]}, head[2], {tail[0], tail[1]}, {tail[2], tail[3]}};
+    return {{head[0], head[1]}, head[2], {head[3], tail[0]}, {tail[1], tail[2]}, tail[3]};
 }
 
 // Write back the velocities the rows changed (Δp and Δq are the integrator's). The static slot 0

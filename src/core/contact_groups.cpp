@@ -34,10 +34,12 @@ struct RowSide {
 };
 
 // −n, −perpDot(rA, n) for A; n, perpDot(rB, n) for B.
-std::array<RowSide, 2> sidesOf(const ContactConstraint& c, const ContactRows<float>& rows, const ContactPointRows<float>& cp) {
+std::array<RowSide, 2> sidesOf(const World::Impl& w, const ContactConstraint& c, const ContactRows<float>& rows,
+                               const ContactPointRows<float>& cp) {
     const Vec2 n = rows.normal;
-    return {RowSide{c.indexA, -n, -perpDot(cp.anchorA, n), rows.invMassA, rows.invIA},
-            RowSide{c.indexB, n, perpDot(cp.anchorB, n), rows.invMassB, rows.invIB}};
+    const std::vector<BodyState>& states = w.scratch.states;
+    return {RowSide{c.indexA, -n, -perpDot(cp.anchorA, n), states[c.indexA].invMass, rows.invIA},
+            RowSide{c.indexB, n, perpDot(cp.anchorB, n), states[c.indexB].invMass, rows.invIB}};
 }
 
 // K_rs = Σ over the bodies rows r and s share: lin_r·lin_s / m + ang_r ang_s / I.
@@ -58,7 +60,7 @@ bool assemble(World::Impl& w, ContactGroups& g, int group) {
     auto sides = [&](int row) {
         const auto [k, i] = g.rows[first + row];
         const ContactRows<float>& rows = w.scratch.constraintRows[k];
-        return sidesOf(w.scratch.constraints[k], rows, rows.points[i]);
+        return sidesOf(w, w.scratch.constraints[k], rows, rows.points[i]);
     };
     for (int r = 0; r < n; ++r) {
         const std::array<RowSide, 2> sr = sides(r);

@@ -16,10 +16,7 @@ namespace perpdot {
 
 struct ContactConstraint;
 
-// The inverse masses and inertias of a constraint's bodies.
-struct RowMasses {
-    float invMassA, invIA, invMassB, invIB;
-};
+using RowMasses = RowMassLanes<float>;
 
 // Read from the solver slots (StepScratch::inverseMasses): a dense array, where the bodies are not.
 inline RowMasses rowMasses(const StepScratch& s, int slotA, int slotB) {

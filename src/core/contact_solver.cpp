@@ -20,6 +20,7 @@ BodyState velocityWithoutContact(const World::Impl& w, const StepContext& ctx, i
     BodyState s;
     s.v = now.v + static_cast<float>(ctx.substeps) * f.dv;
     s.w = now.w + static_cast<float>(ctx.substeps) * f.dw;
+    s.invMass = now.invMass;
     return s;
 }
 
@@ -34,9 +35,7 @@ void gatherRows(const World::Impl& w, const ContactConstraint& c, RowLane<lanes>
     using PointRows = ContactPointRows<float>;
     const Contact& contact = w.contactCache.contacts[c.contact];
     const RowMasses m = rowMasses(w.scratch, c.indexA, c.indexB);
-    rows.set(offsetof(Rows, invMassA), m.invMassA);
     rows.set(offsetof(Rows, invIA), m.invIA);
-    rows.set(offsetof(Rows, invMassB), m.invMassB);
     rows.set(offsetof(Rows, invIB), m.invIB);
     rows.set(offsetof(Rows, normal), contact.normal);
     rows.set(offsetof(Rows, friction), contact.friction);

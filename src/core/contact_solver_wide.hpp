@@ -29,7 +29,7 @@ struct ContactPointRows {
 
 template <class F>
 struct ContactRows {
-    F invMassA{}, invIA{}, invMassB{}, invIB{};
+    F invIA{}, invIB{};  // 1/I of the bodies (their 1/m is in their states: BodyLanes::invMass)
     Vec2T<F> normal;
     F friction{}, restitution{};
     F rollingResistance{}, tangentSpeed{};
@@ -43,9 +43,9 @@ struct ContactRows {
 // Apply impulse P at the anchors: vA -= P/mA, ωA -= perpDot(rA,P)/IA, and + for B.
 template <class F>
 inline void applyImpulse(const ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, Vec2T<F> rA, Vec2T<F> rB, Vec2T<F> P) {
-    a.v = a.v - c.invMassA * P;
+    a.v = a.v - a.invMass * P;
     a.w = a.w - c.invIA * perpDot(rA, P);
-    b.v = b.v + c.invMassB * P;
+    b.v = b.v + b.invMass * P;
     b.w = b.w + c.invIB * perpDot(rB, P);
 }
 
@@ -68,10 +68,17 @@ F warmStartImpulse(const StepContext& ctx, F impulse) {
     return F(ctx.enableWarmStarting ? 1.0f : 0.0f) * impulse;
 }
 
+// The inverse masses and inertias of a contact's bodies, for one constraint (F = float: RowMasses)
+// or a block's lanes.
+template <class F>
+struct RowMassLanes {
+    F invMassA{}, invIA{}, invMassB{}, invIB{};
+};
+
 // 1 / (1/mA + 1/mB + perpDot(rA,d)²/IA + perpDot(rB,d)²/IB): the effective mass along d, 0 if
-// nothing can move. `m` has the rows' invMassA, invIA, invMassB and invIB.
-template <class F, class Masses>
-F effectiveMass(const Masses& m, Vec2T<F> rA, Vec2T<F> rB, Vec2T<F> d) {
+// nothing can move.
+template <class F>
+F effectiveMass(const RowMassLanes<F>& m, Vec2T<F> rA, Vec2T<F> rB, Vec2T<F> d) {
     const F rnA = perpDot(rA, d), rnB = perpDot(rB, d);
     const F k = m.invMassA + m.invMassB + m.invIA * rnA * rnA + m.invIB * rnB * rnB;
     return simd::select(k > F(0.0f), F(1.0f) / k, F(0.0f));
@@ -90,6 +97,7 @@ void deriveContactRows(ContactRows<F>& c, const BodyLanes<F>& a, const BodyLanes
     const F kRolling = c.invIA + c.invIB;
     c.rollingMass = select(c.rollingResistance > F(0.0f), select(kRolling > F(0.0f), F(1.0f) / kRolling, F(0.0f)), F(0.0f));
     const Vec2T<F> n = c.normal, t = perp(n);
+    const RowMassLanes<F> m{a.invMass, c.invIA, b.invMass, c.invIB};
     for (int i = 0; i < 2; ++i) {
         ContactPointRows<F>& cp = c.points[i];
         const simd::MaskOf<F> point = present[i] > F(0.0f);
@@ -99,8 +107,8 @@ void deriveContactRows(ContactRows<F>& c, const BodyLanes<F>& a, const BodyLanes
         cp.normalImpulse = warmStartImpulse(ctx, cp.normalImpulse);
         cp.tangentImpulse = warmStartImpulse(ctx, cp.tangentImpulse);
         cp.maxNormalImpulse = F(0.0f);
-        cp.normalMass = select(point, effectiveMass<F>(c, rA, rB, n), F(0.0f));
-        cp.tangentMass = select(point, effectiveMass<F>(c, rA, rB, t), F(0.0f));
+        cp.normalMass = select(point, effectiveMass<F>(m, rA, rB, n), F(0.0f));
+        cp.tangentMass = select(point, effectiveMass<F>(m, rA, rB, t), F(0.0f));
     }
 }
 
@@ -138,7 +146,7 @@ void solveContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, const Ste
     [[maybe_unused]] SoftnessT<F> soft;
     if constexpr (useBias && normalRows) {
         auto pick = [&](float contactValue, float staticValue) {
-            return select(c.invMassA != F(0.0f), select(c.invMassB != F(0.0f), F(contactValue), F(staticValue)), F(staticValue));
+            return select(a.invMass != F(0.0f), select(b.invMass != F(0.0f), F(contactValue), F(staticValue)), F(staticValue));
         };
         soft = {pick(ctx.contactSoftness.biasRate, ctx.staticSoftness.biasRate),
                 pick(ctx.contactSoftness.massScale, ctx.staticSoftness.massScale),

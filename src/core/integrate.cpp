@@ -82,7 +82,7 @@ void integrateVelocities(World::Impl& w, const StepContext& ctx) {
                     omega *= 1.0f / (1.0f + ctx.h * b.angularDamping);
                 }
             }
-            w.scratch.states[k + 1] = {v, omega, {}, {}};
+            w.scratch.states[k + 1] = {v, omega, {}, {}, b.invMass};
             w.scratch.substepForces[k + 1] = f;
             w.scratch.inverseMasses[k + 1] = {b.invMass, b.invInertia};
         }

@@ -74,14 +74,15 @@ Vec2Lanes<F> rotate(RotLanes<F> q, Vec2Lanes<F> v) {
 }
 
 // Per-substep state of a solver body (see BodyState in step_context.hpp, which is BodyLanes<float>).
-// Seven floats, aligned on 32 bytes (one float of padding): the rows gather the states of the
-// bodies of every lane from anywhere in the array, and a state never spans two cache lines.
+// Eight floats aligned on 32 bytes: the rows gather the states of the bodies of every lane from
+// anywhere in the array, and a state never spans two cache lines.
 template <class F>
 struct alignas(32) BodyLanes {
     Vec2T<F> v;   // linear velocity of the centre of mass
     F w{};        // angular velocity ω
     Vec2T<F> dp;  // centre-of-mass displacement since the step began
     RotT<F> dq;   // rotation since the step began
+    F invMass{};  // 1/m, fixed for the step (0: the static slot, a kinematic body): the contact rows'
 };
 
 }  // namespace perpdot

@@ -17,8 +17,8 @@ using simd::Float8;
 
 namespace {
 
-// Each body's state (v.x, v.y, ω, Δp.x, Δp.y, Δq.c, Δq.s and its padding: body_lanes.hpp) as an
-// aligned row of eight floats, then the 8x8 transpose: unpack pairs of rows, shuffle quads, swap halves.
+// Each body's state (v.x, v.y, ω, Δp.x, Δp.y, Δq.c, Δq.s, 1/m: body_lanes.hpp) as an aligned row
+// of eight floats, then the 8x8 transpose: unpack pairs of rows, shuffle quads, swap halves.
 [[gnu::always_inline]] inline BodyLanes<Float8> gatherBodies8(const BodyState* states, const int (&slots)[8]) {
     static_assert(sizeof(BodyState) == 8 * sizeof(float) && alignof(BodyState) == 32);
     __m256 row[8];
@@ -38,7 +38,7 @@ namespace {
     auto field = [&](int f) {
         return Float8(f < 4 ? _mm256_permute2f128_ps(quads[f], quads[f + 4], 0x20) : _mm256_permute2f128_ps(quads[f - 4], quads[f], 0x31));
     };
-    return {{field(0), field(1)}, field(2), {field(3), field(4)}, {field(5), field(6)}};
+    return {{field(0), field(1)}, field(2), {field(3), field(4)}, {field(5), field(6)}, field(7)};
 }
 
 // The velocities back: the inverse transpose of (v.x, v.y, ω, Δp.x) into each body's first four
