@@ -14,21 +14,38 @@
 namespace perpdot::collide {
 namespace {
 
-TEST(MoveInPlace, SmallMovesKeepEveryAncestorHoldingItsLeaves) {
-    CollisionSystem collision;
-    std::mt19937 random(7);
-    // A packed grid of small boxes jiggling by up to a few centimetres a round: most re-fits stay
-    // inside an ancestor's box (in place), a few leave it (re-inserted).
-    std::uniform_real_distribution<float> jiggle(-0.06f, 0.06f), place(-1.0f, 11.0f);
+// A packed 25 x 25 grid of 0.4 m boxes, touching, their proxies and boxes in `proxies` and `boxes`.
+void packGrid(CollisionSystem& collision, std::vector<int>& proxies, std::vector<AABB>& boxes) {
     collision.setGeometry(0, makeBox(0.2f, 0.2f));
-    std::vector<int> proxies;
-    std::vector<AABB> boxes;
     for (int i = 0; i < 25; ++i)
         for (int j = 0; j < 25; ++j) {
             const AABB box = collision.computeAABB(0, 0, {{0.4f * i, 0.4f * j}, Rot::fromAngle(0.0f)});
             proxies.push_back(collision.createProxy(box, {0, i * 25 + j}, false));
             boxes.push_back(box);
         }
+}
+
+// Whether ten probes of half-size `half` at random places each find exactly the fat boxes that
+// overlap them.
+bool probesFindExactly(const CollisionSystem& collision, const std::vector<int>& proxies, std::mt19937& random,
+                       std::uniform_real_distribution<float>& place, float half) {
+    for (int probe = 0; probe < 10; ++probe) {
+        const Vec2 c{place(random), place(random)};
+        const auto [found, expected] = test::foundAndExpected(collision, proxies, {c - Vec2{half, half}, c + Vec2{half, half}});
+        if (found != expected) return false;
+    }
+    return true;
+}
+
+TEST(MoveInPlace, SmallMovesKeepEveryAncestorHoldingItsLeaves) {
+    CollisionSystem collision;
+    std::mt19937 random(7);
+    // A packed grid of small boxes jiggling by up to a few centimetres a round: most re-fits stay
+    // inside a near ancestor's box, a few leave it.
+    std::uniform_real_distribution<float> jiggle(-0.06f, 0.06f), place(-1.0f, 11.0f);
+    std::vector<int> proxies;
+    std::vector<AABB> boxes;
+    packGrid(collision, proxies, boxes);
     int moves = 0;
     for (int round = 0; round < 60; ++round) {
         for (size_t k = 0; k < proxies.size(); ++k) {
@@ -40,12 +57,7 @@ TEST(MoveInPlace, SmallMovesKeepEveryAncestorHoldingItsLeaves) {
             EXPECT_GE(collision.room(proxies[k], boxes[k]), 0.0f);
             ++moves;
         }
-        for (int probe = 0; probe < 10; ++probe) {
-            const Vec2 c{place(random), place(random)};
-            const AABB box{c - Vec2{0.7f, 0.7f}, c + Vec2{0.7f, 0.7f}};
-            const auto [found, expected] = test::foundAndExpected(collision, proxies, box);
-            ASSERT_EQ(found, expected) << "round " << round << ", probe " << probe;
-        }
+        ASSERT_TRUE(probesFindExactly(collision, proxies, random, place, 0.7f)) << "round " << round;
         for (int proxy : proxies) collision.clearMoved(proxy);
     }
     EXPECT_GT(moves, 1000);
@@ -57,15 +69,9 @@ TEST(MoveInPlace, FarMovesKeepEveryAncestorHoldingItsLeavesAndWearTheTree) {
     // Boxes thrown anywhere over a field forty times the grid's size: most land where no ancestor
     // of their leaf near it holds them, some outside the root's box.
     std::uniform_real_distribution<float> anywhere(-200.0f, 200.0f), place(-200.0f, 200.0f);
-    collision.setGeometry(0, makeBox(0.2f, 0.2f));
     std::vector<int> proxies;
     std::vector<AABB> boxes;
-    for (int i = 0; i < 25; ++i)
-        for (int j = 0; j < 25; ++j) {
-            const AABB box = collision.computeAABB(0, 0, {{0.4f * i, 0.4f * j}, Rot::fromAngle(0.0f)});
-            proxies.push_back(collision.createProxy(box, {0, i * 25 + j}, false));
-            boxes.push_back(box);
-        }
+    packGrid(collision, proxies, boxes);
     collision.rebuildTreeIfWorn();  // the creations' wear
     int rebuilds = 0;
     for (int round = 0; round < 30; ++round) {
@@ -76,12 +82,7 @@ TEST(MoveInPlace, FarMovesKeepEveryAncestorHoldingItsLeavesAndWearTheTree) {
             EXPECT_TRUE(collision.wasMoved(proxies[k]));
             EXPECT_GE(collision.room(proxies[k], boxes[k]), 0.0f);
         }
-        for (int probe = 0; probe < 10; ++probe) {
-            const Vec2 c{place(random), place(random)};
-            const AABB box{c - Vec2{20.0f, 20.0f}, c + Vec2{20.0f, 20.0f}};
-            const auto [found, expected] = test::foundAndExpected(collision, proxies, box);
-            ASSERT_EQ(found, expected) << "round " << round << ", probe " << probe;
-        }
+        ASSERT_TRUE(probesFindExactly(collision, proxies, random, place, 20.0f)) << "round " << round;
         for (int proxy : proxies) collision.clearMoved(proxy);
         rebuilds += collision.rebuildTreeIfWorn() ? 1 : 0;
     }
