@@ -37,9 +37,9 @@ struct RowSide {
 std::array<RowSide, 2> sidesOf(const World::Impl& w, const ContactConstraint& c, const ContactRows<float>& rows,
                                const ContactPointRows<float>& cp) {
     const Vec2 n = rows.normal;
-    const std::vector<BodyState>& states = w.scratch.states;
-    return {RowSide{c.indexA, -n, -perpDot(cp.anchorA, n), states[c.indexA].invMass, rows.invIA},
-            RowSide{c.indexB, n, perpDot(cp.anchorB, n), states[c.indexB].invMass, rows.invIB}};
+    const RowMasses m = rowMasses(w.scratch, c.indexA, c.indexB);
+    return {RowSide{c.indexA, -n, -perpDot(cp.anchorA, n), m.invMassA, m.invIA},
+            RowSide{c.indexB, n, perpDot(cp.anchorB, n), m.invMassB, m.invIB}};
 }
 
 // K_rs = Σ over the bodies rows r and s share: lin_r·lin_s / m + ang_r ang_s / I.

@@ -18,10 +18,10 @@ struct ContactConstraint;
 
 using RowMasses = RowMassLanes<float>;
 
-// Read from the solver slots (StepScratch::inverseMasses): a dense array, where the bodies are not.
+// Read from the solver slots: 1/m from their states, 1/I from StepScratch::inverseInertias (dense
+// arrays, where the bodies are not).
 inline RowMasses rowMasses(const StepScratch& s, int slotA, int slotB) {
-    const InverseMass a = s.inverseMasses[slotA], b = s.inverseMasses[slotB];
-    return {a.invMass, a.invInertia, b.invMass, b.invInertia};
+    return {s.states[slotA].invMass, s.inverseInertias[slotA], s.states[slotB].invMass, s.inverseInertias[slotB]};
 }
 
 // The rows of constraint c (its contact and solver slots set, StepScratch::freeVelocities filled):

@@ -34,9 +34,8 @@ void gatherRows(const World::Impl& w, const ContactConstraint& c, RowLane<lanes>
     using Rows = ContactRows<float>;
     using PointRows = ContactPointRows<float>;
     const Contact& contact = w.contactCache.contacts[c.contact];
-    const RowMasses m = rowMasses(w.scratch, c.indexA, c.indexB);
-    rows.set(offsetof(Rows, invIA), m.invIA);
-    rows.set(offsetof(Rows, invIB), m.invIB);
+    rows.set(offsetof(Rows, invIA), w.scratch.inverseInertias[c.indexA]);
+    rows.set(offsetof(Rows, invIB), w.scratch.inverseInertias[c.indexB]);
     rows.set(offsetof(Rows, normal), contact.normal);
     rows.set(offsetof(Rows, friction), contact.friction);
     rows.set(offsetof(Rows, restitution), contact.restitution);

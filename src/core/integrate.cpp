@@ -58,8 +58,8 @@ void integrateVelocities(World::Impl& w, const StepContext& ctx) {
     w.scratch.states[0] = BodyState{};
     w.scratch.substepForces.resize(static_cast<size_t>(count) + 1);
     w.scratch.substepForces[0] = SubstepForces{};
-    w.scratch.inverseMasses.resize(static_cast<size_t>(count) + 1);
-    w.scratch.inverseMasses[0] = InverseMass{};
+    w.scratch.inverseInertias.resize(static_cast<size_t>(count) + 1);
+    w.scratch.inverseInertias[0] = 0.0f;
     w.workers.parallelFor(count, 256, [&](int begin, int end, int) {
         for (int k = begin; k < end; ++k) {
             const int i = w.scratch.awakeBodies[k];
@@ -84,7 +84,7 @@ void integrateVelocities(World::Impl& w, const StepContext& ctx) {
             }
             w.scratch.states[k + 1] = {v, omega, {}, {}, b.invMass};
             w.scratch.substepForces[k + 1] = f;
-            w.scratch.inverseMasses[k + 1] = {b.invMass, b.invInertia};
+            w.scratch.inverseInertias[k + 1] = b.invInertia;
         }
     });
     w.scratch.stepRotation.assign(w.scratch.states.size(), 0.0f);

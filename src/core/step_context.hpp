@@ -11,14 +11,9 @@
 
 namespace perpdot {
 
-// Per-substep state of a solver body: v, ω, Δp, Δq (lanes.hpp). Slot 0 is the shared static
+// Per-substep state of a solver body: v, ω, Δp, Δq and 1/m (lanes.hpp). Slot 0 is the shared static
 // body: it never moves, so rows against static bodies need no branches.
 using BodyState = BodyLanes<float>;
-
-// 1/m and 1/I of a solver slot's body.
-struct InverseMass {
-    float invMass = 0, invInertia = 0;
-};
 
 // Velocity change a constrained body receives at the start of every substep:
 // v = dv + linearDamping·v, ω = dw + angularDamping·ω (a free body gets dv = 0, damping = 1).

@@ -88,7 +88,7 @@ struct StepScratch {
     std::vector<PredictedPose> predictedPoses;  // by awake body
     std::vector<BodyPose> stepStarts;           // finalizeBodies scratch, by awake body: a fast body's pose before the step
     std::vector<SubstepForces> substepForces;  // of states[i]
-    std::vector<InverseMass> inverseMasses;    // of states[i] (slot 0: none): dense, for gathering rows
+    std::vector<float> inverseInertias;        // 1/I of states[i] (slot 0: 0), dense for gathering rows (1/m is in the states)
     std::vector<BodyState> freeVelocities;     // of states[i]: v and ω at the step's end without contacts (contact_solver.cpp)
     std::vector<ContactConstraint> constraints;
     std::vector<ContactRows<float>> constraintRows;  // by constraint: the rows of those outside the blocks
