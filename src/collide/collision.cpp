@@ -140,6 +140,10 @@ struct CollisionSystem::Impl {
         for (int n = nodes[proxy].parent; n != holder; n = nodes[n].parent)
             nodes[n].aabb.Combine(nodes[nodes[n].child1].aabb, nodes[nodes[n].child2].aabb);
     }
+    // The fat AABB for a proxy's box `aabb` moved along d (predicted).
+    AABB fatFor(int proxy, const AABB& aabb, b2Vec2 d) const;
+    // The proxy moved from fat AABB `before`: what the next pair update compares with, if not yet known.
+    void noteMove(int proxy, const AABB& before);
     // By proxy id, what is known of its fat AABB when pairs were last updated (overlappedBefore):
     // unchanged since, moved from the box in priorFat, or unknown (created, restored, requeried).
     enum class Since : uint8_t { Kept, Moved, New };
@@ -359,32 +363,50 @@ b2Vec2 predicted(Vec2 displacement) {
 
 }  // namespace
 
+AABB CollisionSystem::Impl::fatFor(int proxy, const AABB& aabb, b2Vec2 d) const {
+    // `aabb` with the proxy's own margin around and the growth along d (the tree's would be `aabb`
+    // grown by its 0.1 m and by b2_aabbMultiplier d along d).
+    AABB box = grownBy(aabb, margin[proxy]);
+    const Vec2 growth = b2_aabbMultiplier * Vec2{d.x, d.y};
+    (growth.x < 0.0f ? box.lower.x : box.upper.x) += growth.x;
+    (growth.y < 0.0f ? box.lower.y : box.upper.y) += growth.y;
+    return box;
+}
+
+void CollisionSystem::Impl::noteMove(int proxy, const AABB& before) {
+    if (since[proxy] != Since::Kept) return;
+    since[proxy] = Since::Moved;
+    priorFat[proxy] = before;
+}
+
+std::optional<AABB> CollisionSystem::inPlaceFat(int proxy, const AABB& aabb, Vec2 displacement) const {
+    // A box that overflowed (a body at the edge of the float range) never enters the tree; a static
+    // proxy's mirror in the static tree is re-inserted there, and its leaf here too.
+    if (!isFinite(aabb.lower) || !isFinite(aabb.upper) || impl_->staticLeaf[proxy] >= 0 || !(room(proxy, aabb) < 0.0f))
+        return std::nullopt;
+    return impl_->fatFor(proxy, aabb, predicted(displacement));
+}
+
+void CollisionSystem::moveInPlace(int proxy, const AABB& fat) {
+    const AABB before = fatAABB(proxy);
+    impl_->moveInPlace(proxy, fat);
+    impl_->noteMove(proxy, before);
+}
+
 bool CollisionSystem::moveProxy(int proxy, const AABB& aabb, Vec2 displacement) {
-    // A box that overflowed (a body at the edge of the float range) never enters the tree: the
-    // proxy keeps its fat AABB.
-    if (!isFinite(aabb.lower) || !isFinite(aabb.upper)) return false;
+    if (const std::optional<AABB> fat = inPlaceFat(proxy, aabb, displacement)) {
+        moveInPlace(proxy, *fat);
+        return true;
+    }
+    if (!isFinite(aabb.lower) || !isFinite(aabb.upper)) return false;  // the proxy keeps its fat AABB
     const b2AABB box{toB2(aabb.lower), toB2(aabb.upper)};
     const b2Vec2 d = predicted(displacement);
     if (const int leaf = impl_->staticLeaf[proxy]; leaf >= 0) impl_->staticTree.MoveProxy(leaf, box, d);
     const AABB before = fatAABB(proxy);
-    // The proxy's new box: `aabb` with its own margin around and the growth along d (the tree's
-    // would be `aabb` grown by its 0.1 m and by b2_aabbMultiplier d along d).
-    AABB fit = grownBy(aabb, impl_->margin[proxy]);
-    const Vec2 growth = b2_aabbMultiplier * Vec2{d.x, d.y};
-    (growth.x < 0.0f ? fit.lower.x : fit.upper.x) += growth.x;
-    (growth.y < 0.0f ? fit.lower.y : fit.upper.y) += growth.y;
-    // A static proxy's mirror in the static tree is re-inserted there, and its leaf here too.
-    if (room(proxy, aabb) < 0.0f && impl_->staticLeaf[proxy] < 0) {
-        impl_->moveInPlace(proxy, fit);
-    } else {
-        if (!impl_->tree.MoveProxy(proxy, box, d)) return false;
-        ++impl_->insertions;
-        impl_->fit(proxy, fit);
-    }
-    if (impl_->since[proxy] == Impl::Since::Kept) {
-        impl_->since[proxy] = Impl::Since::Moved;
-        impl_->priorFat[proxy] = before;
-    }
+    if (!impl_->tree.MoveProxy(proxy, box, d)) return false;
+    ++impl_->insertions;
+    impl_->fit(proxy, impl_->fatFor(proxy, aabb, d));
+    impl_->noteMove(proxy, before);
     return true;
 }
 

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <type_traits>
 
 #include "perpdot/math.hpp"
@@ -98,6 +99,12 @@ public:
     // `aabb` grown by the 0.1 m margin and along the step's displacement, by at most two margins
     // more); returns whether it moved.
     bool moveProxy(int proxy, const AABB& aabb, Vec2 displacement);
+    // The fat AABB moveProxy would give a dynamic proxy whose `aabb` left its fat AABB, when its leaf
+    // moves in place (the tree's ancestors are re-fitted, nothing re-inserted); nullopt when it
+    // would not (the box is inside, overflowed, or the proxy is static). Reads only, so workers may
+    // ask side by side between tree updates; moveInPlace(proxy, fat) then makes the move.
+    std::optional<AABB> inPlaceFat(int proxy, const AABB& aabb, Vec2 displacement) const;
+    void moveInPlace(int proxy, const AABB& fat);
     AABB fatAABB(int proxy) const;
     // Builds the tree anew once it has inserted and removed as many leaves as it holds
     // (tree_rebuild.hpp), and says whether it did: the same proxies and boxes, so every query

@@ -5,7 +5,8 @@
 // its velocity after the forces of integrateVelocities (c + h v, θ + h ω), and finalizeBodies
 // re-fits only what the prediction missed (a body the solver turned). Which proxies re-fit, to
 // which boxes and in which order, depends on the world alone: the tree is the same for any worker
-// count.
+// count. The task does tree work only where it can: a body of one proxy (most) has its new fat
+// AABB and box room found by the workers that predict the poses, and the task moves its leaf.
 //
 // A proxy re-fits when its box sticks out of its fat AABB, as in Box2D v3; a fat AABB grown large
 // by a fast move is not shrunk when the body slows (Box2D 2.4's "huge" test) — it is at most two
@@ -15,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "core/continuous.hpp"
 #include "core/stages.hpp"
@@ -83,23 +85,30 @@ bool measureBoxes(World::Impl& w, int body, Vec2 center, const Transform& xf, co
     return rememberRoom(known, center, xf.q, below, above);
 }
 
-// The re-fits, in awake-body order. A body of one proxy, whose box the check measured sticking
-// out (its room is negative: the proxy re-fits), re-fits that box as measureBoxes would.
+// A body of one proxy whose box `sole` escaped: where its leaf moves in place, its new fat AABB and
+// the box room that leaves are found here, by the workers that predicted the poses (the
+// CollisionSystem reads only); the re-fit task then moves the leaf.
+void planInPlaceMove(World::Impl& w, int body, PredictedPose& p, const SoleBox& sole) {
+    p.inPlace.proxy = -1;
+    if (sole.proxy < 0) return;
+    const std::optional<AABB> fat = w.collision.inPlaceFat(sole.proxy, sole.box, p.displacement);
+    if (!fat) return;
+    Vec2 below{most, most}, above{most, most};
+    foldRoom(below, above, sole.box, *fat);
+    rememberRoom(w.boxRooms[body], p.center, p.xf.q, below, above);
+    p.inPlace = {sole.proxy, *fat};
+}
+
+// The re-fits, in awake-body order: the planned moves in place, and the other bodies' boxes
+// measured and re-fitted as measureBoxes does.
 void refitPredicted(int, int, int, void* world) {
     World::Impl& w = *static_cast<World::Impl*>(world);
     const std::vector<PredictedPose>& poses = w.scratch.predictedPoses;
     for (size_t k = 0; k < poses.size(); ++k) {
         const PredictedPose& p = poses[k];
         if (!p.refit) continue;
-        const int body = w.scratch.awakeBodies[k];
-        if (p.sole.proxy < 0) {
-            refitEscaped(w, body, p.center, p.xf, p.displacement);
-            continue;
-        }
-        w.refitProxy(p.sole.proxy, p.sole.box, p.displacement);
-        Vec2 below{most, most}, above{most, most};
-        foldRoom(below, above, p.sole.box, w.collision.fatAABB(p.sole.proxy));
-        rememberRoom(w.boxRooms[body], p.center, p.xf.q, below, above);
+        if (p.inPlace.proxy >= 0) w.moveInPlace(p.inPlace.proxy, p.inPlace.box);
+        else refitEscaped(w, w.scratch.awakeBodies[k], p.center, p.xf, p.displacement);
     }
     // A worn tree is built anew here too, beside the solver rather than before the next queries.
     w.collision.rebuildTreeIfWorn();
@@ -135,11 +144,12 @@ void startTreeRefit(World::Impl& w, const StepContext& ctx) {
             // A huge but finite speed (a restored snapshot's, before the solver clamps it) can
             // overflow the prediction: no box is made of it, the real end pose decides.
             if (!isFinite(p.xf.p) || !std::isfinite(q.c) || !std::isfinite(q.s)) continue;
-            p.sole.proxy = -1;
             // A body without shapes is never measured, so its box room never holds: its shape list
             // (the body's last cache line) is read only then.
+            SoleBox sole;
             p.refit = !w.boxRooms[index].holds(p.center, p.xf.q) && !b.shapes.empty() &&
-                      !measureBoxes(w, index, p.center, p.xf, nullptr, &p.sole);
+                      !measureBoxes(w, index, p.center, p.xf, nullptr, &sole);
+            if (p.refit) planInPlaceMove(w, index, p, sole);
         }
     });
     w.workers.runAside(&refitPredicted, &w);

@@ -170,6 +170,11 @@ void World::Impl::refitProxy(int proxy, const AABB& aabb, Vec2 displacement) {
     if (collision.moveProxy(proxy, aabb, displacement) && !queued) movedProxies.push_back(proxy);
 }
 
+void World::Impl::moveInPlace(int proxy, const AABB& fat) {
+    if (!collision.wasMoved(proxy)) movedProxies.push_back(proxy);
+    collision.moveInPlace(proxy, fat);
+}
+
 void World::Impl::forgetBoxRoom(int index) {
     if (static_cast<size_t>(index) < boxRooms.size()) boxRooms[index] = BoxRoom{};
 }

@@ -72,7 +72,7 @@ struct PredictedPose {
     Transform xf;
     Vec2 center, displacement;
     bool refit = false;
-    SoleBox sole;  // where refit: the box that sticks out, measured once
+    SoleBox inPlace;  // where refit and the body's one proxy moves in place: that proxy and its new fat AABB
 };
 
 struct StepScratch {

@@ -73,6 +73,8 @@ struct World::Impl {
     // Re-fit one proxy to `aabb` if it left its fat AABB (collision.moveProxy), and queue it for
     // updatePairs once.
     void refitProxy(int proxy, const AABB& aabb, Vec2 displacement);
+    // Moves an escaped proxy's leaf in place to `fat` (collision.inPlaceFat's), queued as refitProxy does.
+    void moveInPlace(int proxy, const AABB& fat);
     // Its shapes, proxies or centre of mass changed: its box room (box_room.hpp) is not known.
     void forgetBoxRoom(int body);
     void reportTouch(const Contact& c, bool begin);  // begin/end event for a contact or sensor
