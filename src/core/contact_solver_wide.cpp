@@ -166,9 +166,12 @@ void prepareContactBlocks(World::Impl& w, const StepContext& ctx) {
     const int count = static_cast<int>(s.constraints.size());
     s.contactColors.resize(s.constraints.size());
     const std::vector<uint8_t>& direct = s.contactGroups.direct;  // solved by their groups instead
+    const int slots = static_cast<int>(s.states.size());
     for (int index = 0; index < count; ++index) {
         const auto [slotA, slotB] = s.constraintSlots[index];
-        s.contactColors[index] = direct[index] ? overflow : s.coloring.assign(slotA, slotB);
+        const int color = direct[index] ? overflow : s.coloring.assign(slotA, slotB);
+        // The overflow's constraints are solved one after another: in constraint order.
+        s.contactColors[index] = color * slotBuckets + (color == overflow ? 0 : slotBucket(slotA, slotB, slots));
     }
     const ColorStarts& start = s.contactStart = sortByColor(s.contactColors, s.contactOrder);
     onContactBlocks(s, [&](auto& blocks) { sizeBlocks(s, blocks); });

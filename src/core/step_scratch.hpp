@@ -98,8 +98,8 @@ struct StepScratch {
     std::vector<ContactBlock> contactBlocks;     // four constraints of one colour each, in colour order,
     std::vector<ContactBlock8> contactBlocks8;   // or eight (contactLanes = 8)
     ColorStarts contactBlockStart{};             // colour c is contactBlocks[start[c] .. start[c + 1])
-    std::vector<int> contactColors;              // prepareContactBlocks scratch: colour of each constraint,
-    std::vector<int> contactOrder;               // and the constraints sorted by colour,
+    std::vector<int> contactColors;              // prepareContactBlocks scratch: colour and slot bucket of each constraint,
+    std::vector<int> contactOrder;               // and the constraints sorted by them (graph_color.hpp),
     ColorStarts contactStart{};                  // colour c at contactOrder[start[c] .. start[c + 1])
     std::vector<int> contactRowSlot;             // by constraint, for hit events (locateContactRows)
     std::vector<int> overflowConstraints;        // constraints no colour could take: solved one by one
