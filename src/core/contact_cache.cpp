@@ -69,11 +69,12 @@ bool pairWanted(const World::Impl& w, int proxyA, int proxyB) {
 }
 
 // A contact for a wanted pair, unless it has one.
-void addPair(World::Impl& w, int proxyA, int proxyB) {
+void addPair(World::Impl& w, const NewPair& pair) {
     ContactCache& cache = w.contactCache;
+    int proxyA = pair.proxyA, proxyB = pair.proxyB;
     const uint64_t key = proxyPairKey(proxyA, proxyB);
     if (!cache.pairs.insert(key)) return;  // one lookup: found twice, or has its contact
-    collide::ChildKey keyA = w.collision.proxyKey(proxyA), keyB = w.collision.proxyKey(proxyB);
+    collide::ChildKey keyA = pair.a, keyB = pair.b;
     const ShapeData* sa = &w.shapes[keyA.shape];
     const ShapeData* sb = &w.shapes[keyB.shape];
 
@@ -254,7 +255,7 @@ void updatePairs(World::Impl& w) {
     constexpr size_t ahead = 8;
     for (size_t i = 0; i < newPairs.size(); ++i) {
         if (i + ahead < newPairs.size()) cache.pairs.prefetch(proxyPairKey(newPairs[i + ahead].proxyA, newPairs[i + ahead].proxyB));
-        addPair(w, newPairs[i].proxyA, newPairs[i].proxyB);
+        addPair(w, newPairs[i]);
     }
 }
 
@@ -271,14 +272,57 @@ void bindShapes(ContactCache& cache, int contact, const ShapeData& a, const Shap
     cache.touchingPoints[static_cast<size_t>(contact)] = touchingPoints(c);
 }
 
-void destroyContact(World::Impl& w, int index) {
-    ContactCache& cache = w.contactCache;
-    Contact& c = cache.contacts[index];
-    if (c.touching || c.overlapping) w.reportTouch(c, false);
+namespace {
+
+// Starts loading a contact's first line (its pair key) and its last (its places in the bodies' lists).
+void prefetchContact(const Contact& c) {
+    __builtin_prefetch(&c.pairKey, 1);
+    __builtin_prefetch(&c.edges[1], 1);
+}
+
+// Starts loading what releaseContact writes besides the contact: its pair's slot and its neighbours.
+void prefetchRelease(const ContactCache& cache, int index) {
+    const Contact& c = cache.contacts[index];
+    cache.pairs.prefetch(c.pairKey);
+    for (const Edge& e : c.edges)
+        for (int key : {e.prev, e.next})
+            if (key >= 0) __builtin_prefetch(&cache.contacts[key >> 1].edges[key & 1], 1);
+}
+
+// The contact leaves the pair set, its bodies' lists and the pool.
+void releaseContact(ContactCache& cache, int index) {
+    const Contact& c = cache.contacts[index];
     cache.pairs.erase(c.pairKey);
     cache.bodyLists.unlink(cache.contacts, index, 0, c.bodyA);
     cache.bodyLists.unlink(cache.contacts, index, 1, c.bodyB);
     cache.contacts.destroy(index);
+}
+
+// Its end event, if it touched or overlapped; it does no more.
+void reportEnd(World::Impl& w, Contact& c) {
+    if (c.touching || c.overlapping) w.reportTouch(c, false);
+    c.touching = c.overlapping = false;
+}
+
+}  // namespace
+
+void destroyContact(World::Impl& w, int index) {
+    reportEnd(w, w.contactCache.contacts[index]);
+    releaseContact(w.contactCache, index);
+}
+
+void releaseApartContacts(World::Impl& w) {
+    ContactCache& cache = w.contactCache;
+    const std::vector<int>& apart = cache.apart;
+    // Each contact misses the cache, and so do its pair's slot and its neighbours in the bodies'
+    // lists: ask for the contact two distances ahead, for the rest at one.
+    constexpr size_t ahead = 8;
+    for (size_t i = 0; i < apart.size(); ++i) {
+        if (i + 2 * ahead < apart.size()) prefetchContact(cache.contacts[apart[i + 2 * ahead]]);
+        if (i + ahead < apart.size()) prefetchRelease(cache, apart[i + ahead]);
+        releaseContact(cache, apart[i]);
+    }
+    cache.apart.clear();
 }
 
 void destroyContactsOf(World::Impl& w, int bodyIndex, int shapeIndex) {
@@ -295,8 +339,9 @@ void destroyContactsOf(World::Impl& w, int bodyIndex, int shapeIndex) {
 }
 
 // Narrowphase for every contact with an awake body: the workers run collideContact on those
-// whose bodies were awake as the step began; then, in pool order, contacts are destroyed, events
-// raised and sleepers woken. Quiet contacts skip that pass. A woken body's contacts wait for the
+// whose bodies were awake as the step began; then, in pool order, events are raised and sleepers
+// woken, and the contacts found apart end (the worker that re-fits the tree releases them beside
+// the solve: releaseApartContacts). Quiet contacts skip that pass. A woken body's contacts wait for the
 // next step's narrowphase, as in Box2D v3: this step its island's kept manifolds are solved, and
 // a sleeper it touches but never touched before wakes one step later. Waking spreads one contact
 // a step through bodies that fell asleep apart (Box2D 2.4's pass collided them at once, and a
@@ -331,16 +376,24 @@ void updateContacts(World::Impl& w) {
             cache.touchingPoints[index] = touchingPoints(c);
         }
     });
-    for (int index = 0; index < count; ++index) {
+    std::vector<int>& unquiet = cache.unquiet;
+    unquiet.clear();
+    for (int index = 0; index < count; ++index)
+        if (cache.narrowphase[index] != Narrowphase::Quiet && cache.narrowphase[index] != Narrowphase::Skipped) unquiet.push_back(index);
+    cache.apart.clear();  // (a step that threw before releasing them finds them apart again)
+    // Each contact misses the cache: ask for it a few ahead.
+    constexpr size_t ahead = 8;
+    for (size_t i = 0; i < unquiet.size(); ++i) {
+        if (i + ahead < unquiet.size()) prefetchContact(cache.contacts[unquiet[i + ahead]]);
+        const int index = unquiet[i];
         const Narrowphase result = cache.narrowphase[index];
-        if (result == Narrowphase::Quiet || result == Narrowphase::Skipped) continue;
-        if (!cache.contacts.isLive(index)) continue;  // destroyed earlier in this pass
         Contact& c = cache.contacts[index];
         Body& ba = w.bodies[c.bodyA];
         Body& bb = w.bodies[c.bodyB];
         if (result == Narrowphase::Apart) {
-            destroyContact(w, index);
+            reportEnd(w, c);
             cache.touchingPoints[index] = 0;
+            cache.apart.push_back(index);
             continue;
         }
         if (c.sensor) {

@@ -99,7 +99,9 @@ struct ContactCache {
     // query (group g is queried[groupStarts[g], groupStarts[g + 1])).
     std::vector<int> queried, groupStarts;
     std::vector<std::pair<uint32_t, int>> mortonOrder, mortonScratch;  // (code, proxy), sorted by code
-    std::vector<Narrowphase> narrowphase;          // updateContacts scratch, by contact
+    std::vector<Narrowphase> narrowphase;          // updateContacts scratch, by contact,
+    std::vector<int> unquiet;                      // and the contacts it has more to do for, in pool order;
+    std::vector<int> apart;                        // of those, the ones whose boxes parted (releaseApartContacts)
     // By contact slot, what updateContacts passes over contacts whose bodies both sleep with, and
     // markTouching and prepareContacts select constraints by, without reading the contacts' cache
     // lines (a pool of 58,000 contacts is 13 MB): its two bodies (they never change) and the
@@ -117,6 +119,11 @@ void updatePairs(World::Impl& world);
 void updateContacts(World::Impl& world);
 
 void destroyContact(World::Impl& world, int contact);  // with its end event
+// The contacts updateContacts found apart (their fat AABBs no longer overlap), which it reported
+// ended and left out of the solve, leave the pool, the pair set and their bodies' lists, in pool
+// order: serial work that no stage reads before the next updatePairs, done on the worker that
+// re-fits the tree (refit_ahead.cpp) beside the solve.
+void releaseApartContacts(World::Impl& world);
 // What a contact takes from its two shapes for its whole life: their bodies and whether its
 // points turn with them (a shape's geometry never changes).
 void bindShapes(ContactCache& cache, int contact, const ShapeData& a, const ShapeData& b);

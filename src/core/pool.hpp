@@ -10,9 +10,12 @@
 // line of each free item.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -84,6 +87,8 @@ public:
             const uint32_t generation = item.generation;
             item = T{};
             item.generation = generation;
+        } else if constexpr (std::is_trivially_destructible_v<T>) {
+            std::construct_at(&item);  // in the slot: `item = T{}` built a copy on the stack first
         } else {
             item = T{};
         }

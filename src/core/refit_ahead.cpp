@@ -100,9 +100,11 @@ void planInPlaceMove(World::Impl& w, int body, PredictedPose& p, const SoleBox& 
 }
 
 // The re-fits, in awake-body order: the planned moves in place, and the other bodies' boxes
-// measured and re-fitted as measureBoxes does.
+// measured and re-fitted as measureBoxes does. First, the contacts found apart are released:
+// serial work too, which nothing reads before the next pair update.
 void refitPredicted(int, int, int, void* world) {
     World::Impl& w = *static_cast<World::Impl*>(world);
+    releaseApartContacts(w);
     const std::vector<PredictedPose>& poses = w.scratch.predictedPoses;
     for (size_t k = 0; k < poses.size(); ++k) {
         const PredictedPose& p = poses[k];

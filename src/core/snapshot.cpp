@@ -541,6 +541,8 @@ void World::restore(std::span<const uint8_t> bytes) {
     fresh->contactCache.mortonOrder = std::move(impl_->contactCache.mortonOrder);
     fresh->contactCache.mortonScratch = std::move(impl_->contactCache.mortonScratch);
     fresh->contactCache.narrowphase = std::move(impl_->contactCache.narrowphase);
+    fresh->contactCache.unquiet = std::move(impl_->contactCache.unquiet);
+    fresh->contactCache.apart = std::move(impl_->contactCache.apart);  // (updateContacts clears it)
     // Moved proxies are state, but the frames re-simulated after a rollback move as many as this
     // world's did: room for them.
     fresh->movedProxies.reserve(impl_->movedProxies.capacity());
