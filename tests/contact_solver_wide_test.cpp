@@ -39,7 +39,7 @@ ContactRows<float> randomRows(Random& r, int pointCount, bool rolling) {
         p.tangentImpulse = r(-0.2f, 0.2f);
         p.normalMass = r(0.2f, 2.0f);
         p.tangentMass = r(0.2f, 2.0f);
-        p.relativeVelocity = r(-4.0f, 0.5f);  // a threshold of 1 m/s: some approaches bounce
+        c.relativeVelocity[i] = r(-4.0f, 0.5f);  // a threshold of 1 m/s: some approaches bounce
     }
     return c;
 }

@@ -22,22 +22,25 @@ template <class F>
 struct ContactPointRows {
     Vec2T<F> anchorA, anchorB;  // fixed for the step: rA, rB
     F baseSeparation{};         // separation minus (rB - rA)·n, so s = base + (ΔpB + rB' - ΔpA - rA')·n
-    F relativeVelocity{};       // v_rel·n before solving, for restitution
     F normalImpulse{}, tangentImpulse{}, maxNormalImpulse{};
     F normalMass{}, tangentMass{};  // 1 / effectiveMass of each row; 0 for no manifold point
 };
 
+// The fields every pass reads come first, those of the rolling row and of restitution last: with
+// the block's solver slots before them (ContactBlock8), a pass over blocks without either streams
+// 16 of a block's 19 cache lines.
 template <class F>
 struct ContactRows {
     F invIA{}, invIB{};  // 1/I of the bodies (their 1/m is in their states: BodyLanes::invMass)
     Vec2T<F> normal;
-    F friction{}, restitution{};
-    F rollingResistance{}, tangentSpeed{};
-    F rollingMass{}, rollingImpulse{};  // angular row: 1/(1/IA + 1/IB), accumulated λ
+    F friction{}, rollingResistance{}, tangentSpeed{};
     // 1 where a body's surface is flat: its anchor is a point of the body and turns with it. 0 for a
     // round surface, whose contact point stays under its centre as it rolls.
     F turnsA{}, turnsB{};
     ContactPointRows<F> points[2];
+    F rollingMass{}, rollingImpulse{};  // angular row: 1/(1/IA + 1/IB), accumulated λ
+    F restitution{};
+    F relativeVelocity[2]{};  // v_rel·n at each point before solving, for restitution
 };
 
 // Apply impulse P at the anchors: vA -= P/mA, ωA -= perpDot(rA,P)/IA, and + for B.
@@ -94,6 +97,7 @@ template <class F>
 void deriveContactRows(ContactRows<F>& c, const BodyLanes<F>& a, const BodyLanes<F>& b, const F (&present)[2], const StepContext& ctx) {
     using simd::select;
     if (!ctx.enableWarmStarting) c.rollingImpulse = F(0.0f);
+    c.rollingImpulse = select(c.rollingResistance > F(0.0f), c.rollingImpulse, F(0.0f));  // no rolling row: none ever
     const F kRolling = c.invIA + c.invIB;
     c.rollingMass = select(c.rollingResistance > F(0.0f), select(kRolling > F(0.0f), F(1.0f) / kRolling, F(0.0f)), F(0.0f));
     const Vec2T<F> n = c.normal, t = perp(n);
@@ -103,7 +107,7 @@ void deriveContactRows(ContactRows<F>& c, const BodyLanes<F>& a, const BodyLanes
         const simd::MaskOf<F> point = present[i] > F(0.0f);
         const Vec2T<F> rA = cp.anchorA, rB = cp.anchorB;
         cp.baseSeparation = select(point, cp.baseSeparation - dot(rB - rA, n), F(0.0f));
-        cp.relativeVelocity = select(point, dot(relativeVelocity(a, b, rA, rB), n), F(0.0f));
+        c.relativeVelocity[i] = select(point, dot(relativeVelocity(a, b, rA, rB), n), F(0.0f));
         cp.normalImpulse = warmStartImpulse(ctx, cp.normalImpulse);
         cp.tangentImpulse = warmStartImpulse(ctx, cp.tangentImpulse);
         cp.maxNormalImpulse = F(0.0f);
@@ -112,13 +116,20 @@ void deriveContactRows(ContactRows<F>& c, const BodyLanes<F>& a, const BodyLanes
     }
 }
 
+// Whether some lane has a rolling row: the others' λr is 0 for good (derive), and a block
+// without any leaves the row's fields unread.
+template <class F>
+bool rolls(const ContactRows<F>& c) {
+    return !simd::noLane(c.rollingResistance > F(0.0f));
+}
+
 // Re-apply last step's accumulated impulses: λn n + λt perp(n) at each point, λr on the angle.
 template <class F>
 void warmStartContact(const ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b) {
     const Vec2T<F> n = c.normal, t = perp(n);
     for (const ContactPointRows<F>& cp : c.points)
         applyImpulse(c, a, b, cp.anchorA, cp.anchorB, cp.normalImpulse * n + cp.tangentImpulse * t);
-    applyAngularImpulse(c, a, b, c.rollingImpulse);
+    if (rolls(c)) applyAngularImpulse(c, a, b, c.rollingImpulse);
 }
 
 // Current separation of a point without a new narrowphase: s = base + (ΔpB + rB' − ΔpA − rA')·n,
@@ -193,6 +204,7 @@ void solveContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, const Ste
         cp.tangentImpulse = newImpulse;
         applyImpulse(c, a, b, rA, rB, impulse * t);
     }
+    if (!rolls(c)) return;
     const F maxLambda = c.rollingResistance * totalNormalImpulse;
     const F lambda = c.rollingImpulse;
     c.rollingImpulse = simd::clamp(lambda - c.rollingMass * (b.w - a.w), -maxLambda, maxLambda);
@@ -223,15 +235,16 @@ void restituteContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, Vec2T
     using simd::select;
     const simd::MaskOf<F> elastic = c.restitution != F(0.0f);
     const F deceleration = F(-static_cast<float>(ctx.substeps)) * dot(dvB - dvA, c.normal) * F(ctx.invH);
-    for (ContactPointRows<F>& cp : c.points) {
-        const simd::MaskOf<F> slow = cp.relativeVelocity > F(-ctx.restitutionThreshold);
+    for (int i = 0; i < 2; ++i) {
+        ContactPointRows<F>& cp = c.points[i];
+        const simd::MaskOf<F> slow = c.relativeVelocity[i] > F(-ctx.restitutionThreshold);
         const simd::MaskOf<F> pushed = cp.maxNormalImpulse != F(0.0f);
         const auto ifBouncing = [&](F value, F otherwise) {
             return select(slow, otherwise, select(pushed, select(elastic, value, otherwise), otherwise));
         };
         const Vec2T<F> rA = cp.anchorA, rB = cp.anchorB;
         const F vn = dot(relativeVelocity(a, b, rA, rB), c.normal);
-        const F rebound = reboundSpeed(c.restitution, -cp.relativeVelocity, deceleration, ctx.h);
+        const F rebound = reboundSpeed(c.restitution, -c.relativeVelocity[i], deceleration, ctx.h);
         const F newImpulse = max(cp.normalImpulse + -cp.normalMass * (vn - rebound), F(0.0f));
         const F impulse = ifBouncing(newImpulse - cp.normalImpulse, F(0.0f));
         cp.normalImpulse = ifBouncing(newImpulse, cp.normalImpulse);
@@ -272,11 +285,11 @@ struct ContactBlock {
 
 // Eight constraints of one colour, for CPUs with AVX2 (contact_solver_avx2.cpp): the rows are
 // ContactRows<Float8>, kept as floats here because only that file may name AVX2 types.
-struct ContactBlock8 {
+struct alignas(64) ContactBlock8 {
     static constexpr int lanes = 8;
-    alignas(32) float rows[rowFloats * 8];
     int contact[8] = {-1, -1, -1, -1, -1, -1, -1, -1};
     int bodyA[8] = {}, bodyB[8] = {};
+    alignas(32) float rows[rowFloats * 8];
     const float* rowData() const { return rows; }
     float* rowData() { return rows; }
 };

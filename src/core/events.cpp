@@ -46,7 +46,7 @@ void reportHitEvents(World::Impl& w) {
         ContactHitEvent event{w.shapeId(contact.a.shape), w.shapeId(contact.b.shape), {}, contact.normal, w.def.hitEventThreshold};
         bool hit = false;
         for (int i = 0; i < c.pointCount; ++i) {
-            const float approachSpeed = -contactRowField(w, k, pointField(i, offsetof(ContactPointRows<float>, relativeVelocity)));
+            const float approachSpeed = -contactRowField(w, k, offsetof(ContactRows<float>, relativeVelocity) / sizeof(float) + static_cast<std::size_t>(i));
             if (approachSpeed > event.approachSpeed && contact.points[i].maxNormalImpulse > 0.0f) {
                 event.approachSpeed = approachSpeed;
                 event.point = contact.points[i].point;
