@@ -82,7 +82,7 @@ struct alignas(32) BodyLanes {
     F w{};        // angular velocity ω
     Vec2T<F> dp;  // centre-of-mass displacement since the step began
     RotT<F> dq;   // rotation since the step began
-    F invMass{};  // 1/m, fixed for the step (0: the static slot, a kinematic body): the contact rows'
+    F invMass{};  // 1/m, fixed for the step (0: the static slot, a kinematic body), for the contact rows
 };
 
 }  // namespace perpdot

@@ -65,6 +65,12 @@ BoxRoom& knownShapes(World::Impl& w, int body) {
 
 namespace {
 
+// A body's one proxy and its box at a pose (-1: the body has more, or none was measured).
+struct SoleBox {
+    int proxy = -1;
+    AABB box;
+};
+
 // The body's boxes at pose xf against their fat AABBs, into its box room; with `refitAlong`, the
 // boxes that stick out are re-fitted first (grown along that displacement). Whether all were inside.
 // A body of one proxy leaves it and its box in `sole` (when given): its re-fit needs no second look.
@@ -109,7 +115,7 @@ void refitPredicted(int, int, int, void* world) {
     for (size_t k = 0; k < poses.size(); ++k) {
         const PredictedPose& p = poses[k];
         if (!p.refit) continue;
-        if (p.inPlace.proxy >= 0) w.moveInPlace(p.inPlace.proxy, p.inPlace.box);
+        if (p.inPlace.proxy >= 0) w.moveInPlace(p.inPlace.proxy, p.inPlace.fat);
         else refitEscaped(w, w.scratch.awakeBodies[k], p.center, p.xf, p.displacement);
     }
     // A worn tree is built anew here too, beside the solver rather than before the next queries.

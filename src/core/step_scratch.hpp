@@ -60,10 +60,10 @@ struct BodyPose {
     float angle = 0;
 };
 
-// A body's one proxy and its box at a pose (-1: the body has more, or none was measured).
-struct SoleBox {
+// A proxy's leaf to move in place, and the fat AABB it moves to (proxy -1: none).
+struct InPlaceMove {
     int proxy = -1;
-    AABB box;
+    AABB fat;
 };
 
 // A body's pose predicted for the step's end from its velocity, and whether its proxies re-fit to
@@ -72,7 +72,7 @@ struct PredictedPose {
     Transform xf;
     Vec2 center, displacement;
     bool refit = false;
-    SoleBox inPlace;  // where refit and the body's one proxy moves in place: that proxy and its new fat AABB
+    InPlaceMove inPlace;  // where refit and the body has one proxy, which moves in place
 };
 
 struct StepScratch {
