@@ -29,6 +29,18 @@ inline BodyLanes<simd::Float4> gatherBodies(const std::vector<BodyState>& states
     return {{head[0], head[1]}, head[2], {head[3], tail[0]}, {tail[1], tail[2]}, tail[3]};
 }
 
+// Starts loading, for writing, the states of a block's bodies (solver slots `bodyA`, `bodyB`): a
+// pass over blocks asks for those of the block `bodiesAhead` after the one it solves, so that
+// their scattered misses overlap the rows in between instead of stalling the gather.
+constexpr int bodiesAhead = 2;
+template <std::size_t lanes>
+inline void prefetchBodies(const BodyState* states, const int (&bodyA)[lanes], const int (&bodyB)[lanes]) {
+    for (std::size_t i = 0; i < lanes; ++i) {
+        __builtin_prefetch(&states[bodyA[i]], 1);
+        __builtin_prefetch(&states[bodyB[i]], 1);
+    }
+}
+
 // Write back the velocities the rows changed (Δp and Δq are the integrator's). The static slot 0
 // is skipped: lanes share it and it never moves.
 inline void scatterVelocities(std::vector<BodyState>& states, const int (&slots)[4], const BodyLanes<simd::Float4>& lanes) {

@@ -45,7 +45,8 @@ decltype(auto) onContactBlocks(Scratch& s, Fn fn) {
 }
 
 // `rows(blockRows, a, b, slotsA, slotsB)` on the blocks of [begin, end) that `needs` (all by
-// default), or `rows(constraint, a, b, slotA, slotB)` on every overflow constraint when overflow is set.
+// default; the bodies of those ahead asked for, prefetchBodies), or `rows(constraint, a, b, slotA,
+// slotB)` on every overflow constraint when overflow is set.
 template <class Rows, class Needs = bool (*)(const ContactBlock&)>
 void forContacts(World::Impl& w, int begin, int end, bool overflow, Rows rows,
                  Needs needs = [](const ContactBlock&) { return true; }) {
@@ -53,6 +54,8 @@ void forContacts(World::Impl& w, int begin, int end, bool overflow, Rows rows,
     for (int k = begin; k < end; ++k) {
         ContactBlock& block = w.scratch.contactBlocks[k];
         if (!needs(block)) continue;
+        if (k + bodiesAhead < end && needs(w.scratch.contactBlocks[k + bodiesAhead]))
+            prefetchBodies(states.data(), w.scratch.contactBlocks[k + bodiesAhead].bodyA, w.scratch.contactBlocks[k + bodiesAhead].bodyB);
         BodyLanes<Float4> a = gatherBodies(states, block.bodyA);
         BodyLanes<Float4> b = gatherBodies(states, block.bodyB);
         rows(block.rows, a, b, block.bodyA, block.bodyB);

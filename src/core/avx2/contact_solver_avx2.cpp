@@ -66,13 +66,16 @@ void deriveContactRows8(ContactBlock8& block, const BodyState* freeVelocities, c
 
 namespace {
 
-// `rows(blockRows, a, b, block)` on the blocks of [begin, end) that `needs` (all by default).
+// `rows(blockRows, a, b, block)` on the blocks of [begin, end) that `needs` (all by default), the
+// bodies of those ahead asked for (prefetchBodies).
 template <class Rows, class Needs = bool (*)(const ContactBlock8&)>
 void forBlocks(ContactBlock8* blocks, int begin, int end, BodyState* states, Rows rows,
                Needs needs = [](const ContactBlock8&) { return true; }) {
     for (int k = begin; k < end; ++k) {
         ContactBlock8& block = blocks[k];
         if (!needs(block)) continue;
+        if (k + bodiesAhead < end && needs(blocks[k + bodiesAhead]))
+            prefetchBodies(states, blocks[k + bodiesAhead].bodyA, blocks[k + bodiesAhead].bodyB);
         BodyLanes<Float8> a = gatherBodies8(states, block.bodyA);
         BodyLanes<Float8> b = gatherBodies8(states, block.bodyB);
         rows(*reinterpret_cast<ContactRows<Float8>*>(block.rows), a, b, block);
