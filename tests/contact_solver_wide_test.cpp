@@ -1,8 +1,9 @@
 // The contact rows of src/core/contact_solver_wide.hpp solve four constraints in simd::Float4
 // lanes with bit for bit the results of solving them one at a time with F = float (no FMA, no
 // approximate reciprocal), including one-point manifolds, rolling resistance, restitution (the pass
-// after the substeps, which skips slow, non-pushing and inelastic points) and empty lanes; and so
-// does the derivation of the prepared rows from a contact's gathered values.
+// after the substeps, which skips slow, non-pushing and inelastic points) and empty lanes, the lanes
+// taking only the rows their block uses (RowUses) and the scalar solves all of them; and so does
+// the derivation of the prepared rows from a contact's gathered values.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -19,7 +20,12 @@ using lanes_test::Random;
 using lanes_test::randomBody;
 using lanes_test::sameBits;
 
-ContactRows<float> randomRows(Random& r, int pointCount, bool rolling) {
+// What the rows of a round use, beyond the fields every pass reads.
+struct Kinds {
+    bool flat = false, conveyor = true, elastic = true;
+};
+
+ContactRows<float> randomRows(Random& r, int pointCount, bool rolling, Kinds kinds = {}) {
     ContactRows<float> c;
     c.invIA = r(0.1f, 4.0f);
     c.invIB = r(0.1f, 4.0f);
@@ -28,8 +34,10 @@ ContactRows<float> randomRows(Random& r, int pointCount, bool rolling) {
     c.rollingResistance = rolling ? r(0.01f, 0.2f) : 0.0f;
     c.rollingMass = rolling ? 1.0f / (c.invIA + c.invIB) : 0.0f;
     c.rollingImpulse = rolling ? r(-0.1f, 0.1f) : 0.0f;
-    c.tangentSpeed = r(-0.5f, 0.5f);
-    c.restitution = r(0.0f, 1.0f) < 0.3f ? 0.0f : r(0.1f, 1.0f);
+    c.tangentSpeed = kinds.conveyor ? r(-0.5f, 0.5f) : 0.0f;
+    c.restitution = !kinds.elastic || r(0.0f, 1.0f) < 0.3f ? 0.0f : r(0.1f, 1.0f);
+    c.turnsA = kinds.flat || r(0.0f, 1.0f) < 0.5f ? 1.0f : 0.0f;
+    c.turnsB = kinds.flat || r(0.0f, 1.0f) < 0.5f ? 1.0f : 0.0f;
     for (int i = 0; i < pointCount; ++i) {
         ContactPointRows<float>& p = c.points[i];
         p.anchorA = {r(-0.5f, 0.5f), r(-0.5f, 0.5f)};
@@ -52,17 +60,24 @@ TEST(ContactSolverWide, FourLanesEqualFourScalarSolves) {
     ctx.h = 1.0f / 60.0f;
     ctx.invH = 60.0f;
     Random r{987654321u};
+    int recordedPushes = 0;
     for (int round = 0; round < 50; ++round) {
         // The rows' softness, against the static body (lane 2) or not, comes from the step.
         ctx.contactSoftness = {r(10.0f, 60.0f), r(0.5f, 1.0f), r(0.0f, 0.5f)};
         ctx.staticSoftness = {r(10.0f, 60.0f), r(0.5f, 1.0f), r(0.0f, 0.5f)};
-        // Lanes: a two-point manifold, a one-point one with rolling resistance, one against the
-        // static slot 0, and an empty lane (round % 2) or another two-point manifold.
+        ctx.hitEvents = round % 5 == 4;
+        // Lanes: a two-point manifold, a one-point one with rolling resistance (unless round % 3 is
+        // 2), one against the static slot 0, and an empty lane (round % 2) or another two-point
+        // manifold. Every third round is flat, plain contacts: no round surface, tangent speed or
+        // restitution; the next rolls where the others do, the one after has none of these.
         const bool emptyLast = round % 2 == 0;
+        const Kinds kinds = round % 3 == 0 ? Kinds{true, false, false} : Kinds{};
+        const bool rolls = round % 3 != 2;
         std::vector<BodyState> states(9);
         for (int i = 1; i < 9; ++i) states[i] = randomBody(r);
-        std::array<ContactRows<float>, 4> rows = {randomRows(r, 2, false), randomRows(r, 1, true), randomRows(r, 2, false),
-                                                  emptyLast ? ContactRows<float>{} : randomRows(r, 2, true)};
+        std::array<ContactRows<float>, 4> rows = {randomRows(r, 2, false, kinds), randomRows(r, 1, rolls, kinds),
+                                                  randomRows(r, 2, false, kinds),
+                                                  emptyLast ? ContactRows<float>{} : randomRows(r, 2, rolls, kinds)};
         rows[2].invIA = 0.0f;  // body A of lane 2 is the static slot 0 (its state's 1/m is 0)
         const int bodyA[4] = {1, 3, 0, emptyLast ? 0 : 7};
         const int bodyB[4] = {2, 4, 5, emptyLast ? 0 : 8};
@@ -84,18 +99,24 @@ TEST(ContactSolverWide, FourLanesEqualFourScalarSolves) {
                              substepVelocityChange(forces, bodyB[lane]), ctx);
 
         ContactRows<simd::Float4> wide = lanes_test::lanesOf<ContactRows>(rows);
+        const RowUses uses = rowUses(floatsOf(wide), 4, emptyLast ? 3 : 4);
+        EXPECT_EQ(uses.roundSurface, kinds.flat ? false : uses.roundSurface) << round;
+        EXPECT_EQ(uses.conveyor || uses.elastic, !kinds.flat) << round;
+        EXPECT_EQ(uses.rolling, rolls) << round;
         for (const bool useBias : {true, false}) {
             BodyLanes<simd::Float4> a = gatherBodies(states, bodyA), b = gatherBodies(states, bodyB);
-            warmStartContact(wide, a, b);
-            if (useBias) solveContact<true>(wide, a, b, ctx);
-            else solveContact<false>(wide, a, b, ctx);
+            warmStartContact(wide, a, b, uses);
+            if (useBias) solveContact<true>(wide, a, b, ctx, uses);
+            else solveContact<false>(wide, a, b, ctx, uses);
             scatterVelocities(states, bodyA, a);
             scatterVelocities(states, bodyB, b);
         }
-        BodyLanes<simd::Float4> a = gatherBodies(states, bodyA), b = gatherBodies(states, bodyB);
-        restituteContact(wide, a, b, substepVelocityChange(forces, bodyA), substepVelocityChange(forces, bodyB), ctx);
-        scatterVelocities(states, bodyA, a);
-        scatterVelocities(states, bodyB, b);
+        if (uses.elastic) {  // as the solver: blocks without restitution skip its pass
+            BodyLanes<simd::Float4> a = gatherBodies(states, bodyA), b = gatherBodies(states, bodyB);
+            restituteContact(wide, a, b, substepVelocityChange(forces, bodyA), substepVelocityChange(forces, bodyB), ctx);
+            scatterVelocities(states, bodyA, a);
+            scatterVelocities(states, bodyB, b);
+        }
 
         for (int i = 0; i < 9; ++i) {
             EXPECT_TRUE(sameBits(states[i].v.x, scalar[i].v.x)) << "round " << round << " body " << i;
@@ -108,14 +129,21 @@ TEST(ContactSolverWide, FourLanesEqualFourScalarSolves) {
         for (int i = 0; i < 2; ++i) {
             wide.points[i].normalImpulse.store(normal);
             wide.points[i].tangentImpulse.store(tangent);
-            wide.points[i].maxNormalImpulse.store(maxNormal);
+            wide.maxNormalImpulse[i].store(maxNormal);
             for (int lane = 0; lane < 4; ++lane) {
-                EXPECT_TRUE(sameBits(maxNormal[lane], scalarRows[lane].points[i].maxNormalImpulse)) << lane;
+                // Recorded where restitution or hit events read it, else 0.
+                if (ctx.hitEvents || scalarRows[lane].restitution != 0.0f) {
+                    recordedPushes += scalarRows[lane].maxNormalImpulse[i] > 0.0f ? 1 : 0;
+                } else {
+                    EXPECT_EQ(scalarRows[lane].maxNormalImpulse[i], 0.0f);
+                }
+                EXPECT_TRUE(sameBits(maxNormal[lane], scalarRows[lane].maxNormalImpulse[i])) << lane;
                 EXPECT_TRUE(sameBits(normal[lane], scalarRows[lane].points[i].normalImpulse)) << lane;
                 EXPECT_TRUE(sameBits(tangent[lane], scalarRows[lane].points[i].tangentImpulse)) << lane;
             }
         }
     }
+    EXPECT_GT(recordedPushes, 20);
 }
 
 // deriveContactRows (the prepared fields computed from a contact's gathered values) on four lanes

@@ -309,7 +309,7 @@ bool solveGroupNormals(World::Impl& w, ContactGroups& g, int group, const StepCo
         const float newImpulse = std::max(cp.normalImpulse + static_cast<float>(g.x[r]), 0.0f);
         const float impulse = newImpulse - cp.normalImpulse;
         cp.normalImpulse = newImpulse;
-        cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, impulse);
+        recordPush(rows, i, impulse, ctx);
         applyImpulse(rows, w.scratch.states[c.indexA], w.scratch.states[c.indexB], cp.anchorA, cp.anchorB, impulse * rows.normal);
     }
     return true;

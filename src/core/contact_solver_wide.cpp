@@ -44,9 +44,9 @@ decltype(auto) onContactBlocks(Scratch& s, Fn fn) {
     return fn(s.contactBlocks);
 }
 
-// `rows(blockRows, a, b, slotsA, slotsB)` on the blocks of [begin, end) that `needs` (all by
+// `rows(blockRows, a, b, slotsA, slotsB, uses)` on the blocks of [begin, end) that `needs` (all by
 // default; the bodies of those ahead asked for, prefetchBodies), or `rows(constraint, a, b, slotA,
-// slotB)` on every overflow constraint when overflow is set.
+// slotB, RowUses{})` on every overflow constraint when overflow is set.
 template <class Rows, class Needs = bool (*)(const ContactBlock&)>
 void forContacts(World::Impl& w, int begin, int end, bool overflow, Rows rows,
                  Needs needs = [](const ContactBlock&) { return true; }) {
@@ -58,32 +58,35 @@ void forContacts(World::Impl& w, int begin, int end, bool overflow, Rows rows,
             prefetchBodies(states.data(), w.scratch.contactBlocks[k + bodiesAhead].bodyA, w.scratch.contactBlocks[k + bodiesAhead].bodyB);
         BodyLanes<Float4> a = gatherBodies(states, block.bodyA);
         BodyLanes<Float4> b = gatherBodies(states, block.bodyB);
-        rows(block.rows, a, b, block.bodyA, block.bodyB);
+        rows(block.rows, a, b, block.bodyA, block.bodyB, block.uses);
         scatterVelocities(states, block.bodyA, a);
         scatterVelocities(states, block.bodyB, b);
     }
     if (!overflow) return;
     for (int index : w.scratch.overflowConstraints) {
         const ContactConstraint& c = w.scratch.constraints[index];
-        rows(w.scratch.constraintRows[index], states[c.indexA], states[c.indexB], c.indexA, c.indexB);
+        rows(w.scratch.constraintRows[index], states[c.indexA], states[c.indexB], c.indexA, c.indexB, RowUses{});
     }
 }
 
 void passContacts(World::Impl& w, const StepContext& ctx, RowPass pass, int begin, int end, bool overflow) {
     if (pass == RowPass::WarmStart)
-        forContacts(w, begin, end, overflow, [](auto& c, auto& a, auto& b, const auto&, const auto&) { warmStartContact(c, a, b); });
+        forContacts(w, begin, end, overflow,
+                    [](auto& c, auto& a, auto& b, const auto&, const auto&, RowUses uses) { warmStartContact(c, a, b, uses); });
     else if (pass == RowPass::Solve)
-        forContacts(w, begin, end, overflow, [&](auto& c, auto& a, auto& b, const auto&, const auto&) { solveContact<true>(c, a, b, ctx); });
+        forContacts(w, begin, end, overflow,
+                    [&](auto& c, auto& a, auto& b, const auto&, const auto&, RowUses uses) { solveContact<true>(c, a, b, ctx, uses); });
     else if (pass == RowPass::Relax)
-        forContacts(w, begin, end, overflow, [&](auto& c, auto& a, auto& b, const auto&, const auto&) { solveContact<false>(c, a, b, ctx); });
+        forContacts(w, begin, end, overflow,
+                    [&](auto& c, auto& a, auto& b, const auto&, const auto&, RowUses uses) { solveContact<false>(c, a, b, ctx, uses); });
     else
         forContacts(
             w, begin, end, overflow,
-            [&](auto& c, auto& a, auto& b, const auto& slotsA, const auto& slotsB) {
+            [&](auto& c, auto& a, auto& b, const auto& slotsA, const auto& slotsB, RowUses) {
                 const std::vector<SubstepForces>& forces = w.scratch.substepForces;
                 restituteContact(c, a, b, substepVelocityChange(forces, slotsA), substepVelocityChange(forces, slotsB), ctx);
             },
-            [](const ContactBlock& block) { return anyElastic(block.rowData(), ContactBlock::lanes); });
+            [](const ContactBlock& block) { return block.uses.elastic; });
 }
 
 }  // namespace
@@ -148,6 +151,7 @@ void layOutBlocks(World::Impl& w, const StepContext& ctx, std::vector<Block>& bl
             if (used) gatherContactLane(w, *c, block.rowData() + lane, width);
         }
         deriveBlock(w, ctx, block, present);
+        block.uses = rowUses(block.rowData(), width, lanes);
         // An empty lane: no mass, no impulse, nothing at all.
         for (int lane = lanes; lane < width; ++lane)
             for (std::size_t field = 0; field < rowFloats; ++field) block.rowData()[field * width + static_cast<std::size_t>(lane)] = 0.0f;
@@ -231,8 +235,9 @@ void serialContactRows(World::Impl& w, const StepContext& ctx, RowPass pass) { p
 
 namespace {
 
-// Where the rolling impulse is, in floats (as pointField, contact_solver_wide.hpp).
+// Where the rolling impulse and point i's largest push are, in floats (as pointField, contact_solver_wide.hpp).
 constexpr std::size_t rollingField = offsetof(ContactRows<float>, rollingImpulse) / sizeof(float);
+constexpr std::size_t maxNormalField(int i) { return offsetof(ContactRows<float>, maxNormalImpulse) / sizeof(float) + static_cast<std::size_t>(i); }
 
 // A block's accumulated impulses straight from its lanes into its contacts.
 template <class Block>
@@ -247,7 +252,7 @@ void storeBlockImpulses(World::Impl& w, const Block& block) {
             ContactPointState& stored = contact.points[i];
             stored.normalImpulse = field(pointField(i, offsetof(ContactPointRows<float>, normalImpulse)));
             stored.tangentImpulse = field(pointField(i, offsetof(ContactPointRows<float>, tangentImpulse)));
-            stored.maxNormalImpulse = field(pointField(i, offsetof(ContactPointRows<float>, maxNormalImpulse)));
+            stored.maxNormalImpulse = field(maxNormalField(i));
         }
     }
 }
@@ -282,7 +287,7 @@ void storeContactImpulses(World::Impl& w) {
         for (int i = 0; i < c.pointCount; ++i) {
             contact.points[i].normalImpulse = rows.points[i].normalImpulse;
             contact.points[i].tangentImpulse = rows.points[i].tangentImpulse;
-            contact.points[i].maxNormalImpulse = rows.points[i].maxNormalImpulse;
+            contact.points[i].maxNormalImpulse = rows.maxNormalImpulse[i];
         }
     };
     for (int index : s.overflowConstraints) storeRows(index);

@@ -22,25 +22,38 @@ template <class F>
 struct ContactPointRows {
     Vec2T<F> anchorA, anchorB;  // fixed for the step: rA, rB
     F baseSeparation{};         // separation minus (rB - rA)·n, so s = base + (ΔpB + rB' - ΔpA - rA')·n
-    F normalImpulse{}, tangentImpulse{}, maxNormalImpulse{};
+    F normalImpulse{}, tangentImpulse{};
     F normalMass{}, tangentMass{};  // 1 / effectiveMass of each row; 0 for no manifold point
 };
 
-// The fields every pass reads come first, those of the rolling row and of restitution last: with
-// the block's solver slots before them (ContactBlock8), a pass over blocks without either streams
-// 16 of a block's 19 cache lines.
+// The fields every pass reads come first, up to the points; the others only where a lane of the
+// block uses them (RowUses). With the block's solver slots before them (ContactBlock8), a pass over
+// blocks of flat, plain contacts streams 13 of a block's 19 cache lines.
 template <class F>
 struct ContactRows {
     F invIA{}, invIB{};  // 1/I of the bodies (their 1/m is in their states: BodyLanes::invMass)
     Vec2T<F> normal;
-    F friction{}, rollingResistance{}, tangentSpeed{};
+    F friction{};
+    ContactPointRows<F> points[2];
     // 1 where a body's surface is flat: its anchor is a point of the body and turns with it. 0 for a
     // round surface, whose contact point stays under its centre as it rolls.
     F turnsA{}, turnsB{};
-    ContactPointRows<F> points[2];
-    F rollingMass{}, rollingImpulse{};  // angular row: 1/(1/IA + 1/IB), accumulated λ
+    F tangentSpeed{};
+    F rollingResistance{}, rollingMass{}, rollingImpulse{};  // angular row: 1/(1/IA + 1/IB), accumulated λ
     F restitution{};
+    F maxNormalImpulse[2]{};  // the largest push of each point this step, where recorded (recordPush)
     F relativeVelocity[2]{};  // v_rel·n at each point before solving, for restitution
+};
+
+// Which of the rows' fields after the points a block's lanes use, found once it is laid out
+// (rowUses), so that its passes leave the lines of the others unread. One constraint's own rows
+// take RowUses{}, all of them: a general path gives a lane that does not use a field the bits the
+// path without it gives.
+struct RowUses {
+    bool roundSurface = true;  // an anchor that does not turn with its body (turnsA or turnsB 0)
+    bool conveyor = true;      // a tangent speed
+    bool rolling = true;       // rolling resistance: the rolling row
+    bool elastic = true;       // restitution: the restitution pass, which reads each point's largest push
 };
 
 // Apply impulse P at the anchors: vA -= P/mA, ωA -= perpDot(rA,P)/IA, and + for B.
@@ -52,11 +65,12 @@ inline void applyImpulse(const ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>&
     b.w = b.w + c.invIB * perpDot(rB, P);
 }
 
-// Angular impulse λ on ωB − ωA: ωA -= λ/IA, ωB += λ/IB.
+// Rolling impulse λ on ωB − ωA where a lane has rolling resistance: ωA -= λ/IA, ωB += λ/IB.
 template <class F>
-inline void applyAngularImpulse(const ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, F impulse) {
-    a.w = a.w - c.invIA * impulse;
-    b.w = b.w + c.invIB * impulse;
+inline void applyRollingImpulse(const ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, F impulse) {
+    const simd::MaskOf<F> rolls = c.rollingResistance > F(0.0f);
+    a.w = simd::select(rolls, a.w - c.invIA * impulse, a.w);
+    b.w = simd::select(rolls, b.w + c.invIB * impulse, b.w);
 }
 
 // v_rel = v_B + ωB perp(rB) − (v_A + ωA perp(rA)).
@@ -110,35 +124,62 @@ void deriveContactRows(ContactRows<F>& c, const BodyLanes<F>& a, const BodyLanes
         c.relativeVelocity[i] = select(point, dot(relativeVelocity(a, b, rA, rB), n), F(0.0f));
         cp.normalImpulse = warmStartImpulse(ctx, cp.normalImpulse);
         cp.tangentImpulse = warmStartImpulse(ctx, cp.tangentImpulse);
-        cp.maxNormalImpulse = F(0.0f);
+        c.maxNormalImpulse[i] = F(0.0f);
         cp.normalMass = select(point, effectiveMass<F>(m, rA, rB, n), F(0.0f));
         cp.tangentMass = select(point, effectiveMass<F>(m, rA, rB, t), F(0.0f));
     }
 }
 
-// Whether some lane has a rolling row: the others' λr is 0 for good (derive), and a block
-// without any leaves the row's fields unread.
-template <class F>
-bool rolls(const ContactRows<F>& c) {
-    return !simd::noLane(c.rollingResistance > F(0.0f));
+// The uses of a block's `used` lanes, from its rows (rowData(), `lanes` wide).
+inline RowUses rowUses(const float* rows, int lanes, int used) {
+    auto any = [&](std::size_t offset, auto test) {
+        const float* field = rows + offset / sizeof(float) * static_cast<std::size_t>(lanes);
+        for (int lane = 0; lane < used; ++lane)
+            if (test(field[lane])) return true;
+        return false;
+    };
+    auto zero = [](float value) { return value == 0.0f; };
+    auto nonzero = [](float value) { return value != 0.0f; };
+    return {.roundSurface = any(offsetof(ContactRows<float>, turnsA), zero) || any(offsetof(ContactRows<float>, turnsB), zero),
+            .conveyor = any(offsetof(ContactRows<float>, tangentSpeed), nonzero),
+            .rolling = any(offsetof(ContactRows<float>, rollingResistance), [](float value) { return value > 0.0f; }),
+            .elastic = any(offsetof(ContactRows<float>, restitution), nonzero)};
 }
 
 // Re-apply last step's accumulated impulses: λn n + λt perp(n) at each point, λr on the angle.
 template <class F>
-void warmStartContact(const ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b) {
+void warmStartContact(const ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, RowUses uses = {}) {
     const Vec2T<F> n = c.normal, t = perp(n);
     for (const ContactPointRows<F>& cp : c.points)
         applyImpulse(c, a, b, cp.anchorA, cp.anchorB, cp.normalImpulse * n + cp.tangentImpulse * t);
-    if (rolls(c)) applyAngularImpulse(c, a, b, c.rollingImpulse);
+    if (uses.rolling) applyRollingImpulse(c, a, b, c.rollingImpulse);
+}
+
+// Anchor r turned with its body by Δq where its surface is flat (turns ≠ 0), else r.
+template <class F>
+Vec2T<F> turnedAnchor(RotT<F> dq, Vec2T<F> r, F turns, bool roundSurface) {
+    const Vec2T<F> turned = rotate(dq, r);
+    if (!roundSurface) return turned;
+    const simd::MaskOf<F> flat = turns != F(0.0f);
+    return {simd::select(flat, turned.x, r.x), simd::select(flat, turned.y, r.y)};
 }
 
 // Current separation of a point without a new narrowphase: s = base + (ΔpB + rB' − ΔpA − rA')·n,
 // with r' the anchor turned with its body where the surface is flat.
 template <class F>
-F currentSeparation(const ContactRows<F>& c, const ContactPointRows<F>& cp, const BodyLanes<F>& a, const BodyLanes<F>& b) {
-    const Vec2T<F> rA = cp.anchorA, rB = cp.anchorB;
-    const Vec2T<F> turnedA = rA + c.turnsA * (rotate(a.dq, rA) - rA), turnedB = rB + c.turnsB * (rotate(b.dq, rB) - rB);
+F currentSeparation(const ContactRows<F>& c, const ContactPointRows<F>& cp, const BodyLanes<F>& a, const BodyLanes<F>& b,
+                    RowUses uses = {}) {
+    const Vec2T<F> turnedA = turnedAnchor(a.dq, cp.anchorA, c.turnsA, uses.roundSurface);
+    const Vec2T<F> turnedB = turnedAnchor(b.dq, cp.anchorB, c.turnsB, uses.roundSurface);
     return cp.baseSeparation + dot(b.dp - a.dp + turnedB - turnedA, c.normal);
+}
+
+// Point i's largest push this step, λn,max, recorded where it is read: every lane when some shape
+// reports hits (StepContext::hitEvents), else the elastic lanes (restituteContact); the others keep 0.
+template <class F>
+void recordPush(ContactRows<F>& c, int i, F impulse, const StepContext& ctx) {
+    const F larger = simd::max(c.maxNormalImpulse[i], impulse);
+    c.maxNormalImpulse[i] = ctx.hitEvents ? larger : simd::select(c.restitution != F(0.0f), larger, c.maxNormalImpulse[i]);
 }
 
 // One pass over a constraint's rows: non-penetration (λn ≥ 0) unless `normalRows` is false (a
@@ -147,7 +188,7 @@ F currentSeparation(const ContactRows<F>& c, const ContactPointRows<F>& cp, cons
 // (soft push-out), else the relax pass; template arguments, so that each pass compiles to its own
 // loop with only the values it uses.
 template <bool useBias, bool normalRows = true, class F>
-void solveContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, const StepContext& ctx) {
+void solveContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, const StepContext& ctx, RowUses uses = {}) {
     using simd::max;
     using simd::select;
     const Vec2T<F> n = c.normal;
@@ -164,10 +205,11 @@ void solveContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, const Ste
                 pick(ctx.contactSoftness.impulseScale, ctx.staticSoftness.impulseScale)};
     }
     F totalNormalImpulse = 0.0f;
-    for (ContactPointRows<F>& cp : c.points) {
+    for (int i = 0; i < 2; ++i) {
+        ContactPointRows<F>& cp = c.points[i];
         if constexpr (normalRows) {
             const Vec2T<F> rA = cp.anchorA, rB = cp.anchorB;
-            const F s = currentSeparation(c, cp, a, b);
+            const F s = currentSeparation(c, cp, a, b, uses);
             // Speculative (s > 0): bias = s/hs, a rigid row that may close the gap this substep, no more.
             const simd::MaskOf<F> speculative = s > F(0.0f);
             F bias = select(speculative, s * F(ctx.invHs), F(0.0f));
@@ -184,7 +226,7 @@ void solveContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, const Ste
             const F newImpulse = max(cp.normalImpulse + impulse, F(0.0f));
             impulse = newImpulse - cp.normalImpulse;
             cp.normalImpulse = newImpulse;
-            cp.maxNormalImpulse = max(cp.maxNormalImpulse, impulse);
+            if (ctx.hitEvents || uses.elastic) recordPush(c, i, impulse, ctx);
             totalNormalImpulse += newImpulse;
             applyImpulse(c, a, b, rA, rB, impulse * n);
         } else {
@@ -197,18 +239,19 @@ void solveContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, const Ste
     const Vec2T<F> t = perp(n);
     for (ContactPointRows<F>& cp : c.points) {
         const Vec2T<F> rA = cp.anchorA, rB = cp.anchorB;
-        const F vt = dot(relativeVelocity(a, b, rA, rB), t) + c.tangentSpeed;
+        F vt = dot(relativeVelocity(a, b, rA, rB), t);
+        if (uses.conveyor) vt = select(c.tangentSpeed != F(0.0f), vt + c.tangentSpeed, vt);
         const F maxFriction = c.friction * cp.normalImpulse;
         const F newImpulse = simd::clamp(cp.tangentImpulse - cp.tangentMass * vt, -maxFriction, maxFriction);
         const F impulse = newImpulse - cp.tangentImpulse;
         cp.tangentImpulse = newImpulse;
         applyImpulse(c, a, b, rA, rB, impulse * t);
     }
-    if (!rolls(c)) return;
+    if (!uses.rolling) return;
     const F maxLambda = c.rollingResistance * totalNormalImpulse;
     const F lambda = c.rollingImpulse;
     c.rollingImpulse = simd::clamp(lambda - c.rollingMass * (b.w - a.w), -maxLambda, maxLambda);
-    applyAngularImpulse(c, a, b, c.rollingImpulse - lambda);
+    applyRollingImpulse(c, a, b, c.rollingImpulse - lambda);
 }
 
 // The rebound speed of an approach at speed V: Hecker's e V, corrected so that the climb it starts
@@ -238,7 +281,7 @@ void restituteContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, Vec2T
     for (int i = 0; i < 2; ++i) {
         ContactPointRows<F>& cp = c.points[i];
         const simd::MaskOf<F> slow = c.relativeVelocity[i] > F(-ctx.restitutionThreshold);
-        const simd::MaskOf<F> pushed = cp.maxNormalImpulse != F(0.0f);
+        const simd::MaskOf<F> pushed = c.maxNormalImpulse[i] != F(0.0f);
         const auto ifBouncing = [&](F value, F otherwise) {
             return select(slow, otherwise, select(pushed, select(elastic, value, otherwise), otherwise));
         };
@@ -248,7 +291,7 @@ void restituteContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, Vec2T
         const F newImpulse = max(cp.normalImpulse + -cp.normalMass * (vn - rebound), F(0.0f));
         const F impulse = ifBouncing(newImpulse - cp.normalImpulse, F(0.0f));
         cp.normalImpulse = ifBouncing(newImpulse, cp.normalImpulse);
-        cp.maxNormalImpulse = ifBouncing(max(cp.maxNormalImpulse, impulse), cp.maxNormalImpulse);
+        c.maxNormalImpulse[i] = ifBouncing(max(c.maxNormalImpulse[i], impulse), c.maxNormalImpulse[i]);
         applyImpulse(c, a, b, rA, rB, impulse * c.normal);
     }
 }
@@ -264,21 +307,13 @@ constexpr std::size_t pointField(int point, std::size_t memberOffset) {
            sizeof(float);
 }
 
-// Whether any lane of a block's rows (rowData(), `lanes` wide) has restitution: blocks without
-// any skip the restitution pass, gathers and all.
-inline bool anyElastic(const float* rows, int lanes) {
-    const float* restitution = rows + offsetof(ContactRows<float>, restitution) / sizeof(float) * static_cast<std::size_t>(lanes);
-    for (int lane = 0; lane < lanes; ++lane)
-        if (restitution[lane] != 0.0f) return true;
-    return false;
-}
-
 // Four constraints of one graph colour (no two share a dynamic body) as the lanes of one row set.
 struct ContactBlock {
     static constexpr int lanes = 4;
     ContactRows<simd::Float4> rows;
     int contact[4] = {-1, -1, -1, -1};     // index in World::Impl::contacts; -1: an empty lane
     int bodyA[4] = {}, bodyB[4] = {};      // solver slots; an empty lane uses the static slot 0
+    RowUses uses;                          // of its lanes (rowUses): the fields after the points they read
     const float* rowData() const { return floatsOf(rows); }
     float* rowData() { return floatsOf(rows); }
 };
@@ -287,12 +322,15 @@ struct ContactBlock {
 // ContactRows<Float8>, kept as floats here because only that file may name AVX2 types.
 struct alignas(64) ContactBlock8 {
     static constexpr int lanes = 8;
-    int contact[8] = {-1, -1, -1, -1, -1, -1, -1, -1};
     int bodyA[8] = {}, bodyB[8] = {};
+    RowUses uses;
     alignas(32) float rows[rowFloats * 8];
+    int contact[8] = {-1, -1, -1, -1, -1, -1, -1, -1};  // read by layout and store only
     const float* rowData() const { return rows; }
     float* rowData() { return rows; }
 };
+// What a pass over blocks of flat, plain contacts reads: whole cache lines, 13 of them.
+static_assert(offsetof(ContactBlock8, rows) + offsetof(ContactRows<float>, turnsA) * 8 == 13 * 64);
 
 // The lane width of a new world's contact blocks: 8 where contactLanes8Available() (this build
 // has the AVX2 rows and the CPU runs AVX2), else 4; the environment's PERPDOT_CONTACT_LANES=4 picks 4.

@@ -22,6 +22,7 @@ StepContext makeStepContext(const World::Impl& w, float h) {
     ctx.staticSoftness = makeSoftness(2.0f * contactHertz, def.contactDampingRatio, ctx.hs);
     ctx.jointSoftness = makeSoftness(std::min(def.jointHertz, 0.25f * ctx.invHs), def.jointDampingRatio, ctx.hs);
     ctx.restitutionThreshold = def.restitutionThreshold;
+    ctx.hitEvents = w.shapes.anyHitEvents;
     ctx.maxBiasVelocity = def.contactPushMaxVelocity;
     ctx.pushSlop = def.box2dSkin ? collide::linearSlop : 0.0f;
     ctx.enableWarmStarting = def.enableWarmStarting;

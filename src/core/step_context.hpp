@@ -48,6 +48,7 @@ struct StepContext {
     // Overlap left unpushed: Box2D 2.4's linear slop on its skin (WorldDef::box2dSkin), else none.
     float pushSlop = 0.0f;
     bool enableWarmStarting = true;
+    bool hitEvents = false;  // some shape reports hits: every contact point records its largest push
 };
 
 }  // namespace perpdot

@@ -101,18 +101,21 @@ void contactRows8(ContactBlock8* blocks, int begin, int end, BodyState* states, 
     using Lanes = BodyLanes<Float8>;
     using Rows = ContactRows<Float8>;
     if (pass == RowPass::WarmStart)
-        forBlocks(blocks, begin, end, states, [](Rows& c, Lanes& a, Lanes& b, const ContactBlock8&) { warmStartContact(c, a, b); });
+        forBlocks(blocks, begin, end, states,
+                  [](Rows& c, Lanes& a, Lanes& b, const ContactBlock8& block) { warmStartContact(c, a, b, block.uses); });
     else if (pass == RowPass::Solve)
-        forBlocks(blocks, begin, end, states, [&](Rows& c, Lanes& a, Lanes& b, const ContactBlock8&) { solveContact<true>(c, a, b, ctx); });
+        forBlocks(blocks, begin, end, states,
+                  [&](Rows& c, Lanes& a, Lanes& b, const ContactBlock8& block) { solveContact<true>(c, a, b, ctx, block.uses); });
     else if (pass == RowPass::Relax)
-        forBlocks(blocks, begin, end, states, [&](Rows& c, Lanes& a, Lanes& b, const ContactBlock8&) { solveContact<false>(c, a, b, ctx); });
+        forBlocks(blocks, begin, end, states,
+                  [&](Rows& c, Lanes& a, Lanes& b, const ContactBlock8& block) { solveContact<false>(c, a, b, ctx, block.uses); });
     else
         forBlocks(
             blocks, begin, end, states,
             [&](Rows& c, Lanes& a, Lanes& b, const ContactBlock8& block) {
                 restituteContact(c, a, b, substepVelocityChange8(forces, block.bodyA), substepVelocityChange8(forces, block.bodyB), ctx);
             },
-            [](const ContactBlock8& block) { return anyElastic(block.rows, ContactBlock8::lanes); });
+            [](const ContactBlock8& block) { return block.uses.elastic; });
 }
 
 }  // namespace perpdot
