@@ -13,10 +13,6 @@ namespace perpdot {
 
 namespace {
 
-// Box2D's mixing rules, so cross-checks compare like with like.
-float mixFriction(float a, float b) { return std::sqrt(a * b); }
-float mixRestitution(float a, float b) { return std::max(a, b); }
-
 // Box2D v3's rules: rolling resistance is the larger coefficient times the larger rounding
 // radius (a lever arm), and the surfaces' tangent speeds add.
 // Flat surfaces meet at vertices, which are points of the bodies: their manifold may be kept
@@ -92,6 +88,7 @@ void addPair(World::Impl& w, const NewPair& pair) {
     c.b = keyB;
     bindShapes(cache, index, *sa, *sb);
     c.sensor = sa->sensor || sb->sensor;
+    if (!c.sensor) mixMaterials(c, *sa, *sb);
     cache.bodyLists.link(cache.contacts, index, 0, c.bodyA);
     cache.bodyLists.link(cache.contacts, index, 1, c.bodyB);
 }
@@ -106,18 +103,16 @@ Narrowphase collideContact(World::Impl& w, int index) {
     const collide::CollisionSystem& collision = w.collision;
     if (!overlaps(collision.fatAABB(c.proxyA), collision.fatAABB(c.proxyB))) return Narrowphase::Apart;
     if (c.sensor) return collision.testOverlap(c.a, ba.xf, c.b, bb.xf) ? Narrowphase::Overlapping : Narrowphase::Separate;
-    const ShapeData& sa = w.shapes[c.a.shape];
-    const ShapeData& sb = w.shapes[c.b.shape];
-    c.friction = mixFriction(sa.friction, sb.friction);
-    c.restitution = mixRestitution(sa.restitution, sb.restitution);
-    c.rollingResistance = mixRollingResistance(sa, sb);
-    c.tangentSpeed = sa.tangentSpeed + sb.tangentSpeed;
     const bool wasTouching = c.touching;
+    // The shapes' reach is only used without points: a contact with points reads no shape.
+    auto reach = [&] {
+        const ShapeData &sa = w.shapes[c.a.shape], &sb = w.shapes[c.b.shape];
+        return std::max(sa.maxExtent + length(ba.localCenter), sb.maxExtent + length(bb.localCenter));
+    };
     const ReuseLimits limits{.distance = w.def.contactReuseDistance,
-                             .reach = c.pointCount > 0 ? 0.0f  // only used without points
-                                                       : std::max(sa.maxExtent + length(ba.localCenter), sb.maxExtent + length(bb.localCenter)),
-                             .box2dMargin = collide::box2dSkin(sa.type) + collide::box2dSkin(sb.type),
-                             .skinOffset = w.def.box2dSkin ? 0.0f : collide::skinOffset(sa.type) + collide::skinOffset(sb.type)};
+                             .reach = c.pointCount > 0 ? 0.0f : reach(),
+                             .box2dMargin = collide::box2dSkin(c.typeA) + collide::box2dSkin(c.typeB),
+                             .skinOffset = w.def.box2dSkin ? 0.0f : collide::skinOffset(c.typeA) + collide::skinOffset(c.typeB)};
     if (!reuseManifold(c, ba, bb, limits))
         takeManifold(c, collision.collide(c.a, ba.xf, c.b, bb.xf, w.def.box2dSkin), ba, bb, c.turnsA && c.turnsB);
     c.touching = c.pointCount > 0;
@@ -265,6 +260,8 @@ void bindShapes(ContactCache& cache, int contact, const ShapeData& a, const Shap
     c.bodyB = b.body;
     c.turnsA = isFlat(a);
     c.turnsB = isFlat(b);
+    c.typeA = a.type;
+    c.typeB = b.type;
     const auto capacity = static_cast<size_t>(cache.contacts.capacity());
     cache.bodiesOf.resize(capacity);
     cache.touchingPoints.resize(capacity);
@@ -323,6 +320,21 @@ void releaseApartContacts(World::Impl& w) {
         releaseContact(cache, apart[i]);
     }
     cache.apart.clear();
+}
+
+void mixMaterials(Contact& c, const ShapeData& a, const ShapeData& b) {
+    c.friction = mixFriction(a.friction, b.friction);
+    c.restitution = mixRestitution(a.restitution, b.restitution);
+    c.rollingResistance = mixRollingResistance(a, b);
+    c.tangentSpeed = a.tangentSpeed + b.tangentSpeed;
+}
+
+void remixMaterials(World::Impl& w, int shape) {
+    ContactCache& cache = w.contactCache;
+    cache.bodyLists.forEach(cache.contacts, w.shapes[shape].body, [&](int index, int) {
+        Contact& c = cache.contacts[index];
+        if (!c.sensor && (c.a.shape == shape || c.b.shape == shape)) mixMaterials(c, w.shapes[c.a.shape], w.shapes[c.b.shape]);
+    });
 }
 
 void destroyContactsOf(World::Impl& w, int bodyIndex, int shapeIndex) {

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -35,6 +36,7 @@ struct Contact {
     // Whether the contact point is a point of A's (B's) body, turning with it: a surface without
     // rounding (the rows' turnsA, turnsB). Set from the shapes by bindShapes.
     bool turnsA = false, turnsB = false;
+    ShapeType typeA = ShapeType::Circle, typeB = ShapeType::Circle;  // the shapes' (their skins), from bindShapes
     uint64_t pairKey = 0;
     int proxyA = -1, proxyB = -1;
     collide::ChildKey a, b;
@@ -124,9 +126,19 @@ void destroyContact(World::Impl& world, int contact);  // with its end event
 // order: serial work that no stage reads before the next updatePairs, done on the worker that
 // re-fits the tree (refit_ahead.cpp) beside the solve.
 void releaseApartContacts(World::Impl& world);
-// What a contact takes from its two shapes for its whole life: their bodies and whether its
-// points turn with them (a shape's geometry never changes).
+// What a contact takes from its two shapes for its whole life: their bodies, types and whether
+// its points turn with them (a shape's geometry never changes).
 void bindShapes(ContactCache& cache, int contact, const ShapeData& a, const ShapeData& b);
+
+// Box2D's mixing rules, so cross-checks compare like with like.
+inline float mixFriction(float a, float b) { return std::sqrt(a * b); }
+inline float mixRestitution(float a, float b) { return std::max(a, b); }
+
+// A contact's friction, restitution, rolling resistance and tangent speed, mixed from its shapes'
+// as it is created, and again for the contacts of a shape whose material changes
+// (remixMaterials): the narrowphase reads no shape of a contact with points.
+void mixMaterials(Contact& c, const ShapeData& a, const ShapeData& b);
+void remixMaterials(World::Impl& world, int shape);
 void destroyContactsOf(World::Impl& world, int body, int shape);  // shape = -1: all of the body's contacts
 
 }  // namespace perpdot

@@ -35,10 +35,6 @@ constexpr int impulseSweeps = 64;     // passes over a manifold's (at most two) 
 constexpr int impactsPerMover = 4;    // bound on the impacts taken per step, per mover and per pair
 constexpr float coreFraction = 0.25f; // of the smallest extent: the disc swept when shapes touch at the start
 
-// Box2D's mixing rules, as the contact cache mixes them.
-float mixFriction(float a, float b) { return std::sqrt(a * b); }
-float mixRestitution(float a, float b) { return std::max(a, b); }
-
 // Fraction of the mover's path at step time t: the path starts at t0 and ends at 1.
 float along(const Mover& m, float t) { return m.t0 < 1.0f ? (t - m.t0) / (1.0f - m.t0) : 0.0f; }
 Vec2 centerAt(const Mover& m, float t) { return m.c0 + along(m, t) * (m.c1 - m.c0); }

@@ -240,17 +240,19 @@ AABB World::aabb(ShapeId id) const {
     return box;
 }
 
-// Material changes reach existing contacts, whose mixed values are refreshed each narrowphase.
+// Material changes reach the shape's contacts at once (remixMaterials).
 void World::setFriction(ShapeId id, float friction) {
     impl_->checkUnlocked("setFriction");
     if (!(std::isfinite(friction) && friction >= 0.0f)) throw Error("setFriction: friction must be finite and >= 0");
     impl_->shape(id).friction = friction;
+    remixMaterials(*impl_, id.index);
 }
 
 void World::setRestitution(ShapeId id, float restitution) {
     impl_->checkUnlocked("setRestitution");
     if (!(std::isfinite(restitution) && restitution >= 0.0f)) throw Error("setRestitution: restitution must be finite and >= 0");
     impl_->shape(id).restitution = restitution;
+    remixMaterials(*impl_, id.index);
 }
 
 float World::rollingResistance(ShapeId id) const { return impl_->shape(id).rollingResistance; }
@@ -260,12 +262,14 @@ void World::setRollingResistance(ShapeId id, float resistance) {
     impl_->checkUnlocked("setRollingResistance");
     if (!(std::isfinite(resistance) && resistance >= 0.0f)) throw Error("setRollingResistance: resistance must be finite and >= 0");
     impl_->shape(id).rollingResistance = resistance;
+    remixMaterials(*impl_, id.index);
 }
 
 void World::setTangentSpeed(ShapeId id, float speed) {
     impl_->checkUnlocked("setTangentSpeed");
     if (!std::isfinite(speed)) throw Error("setTangentSpeed: speed must be finite");
     impl_->shape(id).tangentSpeed = speed;
+    remixMaterials(*impl_, id.index);
 }
 
 void World::enablePreSolveEvents(ShapeId id, bool enable) { impl_->shape(id).enablePreSolveEvents = enable; }

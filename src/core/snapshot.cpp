@@ -201,12 +201,11 @@ void readShape(ByteReader& in, ShapeData& s, std::vector<AABB>& proxies, int bod
 // --- contacts ---
 
 // futureOnly: the values the next step's narrowphase recomputes for a contact with an awake body
-// are written as zeros (it keeps only touching, pointCount and each point's id and impulses, and
-// a kept manifold's normal, anchors and pose: manifold_reuse.hpp).
+// are written as zeros (it keeps only touching, pointCount, the materials, each point's id and
+// impulses, and a kept manifold's normal, anchors and pose: manifold_reuse.hpp).
 void writeContact(ByteWriter& out, const Contact& contact, bool futureOnly) {
     Contact c = contact;
     if (futureOnly && !c.sensor) {
-        c.friction = c.restitution = c.rollingResistance = c.tangentSpeed = 0;
         if (!c.reuseValid) c.normal = {};
         for (ContactPointState& p : c.points) {
             p.point = {};
