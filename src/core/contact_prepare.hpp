@@ -25,10 +25,17 @@ inline RowMasses rowMasses(const StepScratch& s, int slotA, int slotB) {
 }
 
 // The rows of constraint c (its contact and solver slots set, StepScratch::freeVelocities filled):
-// its own `rows`, gathered and derived (deriveContactRows, contact_solver_wide.hpp); or the gather
-// alone into its lane of a block of `lanes` (4 or 8), field i at lane[i · lanes] (row_lanes.hpp),
-// the block's lanes to be derived together.
+// its own `rows`, gathered and derived (deriveContactRows, contact_solver_wide.hpp).
 void prepareContactRows(const World::Impl& world, const StepContext& ctx, const ContactConstraint& c, ContactRows<float>& rows);
-void gatherContactLane(const World::Impl& world, const ContactConstraint& c, float* lane, int lanes);
+// Or the gather alone into a block of four or eight lanes (row_lanes.hpp), the block's lanes to be
+// derived together: lane l from constraints[l], l < used, the others zeros; present: 1 where a
+// lane's point is a manifold point. Each contact's values in a row are read as runs of four or
+// eight floats and turned into lanes.
+void gatherContactLanes(const World::Impl& world, const ContactConstraint* const (&constraints)[4], int used, ContactBlock& block,
+                        const float (&present)[2][4]);
+#ifdef PERPDOT_AVX2
+void gatherContactLanes(const World::Impl& world, const ContactConstraint* const (&constraints)[8], int used, ContactBlock8& block,
+                        const float (&present)[2][8]);
+#endif
 
 }  // namespace perpdot

@@ -67,10 +67,97 @@ void prepareContactRows(const World::Impl& w, const StepContext& ctx, const Cont
     deriveContactRows(rows, w.scratch.freeVelocities[c.indexA], w.scratch.freeVelocities[c.indexB], present, ctx);
 }
 
-void gatherContactLane(const World::Impl& w, const ContactConstraint& c, float* lane, int lanes) {
-    if (lanes == 8) gatherRows<8>(w, c, {lane});
-    else gatherRows<4>(w, c, {lane});
+namespace {
+
+// The contact's values gatherRows writes one by one, as a block's lanes read them: runs of four
+// (or eight: the point count and the largest push come along unused) floats of four (eight) contacts
+// turned into lanes.
+static_assert(offsetof(Contact, restitution) == offsetof(Contact, friction) + 4 && offsetof(Contact, rollingResistance) == offsetof(Contact, friction) + 8 &&
+                  offsetof(Contact, tangentSpeed) == offsetof(Contact, friction) + 12 && offsetof(Contact, rollingImpulse) == offsetof(Contact, friction) + 16 &&
+                  offsetof(Contact, normal) == offsetof(Contact, friction) + 20 && offsetof(Contact, pointCount) == offsetof(Contact, friction) + 28,
+              "friction, restitution, rolling resistance, tangent speed | rolling impulse, normal, point count");
+static_assert(offsetof(ContactPointState, anchorB) == 8 && offsetof(ContactPointState, separation) == 16 &&
+                  offsetof(ContactPointState, normalImpulse) == 20 && offsetof(ContactPointState, tangentImpulse) == 24,
+              "anchors | separation, normal and tangent impulses, largest push");
+
+// A block's four lanes from four contacts (an empty lane's: a contact of zeros), given whether
+// each lane's points are manifold points.
+void gatherContactQuad(const Contact* const (&contacts)[4], float* rows, const float (&present)[2][4]) {
+    using Rows = ContactRows<float>;
+    using PointRows = ContactPointRows<float>;
+    using simd::Float4;
+    auto store = [&](std::size_t offset, Float4 value) { value.store(rows + offset / sizeof(float) * 4); };
+    Float4 head[4], tail[4];
+    for (int k = 0; k < 4; ++k) {
+        head[k] = Float4::loadBytes(&contacts[k]->friction);
+        tail[k] = Float4::loadBytes(&contacts[k]->rollingImpulse);
+    }
+    simd::transpose(head);
+    simd::transpose(tail);
+    for (std::size_t f = 0; f < 7; ++f) store(contactRunFields[f], f < 4 ? head[f] : tail[f - 4]);
+    for (std::size_t i = 0; i < 2; ++i) {
+        Float4 anchors[4], values[4];
+        for (int k = 0; k < 4; ++k) {
+            anchors[k] = Float4::loadBytes(&contacts[k]->points[i].anchorA);
+            values[k] = Float4::loadBytes(&contacts[k]->points[i].separation);
+        }
+        simd::transpose(anchors);
+        simd::transpose(values);
+        // No manifold point: zeros, as gatherRows writes them.
+        const auto point = Float4::load(present[i]) > Float4(0.0f);
+        for (std::size_t f = 0; f < 7; ++f)
+            store(offsetof(Rows, points) + i * sizeof(PointRows) + pointRunFields[f], simd::select(point, f < 4 ? anchors[f] : values[f - 4], Float4(0.0f)));
+    }
 }
+
+// The lanes' contacts, or for an empty lane a contact of zeros.
+template <std::size_t lanes>
+void laneContacts(const World::Impl& w, const ContactConstraint* const (&constraints)[lanes], int used, const Contact* (&contacts)[lanes]) {
+    static const Contact none{};
+    for (std::size_t lane = 0; lane < lanes; ++lane)
+        contacts[lane] = static_cast<int>(lane) < used ? &w.contactCache.contacts[constraints[lane]->contact] : &none;
+}
+
+// What a contact does not hold as floats in a row: the bodies' 1/I, whether its anchors turn.
+template <std::size_t lanes>
+void gatherOtherFields(const World::Impl& w, const ContactConstraint* const (&constraints)[lanes], const Contact* const (&contacts)[lanes],
+                       int used, float* rows) {
+    using Rows = ContactRows<float>;
+    for (int lane = 0; lane < used; ++lane) {
+        const ContactConstraint& c = *constraints[lane];
+        const RowLane<lanes> at{rows + lane};
+        at.set(offsetof(Rows, invIA), w.scratch.inverseInertias[c.indexA]);
+        at.set(offsetof(Rows, invIB), w.scratch.inverseInertias[c.indexB]);
+        at.set(offsetof(Rows, turnsA), contacts[lane]->turnsA ? 1.0f : 0.0f);
+        at.set(offsetof(Rows, turnsB), contacts[lane]->turnsB ? 1.0f : 0.0f);
+    }
+}
+
+}  // namespace
+
+void gatherContactLanes(const World::Impl& w, const ContactConstraint* const (&constraints)[4], int used, ContactBlock& block,
+                        const float (&present)[2][4]) {
+    const Contact* contacts[4];
+    laneContacts(w, constraints, used, contacts);
+    gatherContactQuad(contacts, block.rowData(), present);
+    gatherOtherFields(w, constraints, contacts, used, block.rowData());
+}
+
+#ifdef PERPDOT_AVX2
+void gatherContactLanes(const World::Impl& w, const ContactConstraint* const (&constraints)[8], int used, ContactBlock8& block,
+                        const float (&present)[2][8]) {
+    const Contact* contacts[8];
+    laneContacts(w, constraints, used, contacts);
+    const float* head[8];
+    const float* points[2][8];
+    for (int lane = 0; lane < 8; ++lane) {
+        head[lane] = &contacts[lane]->friction;
+        for (int i = 0; i < 2; ++i) points[i][lane] = &contacts[lane]->points[i].anchorA.x;
+    }
+    gatherContactRows8(block, head, points, present);
+    gatherOtherFields(w, constraints, contacts, used, block.rowData());
+}
+#endif
 
 // The touching contacts with an awake body, in pool order, selected by the workers: their
 // contacts and bodies' solver slots. Their rows are prepared once their place is known: in a block

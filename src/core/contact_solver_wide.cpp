@@ -122,7 +122,7 @@ void sizeBlocks(StepScratch& s, std::vector<Block>& blocks) {
     blocks.resize(static_cast<size_t>(blockStart[overflow]));  // reused memory: every field is rewritten
 }
 
-// Blocks [begin, end) of colour `color`: each lane's contact values gathered straight into it,
+// Blocks [begin, end) of colour `color`: the lanes' contact values gathered into them four at a time,
 // then the block's rows derived lanes at once (contact_prepare.hpp).
 template <class Block>
 void layOutBlocks(World::Impl& w, const StepContext& ctx, std::vector<Block>& blocks, int color, int begin, int end) {
@@ -134,6 +134,7 @@ void layOutBlocks(World::Impl& w, const StepContext& ctx, std::vector<Block>& bl
         const int position = colorStart + width * b;  // of the lanes' constraints in contactOrder
         const int lanes = std::min(width, colorEnd - position);
         alignas(32) float present[2][width];  // 1 where a lane's point is a manifold point
+        const ContactConstraint* constraints[width];
         const int* order = &s.contactOrder[position];
         // The lanes' contacts lie anywhere in the pool: the next block's (the constraints right
         // after these in contactOrder) load while this block gathers, and this block's own were
@@ -148,8 +149,9 @@ void layOutBlocks(World::Impl& w, const StepContext& ctx, std::vector<Block>& bl
             block.bodyA[lane] = used ? c->indexA : 0;  // an empty lane: the static slot
             block.bodyB[lane] = used ? c->indexB : 0;
             for (int i = 0; i < 2; ++i) present[i][lane] = used && i < c->pointCount ? 1.0f : 0.0f;
-            if (used) gatherContactLane(w, *c, block.rowData() + lane, width);
+            constraints[lane] = c;
         }
+        gatherContactLanes(w, constraints, lanes, block, present);
         deriveBlock(w, ctx, block, present);
         block.uses = rowUses(block.rowData(), width, lanes);
         // An empty lane: no mass, no impulse, nothing at all.

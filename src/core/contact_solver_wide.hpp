@@ -307,6 +307,21 @@ constexpr std::size_t pointField(int point, std::size_t memberOffset) {
            sizeof(float);
 }
 
+// Where a block's gather (gatherContactLanes, contact_prepare.hpp) puts the runs of floats it
+// reads from each contact, field by field (an offset in ContactRows<float>): the seven of the run
+// from its friction (friction, restitution, rolling resistance, tangent speed, rolling impulse,
+// normal), and the seven of the run from a point's anchor A (anchors A and B, separation, normal
+// and tangent impulses), zero where the point is not a manifold point.
+inline constexpr std::size_t contactRunFields[7] = {
+    offsetof(ContactRows<float>, friction),      offsetof(ContactRows<float>, restitution),    offsetof(ContactRows<float>, rollingResistance),
+    offsetof(ContactRows<float>, tangentSpeed),  offsetof(ContactRows<float>, rollingImpulse), offsetof(ContactRows<float>, normal),
+    offsetof(ContactRows<float>, normal) + sizeof(float)};
+inline constexpr std::size_t pointRunFields[7] = {
+    offsetof(ContactPointRows<float>, anchorA),        offsetof(ContactPointRows<float>, anchorA) + sizeof(float),
+    offsetof(ContactPointRows<float>, anchorB),        offsetof(ContactPointRows<float>, anchorB) + sizeof(float),
+    offsetof(ContactPointRows<float>, baseSeparation), offsetof(ContactPointRows<float>, normalImpulse),
+    offsetof(ContactPointRows<float>, tangentImpulse)};
+
 // Four constraints of one graph colour (no two share a dynamic body) as the lanes of one row set.
 struct ContactBlock {
     static constexpr int lanes = 4;
@@ -340,8 +355,13 @@ int chooseContactLanes();
 // The eight-lane rows (src/core/avx2/contact_solver_avx2.cpp, built where PERPDOT_AVX2 is defined):
 // contactRows8 is one pass over blocks [begin, end), as contactRows is over four-lane blocks;
 // deriveContactRows8 is deriveContactRows on a block's lanes, its bodies' velocities without contacts
-// in freeVelocities (by solver slot).
+// in freeVelocities (by solver slot); gatherContactRows8 writes a block's contact values, each
+// lane's from two runs of eight floats of its contact: `head` (friction, restitution, rolling
+// resistance, tangent speed, rolling impulse, normal, and the point count, unused) and `points[i]`
+// (anchor A, anchor B, separation, normal and tangent impulses, and the largest push, unused), the
+// point's fields zero where present[i] is 0 (contact_solver.cpp lays a contact out so).
 void deriveContactRows8(ContactBlock8& block, const BodyState* freeVelocities, const float (&present)[2][8], const StepContext& ctx);
+void gatherContactRows8(ContactBlock8& block, const float* const (&head)[8], const float* const (&points)[2][8], const float (&present)[2][8]);
 void contactRows8(ContactBlock8* blocks, int begin, int end, BodyState* states, const SubstepForces* forces, const StepContext& ctx,
                   RowPass pass);
 

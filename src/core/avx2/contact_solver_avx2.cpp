@@ -17,27 +17,40 @@ using simd::Float8;
 
 namespace {
 
-// Each body's state (v.x, v.y, ω, Δp.x, Δp.y, Δq.c, Δq.s, 1/m: body_lanes.hpp) as an aligned row
-// of eight floats, then the 8x8 transpose: unpack pairs of rows, shuffle quads, swap halves.
-[[gnu::always_inline]] inline BodyLanes<Float8> gatherBodies8(const BodyState* states, const int (&slots)[8]) {
-    static_assert(sizeof(BodyState) == 8 * sizeof(float) && alignof(BodyState) == 32);
-    __m256 row[8];
-    for (int i = 0; i < 8; ++i) row[i] = _mm256_load_ps(reinterpret_cast<const float*>(&states[slots[i]]));
-    __m256 pairs[8], quads[8];
+// Eight rows of eight floats turned into eight lanes, field f of row i into lane i of field(f): the
+// 8x8 transpose, unpack pairs of rows, shuffle quads, swap halves.
+struct Transposed8 {
+    __m256 quads[8];
+    // Field f < 4 is the low halves of quads[f] (rows 0-3) and quads[f + 4] (rows 4-7); f ≥ 4 the high ones.
+    [[gnu::always_inline]] Float8 field(int f) const {
+        return Float8(f < 4 ? _mm256_permute2f128_ps(quads[f], quads[f + 4], 0x20) : _mm256_permute2f128_ps(quads[f - 4], quads[f], 0x31));
+    }
+};
+
+[[gnu::always_inline]] inline Transposed8 transpose8(const __m256 (&row)[8]) {
+    __m256 pairs[8];
+    Transposed8 t;
     for (int i = 0; i < 8; i += 2) {
         pairs[i] = _mm256_unpacklo_ps(row[i], row[i + 1]);
         pairs[i + 1] = _mm256_unpackhi_ps(row[i], row[i + 1]);
     }
     for (int i = 0; i < 8; i += 4) {
-        quads[i] = _mm256_shuffle_ps(pairs[i], pairs[i + 2], 0x44);
-        quads[i + 1] = _mm256_shuffle_ps(pairs[i], pairs[i + 2], 0xEE);
-        quads[i + 2] = _mm256_shuffle_ps(pairs[i + 1], pairs[i + 3], 0x44);
-        quads[i + 3] = _mm256_shuffle_ps(pairs[i + 1], pairs[i + 3], 0xEE);
+        t.quads[i] = _mm256_shuffle_ps(pairs[i], pairs[i + 2], 0x44);
+        t.quads[i + 1] = _mm256_shuffle_ps(pairs[i], pairs[i + 2], 0xEE);
+        t.quads[i + 2] = _mm256_shuffle_ps(pairs[i + 1], pairs[i + 3], 0x44);
+        t.quads[i + 3] = _mm256_shuffle_ps(pairs[i + 1], pairs[i + 3], 0xEE);
     }
-    // Field f < 4 is the low halves of quads[f] (bodies 0-3) and quads[f + 4] (bodies 4-7); f ≥ 4 the high ones.
-    auto field = [&](int f) {
-        return Float8(f < 4 ? _mm256_permute2f128_ps(quads[f], quads[f + 4], 0x20) : _mm256_permute2f128_ps(quads[f - 4], quads[f], 0x31));
-    };
+    return t;
+}
+
+// Each body's state (v.x, v.y, ω, Δp.x, Δp.y, Δq.c, Δq.s, 1/m: body_lanes.hpp) as an aligned row
+// of eight floats, turned into lanes.
+[[gnu::always_inline]] inline BodyLanes<Float8> gatherBodies8(const BodyState* states, const int (&slots)[8]) {
+    static_assert(sizeof(BodyState) == 8 * sizeof(float) && alignof(BodyState) == 32);
+    __m256 row[8];
+    for (int i = 0; i < 8; ++i) row[i] = _mm256_load_ps(reinterpret_cast<const float*>(&states[slots[i]]));
+    const Transposed8 t = transpose8(row);
+    auto field = [&](int f) { return t.field(f); };
     return {{field(0), field(1)}, field(2), {field(3), field(4)}, {field(5), field(6)}, field(7)};
 }
 
@@ -56,6 +69,23 @@ namespace {
 }
 
 }  // namespace
+
+void gatherContactRows8(ContactBlock8& block, const float* const (&head)[8], const float* const (&points)[2][8], const float (&present)[2][8]) {
+    using Rows = ContactRows<float>;
+    using PointRows = ContactPointRows<float>;
+    auto store = [&](std::size_t offset, Float8 value) { _mm256_store_ps(block.rows + offset / sizeof(float) * 8, value.v); };
+    __m256 row[8];
+    for (int k = 0; k < 8; ++k) row[k] = _mm256_loadu_ps(head[k]);
+    const Transposed8 h = transpose8(row);
+    for (int f = 0; f < 7; ++f) store(contactRunFields[f], h.field(f));
+    for (std::size_t i = 0; i < 2; ++i) {
+        for (int k = 0; k < 8; ++k) row[k] = _mm256_loadu_ps(points[i][k]);
+        const Transposed8 p = transpose8(row);
+        const auto point = Float8(_mm256_loadu_ps(present[i])) > Float8(0.0f);
+        for (int f = 0; f < 7; ++f)
+            store(offsetof(Rows, points) + i * sizeof(PointRows) + pointRunFields[f], simd::select(point, p.field(f), Float8(0.0f)));
+    }
+}
 
 void deriveContactRows8(ContactBlock8& block, const BodyState* freeVelocities, const float (&present)[2][8], const StepContext& ctx) {
     const BodyLanes<Float8> a = gatherBodies8(freeVelocities, block.bodyA);
