@@ -122,8 +122,8 @@ void sizeBlocks(StepScratch& s, std::vector<Block>& blocks) {
     blocks.resize(static_cast<size_t>(blockStart[overflow]));  // reused memory: every field is rewritten
 }
 
-// Blocks [begin, end) of colour `color`: the lanes' contact values gathered into them four at a time,
-// then the block's rows derived lanes at once (contact_prepare.hpp).
+// Blocks [begin, end) of colour `color`: the lanes' contact values gathered into them four or eight
+// at a time (gatherContactLanes), then the block's rows derived lanes at once (contact_prepare.hpp).
 template <class Block>
 void layOutBlocks(World::Impl& w, const StepContext& ctx, std::vector<Block>& blocks, int color, int begin, int end) {
     constexpr int width = Block::lanes;
