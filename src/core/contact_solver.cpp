@@ -2,6 +2,7 @@
 // masses and the approach speeds restitution reads. Their rows (the substeps' passes and, after them,
 // restitution) are in contact_solver_wide.{hpp,cpp}.
 #include <cstddef>
+#include <cstring>
 
 #include "core/contact_prepare.hpp"
 #include "core/world_impl.hpp"
@@ -24,54 +25,9 @@ BodyState velocityWithoutContact(const World::Impl& w, const StepContext& ctx, i
     return s;
 }
 
-// The contact's values of constraint c's rows, gathered field by field into `rows` (row_lanes.hpp:
-// its own rows, lanes = 1, or its lane of a block), as deriveContactRows (contact_solver_wide.hpp)
-// takes them: the separation in baseSeparation, last step's impulses as they were, zeros for no
-// manifold point. With deriveContactRows every field is written: a reused block or slot keeps
-// nothing old.
-template <std::size_t lanes>
-void gatherRows(const World::Impl& w, const ContactConstraint& c, RowLane<lanes> rows) {
-    using Rows = ContactRows<float>;
-    using PointRows = ContactPointRows<float>;
-    const Contact& contact = w.contactCache.contacts[c.contact];
-    rows.set(offsetof(Rows, invIA), w.scratch.inverseInertias[c.indexA]);
-    rows.set(offsetof(Rows, invIB), w.scratch.inverseInertias[c.indexB]);
-    rows.set(offsetof(Rows, normal), contact.normal);
-    rows.set(offsetof(Rows, friction), contact.friction);
-    rows.set(offsetof(Rows, restitution), contact.restitution);
-    rows.set(offsetof(Rows, rollingResistance), contact.rollingResistance);
-    rows.set(offsetof(Rows, tangentSpeed), contact.tangentSpeed);
-    rows.set(offsetof(Rows, rollingImpulse), contact.rollingImpulse);
-    rows.set(offsetof(Rows, turnsA), contact.turnsA ? 1.0f : 0.0f);
-    rows.set(offsetof(Rows, turnsB), contact.turnsB ? 1.0f : 0.0f);
-    for (int i = 0; i < 2; ++i) {
-        const std::size_t point = offsetof(Rows, points) + static_cast<std::size_t>(i) * sizeof(PointRows);
-        if (i >= contact.pointCount) {
-            for (std::size_t field = 0; field < sizeof(PointRows); field += sizeof(float)) rows.set(point + field, 0.0f);
-            continue;
-        }
-        const ContactPointState& p = contact.points[i];
-        rows.set(point + offsetof(PointRows, anchorA), p.anchorA);
-        rows.set(point + offsetof(PointRows, anchorB), p.anchorB);
-        rows.set(point + offsetof(PointRows, baseSeparation), p.separation);
-        rows.set(point + offsetof(PointRows, normalImpulse), p.normalImpulse);
-        rows.set(point + offsetof(PointRows, tangentImpulse), p.tangentImpulse);
-    }
-}
-
-}  // namespace
-
-void prepareContactRows(const World::Impl& w, const StepContext& ctx, const ContactConstraint& c, ContactRows<float>& rows) {
-    gatherRows<1>(w, c, {floatsOf(rows)});
-    const float present[2] = {c.pointCount > 0 ? 1.0f : 0.0f, c.pointCount > 1 ? 1.0f : 0.0f};
-    deriveContactRows(rows, w.scratch.freeVelocities[c.indexA], w.scratch.freeVelocities[c.indexB], present, ctx);
-}
-
-namespace {
-
-// The contact's values gatherRows writes one by one, as a block's lanes read them: runs of four
-// (or eight: the point count and the largest push come along unused) floats of four (eight) contacts
-// turned into lanes.
+// A contact's two runs of floats the rows take (contactRunFields, pointRunFields): a block reads
+// them four or eight contacts at a time (the point count and the largest push come along unused)
+// and turns them into lanes.
 static_assert(offsetof(Contact, restitution) == offsetof(Contact, friction) + 4 && offsetof(Contact, rollingResistance) == offsetof(Contact, friction) + 8 &&
                   offsetof(Contact, tangentSpeed) == offsetof(Contact, friction) + 12 && offsetof(Contact, rollingImpulse) == offsetof(Contact, friction) + 16 &&
                   offsetof(Contact, normal) == offsetof(Contact, friction) + 20 && offsetof(Contact, pointCount) == offsetof(Contact, friction) + 28,
@@ -79,6 +35,55 @@ static_assert(offsetof(Contact, restitution) == offsetof(Contact, friction) + 4 
 static_assert(offsetof(ContactPointState, anchorB) == 8 && offsetof(ContactPointState, separation) == 16 &&
                   offsetof(ContactPointState, normalImpulse) == 20 && offsetof(ContactPointState, tangentImpulse) == 24,
               "anchors | separation, normal and tangent impulses, largest push");
+
+// What a contact does not hold as floats in a row: the bodies' 1/I, whether its anchors turn.
+template <std::size_t lanes>
+void gatherOtherFields(const World::Impl& w, const ContactConstraint* const (&constraints)[lanes], const Contact* const (&contacts)[lanes],
+                       int used, float* rows) {
+    using Rows = ContactRows<float>;
+    for (int lane = 0; lane < used; ++lane) {
+        const ContactConstraint& c = *constraints[lane];
+        const RowLane<lanes> at{rows + lane};
+        at.set(offsetof(Rows, invIA), w.scratch.inverseInertias[c.indexA]);
+        at.set(offsetof(Rows, invIB), w.scratch.inverseInertias[c.indexB]);
+        at.set(offsetof(Rows, turnsA), contacts[lane]->turnsA ? 1.0f : 0.0f);
+        at.set(offsetof(Rows, turnsB), contacts[lane]->turnsB ? 1.0f : 0.0f);
+    }
+}
+
+// One constraint's rows from its contact, as deriveContactRows (contact_solver_wide.hpp) takes
+// them: the fields of its two runs of floats where a block's gather puts them (contactRunFields,
+// pointRunFields: the separation in baseSeparation, last step's impulses as they were, zeros for
+// no manifold point), and the others (gatherOtherFields). With deriveContactRows every field is
+// written: a reused slot keeps nothing old.
+void gatherRows(const World::Impl& w, const ContactConstraint& c, ContactRows<float>& out) {
+    using Rows = ContactRows<float>;
+    using PointRows = ContactPointRows<float>;
+    float* rows = floatsOf(out);
+    const Contact& contact = w.contactCache.contacts[c.contact];
+    const auto* bytes = reinterpret_cast<const char*>(&contact);
+    float run[8];
+    std::memcpy(run, bytes + offsetof(Contact, friction), sizeof run);
+    for (std::size_t f = 0; f < 7; ++f) rows[contactRunFields[f] / sizeof(float)] = run[f];
+    for (std::size_t i = 0; i < 2; ++i) {
+        std::memcpy(run, bytes + offsetof(Contact, points) + i * sizeof(ContactPointState), sizeof run);
+        const bool point = static_cast<int>(i) < contact.pointCount;
+        for (std::size_t f = 0; f < 7; ++f) rows[(offsetof(Rows, points) + i * sizeof(PointRows) + pointRunFields[f]) / sizeof(float)] = point ? run[f] : 0.0f;
+    }
+    const ContactConstraint* const constraints[1] = {&c};
+    const Contact* const contacts[1] = {&contact};
+    gatherOtherFields(w, constraints, contacts, 1, rows);
+}
+
+}  // namespace
+
+void prepareContactRows(const World::Impl& w, const StepContext& ctx, const ContactConstraint& c, ContactRows<float>& rows) {
+    gatherRows(w, c, rows);
+    const float present[2] = {c.pointCount > 0 ? 1.0f : 0.0f, c.pointCount > 1 ? 1.0f : 0.0f};
+    deriveContactRows(rows, w.scratch.freeVelocities[c.indexA], w.scratch.freeVelocities[c.indexB], present, ctx);
+}
+
+namespace {
 
 // A block's four lanes from four contacts (an empty lane's: a contact of zeros), given whether
 // each lane's points are manifold points.
@@ -116,21 +121,6 @@ void laneContacts(const World::Impl& w, const ContactConstraint* const (&constra
     static const Contact none{};
     for (std::size_t lane = 0; lane < lanes; ++lane)
         contacts[lane] = static_cast<int>(lane) < used ? &w.contactCache.contacts[constraints[lane]->contact] : &none;
-}
-
-// What a contact does not hold as floats in a row: the bodies' 1/I, whether its anchors turn.
-template <std::size_t lanes>
-void gatherOtherFields(const World::Impl& w, const ContactConstraint* const (&constraints)[lanes], const Contact* const (&contacts)[lanes],
-                       int used, float* rows) {
-    using Rows = ContactRows<float>;
-    for (int lane = 0; lane < used; ++lane) {
-        const ContactConstraint& c = *constraints[lane];
-        const RowLane<lanes> at{rows + lane};
-        at.set(offsetof(Rows, invIA), w.scratch.inverseInertias[c.indexA]);
-        at.set(offsetof(Rows, invIB), w.scratch.inverseInertias[c.indexB]);
-        at.set(offsetof(Rows, turnsA), contacts[lane]->turnsA ? 1.0f : 0.0f);
-        at.set(offsetof(Rows, turnsB), contacts[lane]->turnsB ? 1.0f : 0.0f);
-    }
 }
 
 }  // namespace

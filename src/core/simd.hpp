@@ -24,7 +24,6 @@ namespace perpdot::simd {
 inline float min(float a, float b) { return a < b ? a : b; }
 inline float max(float a, float b) { return a > b ? a : b; }
 inline float select(bool mask, float ifTrue, float ifFalse) { return mask ? ifTrue : ifFalse; }
-inline bool noLane(bool mask) { return !mask; }
 inline float sqrt(float a) { return std::sqrt(a); }
 
 #ifdef PERPDOT_SSE2

@@ -42,7 +42,6 @@ inline Float8 min(Float8 a, Float8 b) { return Float8(_mm256_min_ps(a.v, b.v)); 
 inline Float8 max(Float8 a, Float8 b) { return Float8(_mm256_max_ps(a.v, b.v)); }
 inline Float8 sqrt(Float8 a) { return Float8(_mm256_sqrt_ps(a.v)); }
 inline Float8 select(Mask8 mask, Float8 ifTrue, Float8 ifFalse) { return Float8(_mm256_blendv_ps(ifFalse.v, ifTrue.v, mask.m)); }
-inline bool noLane(Mask8 mask) { return _mm256_movemask_ps(mask.m) == 0; }
 
 }  // namespace
 }  // namespace perpdot::simd
