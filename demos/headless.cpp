@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "camera.hpp"
+#include "player_mover.hpp"
 #include "perpdot/crosscheck.hpp"
 #include "perpdot/error.hpp"
 #include "perpdot/feature_scenes.hpp"
@@ -101,7 +102,7 @@ int runHeadless(const Options& options) {
     }
 
     setenv("SDL_VIDEODRIVER", "dummy", 0);  // no display needed; keep a driver the user chose
-    SdlSession sdl(SDL_INIT_VIDEO);
+    SdlLibrary sdl(SDL_INIT_VIDEO);
     if (!sdl.ok) {
         std::fprintf(stderr, "perpdot-demo: SDL_Init failed: %s\n", SDL_GetError());
         return 1;
@@ -116,19 +117,26 @@ int runHeadless(const Options& options) {
 
     SceneWorld sw = buildWorldWithBehaviour(scene);
     const SceneBehaviour* behaviour = findSceneBehaviour(scene.name);
-    const Camera camera = fitCamera(sw.world, width, height);
+    // A scene with a character mover gets one, walked right by the autopilot (the window's keys).
+    PlayerMover mover;
+    if (behaviour && behaviour->mover) mover.place(sw.world, behaviour->mover->def, behaviour->mover->start);
+    Camera camera = fitCamera(sw.world, width, height);
     double stepSeconds = 0.0;
     for (int frame = 0; frame < options.frames; ++frame) {
         if (frame > 0) {
             const auto start = std::chrono::steady_clock::now();
-            for (int k = 0; k < options.every; ++k) sw.step();
+            for (int k = 0; k < options.every; ++k) {
+                sw.step();
+                mover.autopilot(scene.timestep);
+                mover.move(sw.world, scene.timestep);
+            }
             stepSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         }
+        followCamera(sw.world, camera);
         drawWorld(renderer.get(), sw.world, camera, options.draw);
-        if (behaviour && behaviour->draw) {
-            SdlDraw draw(renderer.get(), camera);
-            behaviour->draw(sw, draw);
-        }
+        SdlDraw draw(renderer.get(), camera);
+        if (behaviour && behaviour->draw) behaviour->draw(sw, draw);
+        if (mover.active()) mover.draw(draw);
         SDL_RenderFlush(renderer.get());
         const std::string path = framePath(dir, frame);
         if (IMG_SavePNG(target.get(), path.c_str()) != 0) {
@@ -147,6 +155,11 @@ int runHeadless(const Options& options) {
                 "contact_sheet.png\n",
                 scene.name.c_str(), options.frames, steps, steps * scene.timestep,
                 steps > 0 ? 1000.0 * stepSeconds / steps : 0.0, dir.c_str(), options.frames - 1);
+    if (mover.active()) {
+        const Vec2 at = mover.state().position;
+        std::printf("character mover: walked from (%.2f, %.2f) to (%.2f, %.2f)\n", behaviour->mover->start.x,
+                    behaviour->mover->start.y, at.x, at.y);
+    }
     if (options.crosscheck && steps > 0) printCrosscheck(scene, steps);
     return 0;
 }

@@ -29,6 +29,12 @@ void PlayerMover::move(World& world, float dt) {
     jump_ = false;
 }
 
+void PlayerMover::autopilot(float dt) {
+    if (!state_) return;
+    right_ = true;
+    jump_ = state_->grounded && state_->lastDisplacement.x < 0.5f * walkSpeed * dt;
+}
+
 void PlayerMover::draw(DebugDraw& draw) const {
     if (!state_) return;
     const Vec2 feet = state_->position - Vec2{0.0f, def_.halfHeight + def_.radius};

@@ -26,6 +26,8 @@ public:
     bool handleKey(SDL_Keycode key, bool down);
     // One frame of the mover, after World::step(dt).
     void move(World& world, float dt);
+    // Headless runs: walk right, and jump where the last frame's walk was blocked (a step, a box).
+    void autopilot(float dt);
     // The feet: green while grounded, grey in the air.
     void draw(DebugDraw& draw) const;
 

@@ -18,12 +18,12 @@ using RendererPtr = std::unique_ptr<SDL_Renderer, SdlDeleter>;
 using SurfacePtr = std::unique_ptr<SDL_Surface, SdlDeleter>;
 
 // SDL_Init / SDL_Quit for the lifetime of the object.
-struct SdlSession {
+struct SdlLibrary {
     bool ok;
-    explicit SdlSession(Uint32 flags) : ok(SDL_Init(flags) == 0) {}
-    ~SdlSession() { SDL_Quit(); }
-    SdlSession(const SdlSession&) = delete;
-    SdlSession& operator=(const SdlSession&) = delete;
+    explicit SdlLibrary(Uint32 flags) : ok(SDL_Init(flags) == 0) {}
+    ~SdlLibrary() { SDL_Quit(); }
+    SdlLibrary(const SdlLibrary&) = delete;
+    SdlLibrary& operator=(const SdlLibrary&) = delete;
 };
 
 }  // namespace perpdot::demo

@@ -231,7 +231,7 @@ void Viewer::render() {
     SDL_RenderPresent(renderer_);
 }
 
-ImGuiSession::ImGuiSession(SDL_Window* window, SDL_Renderer* renderer) {
+ImGuiLayer::ImGuiLayer(SDL_Window* window, SDL_Renderer* renderer) {
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini in the user's directory
@@ -240,14 +240,14 @@ ImGuiSession::ImGuiSession(SDL_Window* window, SDL_Renderer* renderer) {
     ImGui_ImplSDLRenderer_Init(renderer);
 }
 
-ImGuiSession::~ImGuiSession() {
+ImGuiLayer::~ImGuiLayer() {
     ImGui_ImplSDLRenderer_Shutdown();
     ImGui_ImplSDL2_Shutdown();
     ImGui::DestroyContext();
 }
 
 int runViewer(const Options& options) {
-    SdlSession sdl(SDL_INIT_VIDEO | SDL_INIT_TIMER);
+    SdlLibrary sdl(SDL_INIT_VIDEO | SDL_INIT_TIMER);
     if (!sdl.ok) {
         std::fprintf(stderr, "perpdot-demo: cannot open a display (%s); try --headless\n", SDL_GetError());
         return 1;
@@ -266,7 +266,7 @@ int runViewer(const Options& options) {
         std::fprintf(stderr, "perpdot-demo: cannot create a renderer: %s\n", SDL_GetError());
         return 1;
     }
-    ImGuiSession imgui(window.get(), renderer.get());
+    ImGuiLayer imgui(window.get(), renderer.get());
     try {
         Viewer viewer(options, renderer.get());
         return viewer.run();

@@ -100,11 +100,11 @@ private:
 };
 
 // ImGui context and its two SDL backends, for the lifetime of the object.
-struct ImGuiSession {
-    ImGuiSession(SDL_Window* window, SDL_Renderer* renderer);
-    ~ImGuiSession();
-    ImGuiSession(const ImGuiSession&) = delete;
-    ImGuiSession& operator=(const ImGuiSession&) = delete;
+struct ImGuiLayer {
+    ImGuiLayer(SDL_Window* window, SDL_Renderer* renderer);
+    ~ImGuiLayer();
+    ImGuiLayer(const ImGuiLayer&) = delete;
+    ImGuiLayer& operator=(const ImGuiLayer&) = delete;
 };
 
 // Opens the window and runs a Viewer in it. Returns the exit status.

@@ -162,7 +162,7 @@ TEST(Allocation, ThreadedStepsAllocateNothing) {
 TEST(Allocation, RicochetingBulletsAllocateNothing) {
     World world(WorldDef{.gravity = {0.0f, 0.0f}, .enableSleep = false});
     const BodyId walls = world.createBody({});
-    world.createShape(walls, {}, Chain{{{-2.0f, -2.0f}, {-2.0f, 2.0f}, {2.0f, 2.0f}, {2.0f, -2.0f}}, true});
+    world.createShape(walls, {}, Chain{{{-2.0f, -2.0f}, {-2.0f, 2.0f}, {2.0f, 2.0f}, {2.0f, -2.0f}}, true, ChainSide::Left});
     for (int k = 0; k < 12; ++k) {
         const float a = 0.7f + 0.5f * static_cast<float>(k);
         const BodyId bullet = world.createBody({.type = BodyType::Dynamic,

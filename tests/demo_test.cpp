@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -189,6 +190,48 @@ TEST(DemoHeadless, BodyIsDrawnWhereTheWorldSaysItIs) {
         expectColorNear(image.at(int(beside.x), int(beside.y)), backgroundColor, "1.2 m left of the box");
     }
     fs::remove_all(dir);
+}
+
+// The headless demo gives mover_course its character mover and walks it right: it must cross
+// the course's first obstacles (more than 10 m from its start).
+TEST(DemoHeadless, MoverCourseHasAWalkingCharacter) {
+    const fs::path dir = tempDir();
+    const DemoRun run = runDemo("--headless mover_course --frames 10 --every 30 --size 160x100 --no-crosscheck --out '" +
+                                dir.string() + "'");
+    ASSERT_EQ(run.status, 0) << run.output;
+    float fromX = 0, fromY = 0, toX = 0, toY = 0;
+    const size_t at = run.output.find("character mover: walked from");
+    ASSERT_NE(at, std::string::npos) << run.output;
+    ASSERT_EQ(std::sscanf(run.output.c_str() + at, "character mover: walked from (%f, %f) to (%f, %f)", &fromX, &fromY, &toX, &toY), 4)
+        << run.output;
+    EXPECT_GT(toX - fromX, 10.0f) << run.output;
+    fs::remove_all(dir);
+}
+
+// The camera follows a scene whose bodies leave the fitted view (the car drives 40 m) and keeps
+// the fitted camera of one whose bodies stay in it (single_box).
+TEST(DemoCamera, FollowsTheCarAndKeepsAStillScenesFraming) {
+    SceneWorld car = buildWorld(findScene("car"));
+    Camera camera = fitCamera(car.world, 320, 200);
+    size_t chassis = 0;
+    while (car.scene.bodies[chassis].name != "chassis") ++chassis;
+    for (int step = 0; step < car.scene.steps; ++step) {
+        car.step();
+        followCamera(car.world, camera);
+        const Vec2 p = camera.toScreen(car.world.worldCenter(car.bodies[chassis]));
+        ASSERT_TRUE(p.x >= 0 && p.x <= 320 && p.y >= 0 && p.y <= 200) << "step " << step;
+    }
+    EXPECT_TRUE(camera.following);
+
+    SceneWorld still = buildWorld(findScene("single_box"));
+    const Camera fitted = fitCamera(still.world, 320, 240);
+    Camera camera2 = fitted;
+    for (int step = 0; step < 300; ++step) {
+        still.step();
+        followCamera(still.world, camera2);
+    }
+    EXPECT_FALSE(camera2.following);
+    EXPECT_EQ(camera2.center, fitted.center);
 }
 
 // The feature scenes' behaviours run in the demo: the laser's beam, drawn by its SceneBehaviour

@@ -62,7 +62,7 @@ TEST(Capsule, DroppedFlatOnSegmentAndChainLandsOnTwoPoints) {
     a.createShape(addStatic(a, {}), {}, Segment{{-5, 0}, {5, 0}});
     expectFlatLanding(a);
     World b;
-    b.createShape(addStatic(b, {}), {}, Chain{{{5, 0}, {-5, 0}}});  // one-sided: solid above (right of v1→v2)
+    b.createShape(addStatic(b, {}), {}, Chain{{{5, 0}, {-5, 0}}, false, ChainSide::Left});  // one-sided: shapes collide from above
     expectFlatLanding(b);
 }
 

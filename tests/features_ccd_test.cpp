@@ -78,7 +78,7 @@ TEST(FeaturesContinuous, FastBallDoesNotTunnelAThinStaticSegment) {
 TEST(FeaturesContinuous, FastBallDoesNotTunnelAOneSidedChainFromItsFront) {
     // A chain listed right-to-left collides on top; the ball comes down at 300 m/s.
     World world;
-    world.createShape(features::addStatic(world, {}), {}, Chain{{{5.0f, 0.0f}, {0.0f, 0.0f}, {-5.0f, 0.0f}}});
+    world.createShape(features::addStatic(world, {}), {}, Chain{{{5.0f, 0.0f}, {0.0f, 0.0f}, {-5.0f, 0.0f}}, false, ChainSide::Left});
     const BodyId ball = features::addDynamic(world, {0.3f, 30.0f}, {0.0f, -300.0f});
     world.createShape(ball, {}, Circle{.radius = 0.1f});
     features::run(world, 120);
@@ -93,7 +93,7 @@ TEST(FeaturesContinuous, FastBoxSlidesAlongAChainFloorWithoutPausingAtSeams) {
     World world;
     std::vector<Vec2> floor;
     for (int i = 160; i >= -20; --i) floor.push_back({0.5f * static_cast<float>(i), 0.0f});  // right to left: top side
-    world.createShape(features::addStatic(world, {}), {.friction = 0.0f}, Chain{floor});
+    world.createShape(features::addStatic(world, {}), {.friction = 0.0f}, Chain{floor, false, ChainSide::Left});
     const BodyId box = features::addDynamic(world, {0.0f, 0.1f}, {30.0f, 0.0f});
     world.createShape(box, {.friction = 0.0f}, makeBox(0.1f, 0.1f));
     features::run(world, 10);
@@ -112,7 +112,7 @@ TEST(FeaturesContinuous, FastSpinningHexagonDoesNotTunnelAOneSidedChain) {
     int tunnelled = 0;
     for (int start = 0; start < 60; ++start) {
         World world({.gravity = {0.0f, 0.0f}});
-        world.createShape(features::addStatic(world, {}), {}, Chain{{{5.0f, 0.0f}, {0.0f, 0.0f}, {-5.0f, 0.0f}}});
+        world.createShape(features::addStatic(world, {}), {}, Chain{{{5.0f, 0.0f}, {0.0f, 0.0f}, {-5.0f, 0.0f}}, false, ChainSide::Left});
         const BodyId body = world.createBody({.type = BodyType::Dynamic,
                                               .position = {0.0f, 1.0f + 0.017f * static_cast<float>(start)},
                                               .angle = 0.1f * static_cast<float>(start),

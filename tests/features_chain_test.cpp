@@ -36,8 +36,8 @@ Slide slide(Floor kind) {
     const BodyId ground = features::addStatic(world, {});
     const ShapeDef floorDef{.friction = mu};
     if (kind == Floor::Chain) {
-        // Listed right to left: one-sided chain edges collide on the right of v1→v2, i.e. on top.
-        Chain floor;
+        // Listed right to left, solid on the left of v1→v2 (below): Box2D's own convention.
+        Chain floor{.solid = ChainSide::Left};
         for (float x = 30.0f; x >= -20.0f; x -= tileWidth) floor.vertices.push_back({x, 0.0f});
         world.createShape(ground, floorDef, floor);
     } else if (kind == Floor::Segments) {

@@ -47,6 +47,41 @@ TEST(FeaturesSensor, BallFallsThroughAZoneReportingEntryAndExitAndKeepsItsFreeFa
     EXPECT_EQ(world.contactCount(), 0);
 }
 
+// A trigger zone sees a kinematic body (a character mover, a moving platform) passing through it,
+// at the zone's faces; a kinematic body and a static one still make no contact.
+TEST(FeaturesSensor, AStaticZoneSeesAKinematicBodyPassAndKinematicMeetsStaticWithoutContact) {
+    World world({.gravity = {0.0f, 0.0f}});
+    const ShapeId zone = world.createShape(features::addStatic(world, {5.0f, 0.0f}), {.sensor = true}, makeBox(1.0f, 1.0f));
+    world.createShape(features::addStatic(world, {5.0f, 3.0f}), {}, makeBox(1.0f, 1.0f));  // a solid static box
+    const BodyId mover = world.createBody({.type = BodyType::Kinematic, .position = {0.0f, 0.0f}, .linearVelocity = {3.0f, 0.0f}});
+    const ShapeId hull = world.createShape(mover, {}, Circle{.radius = 0.25f});
+    const BodyId high = world.createBody({.type = BodyType::Kinematic, .position = {0.0f, 3.0f}, .linearVelocity = {3.0f, 0.0f}});
+    world.createShape(high, {}, Circle{.radius = 0.25f});
+    float entered = -1.0f, left = -1.0f;
+    for (int i = 0; i < 180; ++i) {
+        world.step(dt);
+        const float x = world.position(mover).x;
+        for (const SensorBeginTouchEvent& e : world.sensorEvents().beginEvents) {
+            EXPECT_EQ(e.sensorShape, zone);
+            EXPECT_EQ(e.visitorShape, hull);
+            EXPECT_LT(entered, 0.0f);
+            entered = x;
+        }
+        for (const SensorEndTouchEvent& e : world.sensorEvents().endEvents) {
+            EXPECT_EQ(e.visitorShape, hull);
+            left = x;
+        }
+        EXPECT_EQ(world.contactCount(), 0);  // the kinematic ball passes through the static box
+        EXPECT_EQ(world.position(high).y, 3.0f);
+    }
+    // Entered when its front (x + 0.25) crossed the zone's left face (x = 4): the overlap is
+    // tested at the start of a step and x read at its end, so up to two steps' 5 cm later.
+    EXPECT_GE(entered + 0.25f, 4.0f);
+    EXPECT_LE(entered + 0.25f, 4.101f);
+    EXPECT_GE(left - 0.25f, 6.0f);  // left when its back crossed the right face
+    EXPECT_LE(left - 0.25f, 6.101f);
+}
+
 TEST(FeaturesSensor, ShapesCanOptOutOfSensorEventsAndSensorsIgnoreSensors) {
     World world;
     world.createShape(features::addStatic(world, {0.0f, 5.0f}), {.sensor = true}, makeBox(2.0f, 1.0f));

@@ -1,4 +1,4 @@
-// The headline formula, tested directly through the engine (issue 13 item 7): Hecker's two-body
+// The headline formula, tested directly through the engine: Hecker's two-body
 // collision impulse
 //   j = -(1+e) v_rel·n / (1/mA + 1/mB + perpDot(rA,n)²/IA + perpDot(rB,n)²/IB)
 // on off-centre hits, then vA' = vA - j n/mA, ωA' = ωA - perpDot(rA, j n)/IA (and + for B);

@@ -52,6 +52,26 @@ echo "pkg-config --cflags --libs perpdot: $flags"
 # shellcheck disable=SC2086  # the flags are words
 $cxx -std=c++20 "$source/examples/quickstart/main.cpp" $flags -o "$work/quickstart_pkgconfig"
 "$work/quickstart_pkgconfig"
+# A game built with every warning as an error: designated initialisers that leave fields out
+# (GCC's -Wmissing-field-initializers) and the public headers compile clean.
+cat >"$work/wextra.cpp" <<'CPP'
+#include <perpdot/perpdot.hpp>
+int main() {
+    perpdot::World world(perpdot::WorldDef{.gravity = {0.0f, -10.0f}});
+    const perpdot::BodyId ground = world.createBody({.type = perpdot::BodyType::Static});
+    world.createShape(ground, {.friction = 0.8f}, perpdot::Segment{.v1 = {-5, 0}, .v2 = {5, 0}});
+    const perpdot::BodyId box = world.createBody({.type = perpdot::BodyType::Dynamic, .position = {0, 2}});
+    world.createShape(box, {.density = 2.0f}, perpdot::makeBox(0.5f, 0.5f));
+    const perpdot::BodyId wheel = world.createBody({.type = perpdot::BodyType::Dynamic, .position = {2, 2}});
+    world.createShape(wheel, {}, perpdot::Circle{.radius = 0.25f});
+    world.createJoint(perpdot::RevoluteJointDef{.bodyA = box, .bodyB = wheel, .enableLimit = true});
+    for (int i = 0; i < 120; ++i) world.step(1.0f / 60.0f);
+    return world.position(box).y < 1.0f ? 0 : 1;
+}
+CPP
+# shellcheck disable=SC2086  # the flags are words
+$cxx -std=c++20 -Wall -Wextra -Werror "$work/wextra.cpp" $flags -o "$work/wextra" || fail "-Wall -Wextra -Werror consumer"
+"$work/wextra" || fail "-Wextra consumer: the box did not fall to the ground"
 
 echo "== add_subdirectory, BUILD_SHARED_LIBS=ON"
 configure "$source/examples/quickstart" "$work/subdirectory" -DPERPDOT_SOURCE_DIR="$source" \

@@ -135,6 +135,56 @@ TEST(JointBreak, RefusesBadLimitsAndSurvivesASnapshot) {
     EXPECT_EQ(restored.jointEvents().breakEvents.size(), 1u);
 }
 
+// A one-step blow: an explosion-like impulse changes a 0.6 kg sign's velocity by 16 m/s; its weld
+// to a post stops it within the step, so the average force over the step is about m·16/h = 576 N
+// and a 60 N limit trips, although the last substep's reaction is far below the blow. Steady loads
+// below the limit (50 N sideways, beside the 6 N weight) never trip it.
+TEST(JointBreak, AOneStepBlowTripsALimitThatSteadyLoadsBelowItNeverDo) {
+    struct Sign {
+        World world{WorldDef{.enableSleep = false}};
+        BodyId sign;
+        JointId weld;
+        Sign() {
+            const BodyId post = world.createBody(test::bodyAt({0.0f, 5.0f}, BodyType::Static));
+            sign = test::addBox(world, {0.0f, 4.0f}, 0.3f, 0.5f, test::material(1.0f));
+            WeldJointDef def;
+            def.bodyA = post;
+            def.bodyB = sign;
+            def.localAnchorA = {0.0f, -0.5f};
+            def.localAnchorB = {0.0f, 0.5f};
+            weld = world.createJoint(def);
+            world.setJointBreakLimits(weld, 60.0f, never);
+        }
+    };
+    Sign blown;
+    const float m = blown.world.mass(blown.sign);
+    ASSERT_NEAR(m, 0.6f, 1e-5f);
+    test::run(blown.world, 30);
+    ASSERT_TRUE(blown.world.isValid(blown.weld));
+    blown.world.applyLinearImpulseToCenter(blown.sign, {m * 16.0f, 0.0f});
+    blown.world.step(dt);
+    ASSERT_EQ(blown.world.jointEvents().breakEvents.size(), 1u) << "the blow did not trip the limit";
+    const JointBreakEvent e = blown.world.jointEvents().breakEvents[0];
+    EXPECT_GT(length(e.force), 0.8f * m * 16.0f / dt);  // the blow is stopped within the step
+    EXPECT_LT(length(e.force), 1.5f * m * 16.0f / dt);  // the soft weld pulls it back a little too
+    EXPECT_FALSE(blown.world.isValid(blown.weld));
+
+    Sign steady;
+    for (int i = 0; i < 600; ++i) {
+        steady.world.applyForceToCenter(steady.sign, {50.0f, 0.0f});
+        steady.world.step(dt);
+        ASSERT_TRUE(steady.world.jointEvents().breakEvents.empty()) << "broke at step " << i;
+    }
+    Sign over;
+    int brokeAt = -1;
+    for (int i = 0; i < 10 && brokeAt < 0; ++i) {
+        over.world.applyForceToCenter(over.sign, {70.0f, 0.0f});
+        over.world.step(dt);
+        if (!over.world.jointEvents().breakEvents.empty()) brokeAt = i;
+    }
+    EXPECT_EQ(brokeAt, 0) << "70 N is over the limit from the first step";
+}
+
 // The built-in scene: hinges that break above 800 N; the settling deck alone pulls them up to about
 // 400 N, with the 80 kg anvil on it 1,560 N.
 TEST(JointBreak, TheBreakableBridgeSnapsUnderTheAnvil) {

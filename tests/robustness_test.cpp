@@ -173,8 +173,8 @@ TEST(ApiMisuse, InvalidDefinitionsAreRefused) {
     EXPECT_THROW(world.setSubsteps(0), Error);
     EXPECT_TRUE(world.shapes(body).empty());
     world.step(dt);
-    world.step(-1.0f);  // ignored, like a zero or NaN step
-    world.step(nan);
+    EXPECT_THROW(world.step(-1.0f), Error);  // refused, like a NaN or infinite step
+    EXPECT_THROW(world.step(nan), Error);
     EXPECT_TRUE(allFinite(world));
 }
 

@@ -86,7 +86,7 @@ TEST(Snapshot, RestoringAgainAndAgainLeavesNothingOfTheReplacedState) {
     };
     const Bytes pyramid = stepped("pyramid", 60), rain = stepped("rain", 90);
     World cup;  // a chain: one shape of many children, each its proxy
-    cup.createShape(cup.createBody({}), {}, Chain{{{-4, 4}, {-4, 0}, {0, -1}, {4, 0}, {4, 4}}, false});
+    cup.createShape(cup.createBody({}), {}, Chain{{{-4, 4}, {-4, 0}, {0, -1}, {4, 0}, {4, 4}}, false, ChainSide::Left});
     for (int i = 0; i < 5; ++i)
         cup.createShape(cup.createBody({.type = BodyType::Dynamic, .position = {-2.0f + static_cast<float>(i), 3}}), {}, Circle{{0, 0}, 0.3f});
     for (int i = 0; i < 40; ++i) cup.step(1.0f / 60.0f);

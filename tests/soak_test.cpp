@@ -1,6 +1,6 @@
 // Soak: a bucket that is fed new bodies and emptied of old ones every step, for 5,000 steps in CI
 // (PERPDOT_SOAK_STEPS=100000 for the full run of docs/reliability.md). Asserts no NaN ever, no
-// frozen body, and pools that stop growing: slots are reused, so memory is bounded.
+// frozen body, and pools whose size levels off: slots are reused, so memory is bounded.
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>

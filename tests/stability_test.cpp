@@ -1,8 +1,9 @@
 // Stacking stability of the soft-step solver: a 10-box column and a 20-row pyramid of 1 m boxes
 // stand for 10 s. Sleeping is off so that the solver, not the sleep logic, holds them up.
 //
-// Criteria (issue 2): the top box stays within 0.05 m of its rest position (where it is after 1 s
-// of settling), and no contact penetrates deeper than 0.01 m during the last 3 s.
+// Criteria: the top box stays within 0.05 m of its rest position (where it is after 1 s of
+// settling); during the last 3 s no two outlines overlap by more than 1 mm in the column and 5 mm
+// in the pyramid; the column rests no lower than built, the pyramid's top at most 1.5 cm lower.
 //
 // Penetration is measured on the boxes' own outlines: perpdot measures separations between the
 // true surfaces, less the 0.0005 m of Box2D's skin each polygon keeps as a rest gap, so two boxes
@@ -30,8 +31,6 @@ struct StandResult {
 
 // The rest gap of a polygon-polygon contact: the outlines overlap when separation < -gap.
 constexpr float gap = 2 * 0.0005f;
-// Issue 2's criterion: no contact penetrates deeper than this during the last 3 s.
-constexpr float maxPenetration = 0.01f;
 
 StandResult stand(World& world, BodyId top) {
     StandResult r;
@@ -60,10 +59,10 @@ TEST(Stability, VerticalStackOfTenBoxesStands) {
     for (int i = 0; i < 10; ++i) top = test::addBox(world, {0.0f, 0.5f + i}, 0.5f, 0.5f);
     const StandResult r = stand(world, top);
     EXPECT_LT(r.maxDrift, 0.05f);
-    EXPECT_GT(r.deepestLate + gap, -maxPenetration) << "separation " << r.deepestLate;
+    EXPECT_GT(r.deepestLate + gap, -0.001f) << "separation " << r.deepestLate;
     // It rests on the true surfaces: each of the 10 interfaces is the 1 mm rest gap less its
-    // compression (a few mm at the bottom, which carries nine boxes).
-    EXPECT_GE(r.rest.y, 9.5f - 10 * maxPenetration);
+    // compression, which never closes the gap (the column is a contact group solved directly).
+    EXPECT_GE(r.rest.y, 9.5f);
     EXPECT_LE(r.rest.y, 9.5f + 10 * gap);
 }
 
@@ -74,14 +73,16 @@ TEST(Stability, PyramidOfTwentyRowsStands) {
     ASSERT_EQ(boxes.size(), 210u);
     const StandResult r = stand(world, boxes.back());
     EXPECT_LT(r.maxDrift, 0.05f);
-    EXPECT_GT(r.deepestLate + gap, -maxPenetration) << "separation " << r.deepestLate;
-    EXPECT_GE(r.rest.y, 19.5f - 20 * maxPenetration);
+    EXPECT_GT(r.deepestLate + gap, -0.005f) << "separation " << r.deepestLate;
+    // 210 boxes are no contact group: solved row by row, the soft contacts under the pile sink.
+    EXPECT_GE(r.rest.y, 19.5f - 0.015f);
     EXPECT_LE(r.rest.y, 19.5f + 20 * gap);
 }
 
 // A column (30 boxes unless told) whose boxes start 0.1 mm and 0.03 mrad off true (fixed pattern), sleep off.
-// Returns the step at which the top box is more than 1 m off its column, or `steps` if never.
-int columnFallStep(const WorldDef& def, int steps, int boxes = 30) {
+// Returns the step at which the top box is more than `aside` off its column (1 m: toppled), or
+// `steps` if never.
+int columnFallStep(const WorldDef& def, int steps, int boxes = 30, float aside = 1.0f) {
     World world(def);
     test::addGround(world);
     BodyId top;
@@ -91,19 +92,17 @@ int columnFallStep(const WorldDef& def, int steps, int boxes = 30) {
     }
     for (int step = 0; step < steps; ++step) {
         world.step(dt);
-        // Toppled (the top box 1 m aside) or collapsed (the top box below half the column's
-        // height: a column that falls apart can leave it near the middle of the pile).
-        const Vec2 p = world.position(top);
-        if (std::fabs(p.x) > 1.0f || p.y < 0.5f * float(boxes)) return step;
+        if (std::fabs(world.position(top).x) > aside) return step;
     }
     return steps;
 }
 
 // The cause of tall stacks falling with rows solved one by one (docs/stress.md): a manifold rebuilt
 // every step turns its normal with the lower box and moves its points with the upper box's
-// corners, and the column's bending grows ×2.2 a second until it topples. Kept manifolds hold it
-// for a minute. A column of 30 is now a contact group solved directly (contact_groups.hpp) and
-// stands either way; one row more than a group may have keeps the finding.
+// corners, and the column's bending grows ×2.2 a second until it topples. Kept manifolds keep it
+// from toppling for a minute. A column of 30 is a contact group solved directly
+// (contact_groups.hpp) and stands either way; one row more than a group may have keeps the finding.
+// (Kept manifolds keep that taller column up, not straight: solved row by row it sags and leans.)
 TEST(Stability, TallColumnFallsOnlyWhenManifoldsAreRebuiltEveryStep) {
     WorldDef rebuilt = noSleep();
     rebuilt.contactReuseDistance = 0.0f;
@@ -115,8 +114,8 @@ TEST(Stability, TallColumnFallsOnlyWhenManifoldsAreRebuiltEveryStep) {
 TEST(Stability, ThirtyBoxColumnSolvedAsOneGroupStandsEvenWithManifoldsRebuiltEveryStep) {
     WorldDef rebuilt = noSleep();
     rebuilt.contactReuseDistance = 0.0f;
-    EXPECT_EQ(columnFallStep(rebuilt, 3600), 3600);
-    EXPECT_EQ(columnFallStep(noSleep(), 3600), 3600);
+    EXPECT_EQ(columnFallStep(rebuilt, 3600, 30, 0.05f), 3600);
+    EXPECT_EQ(columnFallStep(noSleep(), 3600, 30, 0.05f), 3600);
 }
 
 }  // namespace

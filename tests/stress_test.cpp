@@ -42,6 +42,11 @@ TEST(Stress, ProbesCatchBox2DsKnownFailures) {
     EXPECT_FALSE(bounce.pass) << bounce.figure;  // gains about 4 % a bounce
     const crosscheck::StressResult chain = crosscheck::runStress(*crosscheck::findStressCase("chain"), Engine::Box2D, true);
     EXPECT_FALSE(chain.pass) << chain.figure;  // the heavy chain comes apart
+    const crosscheck::StressResult heavy = crosscheck::runStress(*crosscheck::findStressCase("mass300"), Engine::Box2D, true);
+    EXPECT_FALSE(heavy.pass) << heavy.figure;  // the light box is crushed
+    const crosscheck::StressResult pile = crosscheck::runStress(*crosscheck::findStressCase("pyramid20"), Engine::Box2D, true);
+    EXPECT_FALSE(pile.pass) << pile.figure;  // the pyramid rises 0.3 m on its skins
+    EXPECT_NE(pile.figure.find("rose at most 0.2"), std::string::npos) << pile.figure;
 }
 
 TEST(Stress, BulletsCollideInPerpdotAndBox2D) {
@@ -76,9 +81,12 @@ TEST(Stress, CommandExitsZeroOnlyWhenEveryCasePasses) {
     const CliRun pass = perpdotStress("bullets tiles");
     EXPECT_EQ(pass.status, 0) << pass.out << pass.err;
     EXPECT_NE(pass.out.find("perpdot meets 2 of 2 criteria"), std::string::npos) << pass.out;
-    // box_rest passes once perpdot rests on true surfaces (issue 13): the status follows the verdict.
-    const CliRun rest = perpdotStress("box_rest --short");
-    EXPECT_EQ(rest.status, rest.out.find("FAIL") != std::string::npos ? 1 : 0) << rest.out;
+    // box_rest: perpdot rests on the true surfaces, so it passes and the command exits 0; the
+    // Box2D line is reported beside it.
+    const CliRun rest = perpdotStress("box_rest");
+    EXPECT_EQ(rest.status, 0) << rest.out;
+    EXPECT_NE(rest.out.find("box_rest   PASS"), std::string::npos) << rest.out;
+    EXPECT_NE(rest.out.find("perpdot meets 1 of 1 criteria"), std::string::npos) << rest.out;
     EXPECT_NE(rest.out.find("box2d:"), std::string::npos) << rest.out;
 }
 

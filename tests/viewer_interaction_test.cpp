@@ -25,13 +25,13 @@ class ViewerInteraction : public testing::Test {
 protected:
     void open(const std::string& scene) {
         setenv("SDL_VIDEODRIVER", "dummy", 1);
-        sdl_ = std::make_unique<SdlSession>(SDL_INIT_VIDEO | SDL_INIT_TIMER);
+        sdl_ = std::make_unique<SdlLibrary>(SDL_INIT_VIDEO | SDL_INIT_TIMER);
         ASSERT_TRUE(sdl_->ok) << SDL_GetError();
         window_.reset(SDL_CreateWindow("perpdot test", 0, 0, 1280, 800, 0));
         ASSERT_TRUE(window_) << SDL_GetError();
         renderer_.reset(SDL_CreateRenderer(window_.get(), -1, SDL_RENDERER_SOFTWARE));
         ASSERT_TRUE(renderer_) << SDL_GetError();
-        imgui_ = std::make_unique<ImGuiSession>(window_.get(), renderer_.get());
+        imgui_ = std::make_unique<ImGuiLayer>(window_.get(), renderer_.get());
         viewer_ = std::make_unique<Viewer>(Options{.scene = scene}, renderer_.get());
         frames(2);  // the panel lays itself out in its first frames
     }
@@ -100,10 +100,10 @@ protected:
         return {};
     }
 
-    std::unique_ptr<SdlSession> sdl_;
+    std::unique_ptr<SdlLibrary> sdl_;
     WindowPtr window_;
     RendererPtr renderer_;
-    std::unique_ptr<ImGuiSession> imgui_;
+    std::unique_ptr<ImGuiLayer> imgui_;
     std::unique_ptr<Viewer> viewer_;
     Vec2 mouse_{640.0f, 400.0f};
 };

@@ -19,9 +19,9 @@ enum class BodyType : uint8_t {
 /// Everything createBody() needs; designated initialisers name the fields that differ from the defaults.
 struct BodyDef {
     BodyType type = BodyType::Static;  ///< static, kinematic or dynamic
-    Vec2 position;               ///< body origin, world frame
+    Vec2 position{};             ///< body origin, world frame
     float angle = 0.0f;          ///< radians, counter-clockwise
-    Vec2 linearVelocity;         ///< of the centre of mass
+    Vec2 linearVelocity{};       ///< of the centre of mass
     float angularVelocity = 0.0f;  ///< ω, rad/s, counter-clockwise
     float linearDamping = 0.0f;  ///< dv/dt = -c v
     float angularDamping = 0.0f;  ///< dω/dt = -c ω

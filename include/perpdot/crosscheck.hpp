@@ -21,9 +21,9 @@ const char* engineName(Engine engine);  ///< "perpdot" or "box2d"
 /// One row of the trajectory CSV (scene-format.md): body origin, accumulated angle,
 /// velocity of the centre of mass, angular velocity.
 struct BodyState {
-    Vec2 position;  ///< body origin, world
+    Vec2 position{};  ///< body origin, world
     float angle = 0.0f;  ///< accumulated, rad
-    Vec2 linearVelocity;  ///< of the centre of mass
+    Vec2 linearVelocity{};  ///< of the centre of mass
     float angularVelocity = 0.0f;  ///< ω, rad/s
     /// Exact equality of every field.
     friend bool operator==(const BodyState&, const BodyState&) = default;
@@ -33,8 +33,8 @@ struct BodyState {
 /// (frame 0 = before the first step).
 struct Trajectory {
     float timestep = 1.0f / 60.0f;  ///< s per step
-    std::vector<std::string> bodies;  ///< body names, scene order
-    std::vector<BodyState> states;  ///< frame-major: states[frame * bodies.size() + body]
+    std::vector<std::string> bodies{};  ///< body names, scene order
+    std::vector<BodyState> states{};  ///< frame-major: states[frame * bodies.size() + body]
 
     /// Frames recorded (steps + 1).
     int frameCount() const { return bodies.empty() ? 0 : int(states.size() / bodies.size()); }
@@ -73,39 +73,39 @@ struct ErrorStats {
 
 /// How far one body's two trajectories drift apart.
 struct BodyMetrics {
-    std::string name;  ///< the body's scene name
-    ErrorStats position;         ///< |x_a - x_b| of the body origins, metres
-    ErrorStats angle;            ///< |θ_a - θ_b| of the accumulated angles, radians
-    ErrorStats velocity;         ///< |v_a - v_b| of the centre-of-mass velocities, m/s
-    ErrorStats angularVelocity;  ///< |ω_a - ω_b|, rad/s
+    std::string name{};  ///< the body's scene name
+    ErrorStats position{};       ///< |x_a - x_b| of the body origins, metres
+    ErrorStats angle{};          ///< |θ_a - θ_b| of the accumulated angles, radians
+    ErrorStats velocity{};       ///< |v_a - v_b| of the centre-of-mass velocities, m/s
+    ErrorStats angularVelocity{};  ///< |ω_a - ω_b|, rad/s
     int divergenceStep = -1;     ///< first frame beyond a tolerance; -1: never
-    std::vector<float> positionError;  ///< per frame
+    std::vector<float> positionError{};  ///< per frame
 };
 
 /// Per-frame aggregates of one engine over its dynamic bodies.
 struct EngineSeries {
-    std::vector<float> kineticEnergy;    ///< Σ ½ m v² + ½ I ω²
-    std::vector<float> potentialEnergy;  ///< Σ -m s g·x_cm, s = gravity scale
-    std::vector<Vec2> linearMomentum;    ///< Σ m v
-    std::vector<float> angularMomentum;  ///< Σ m perpDot(x_cm, v) + I ω, about the world origin
-    std::vector<int> contactCount;       ///< touching, non-sensor contacts
-    std::vector<float> mass;             ///< per non-static body (scene order), for diagnosis
-    std::vector<float> rotationalInertia;  ///< per non-static body, for diagnosis
+    std::vector<float> kineticEnergy{};  ///< Σ ½ m v² + ½ I ω²
+    std::vector<float> potentialEnergy{};  ///< Σ -m s g·x_cm, s = gravity scale
+    std::vector<Vec2> linearMomentum{};  ///< Σ m v
+    std::vector<float> angularMomentum{};  ///< Σ m perpDot(x_cm, v) + I ω, about the world origin
+    std::vector<int> contactCount{};     ///< touching, non-sensor contacts
+    std::vector<float> mass{};           ///< per non-static body (scene order), for diagnosis
+    std::vector<float> rotationalInertia{};  ///< per non-static body, for diagnosis
 };
 
 /// The result of run(): per-body errors, per-engine series, the verdict.
 struct Report {
-    std::string scene;  ///< the scene's name
+    std::string scene{};  ///< the scene's name
     float timestep = 0.0f;  ///< s per step
     int steps = 0;  ///< steps run
-    Options options;  ///< the options of the run
-    std::vector<BodyMetrics> bodies;  ///< the scene's non-static bodies, in scene order
-    EngineSeries perpdot;             ///< perpdot's series
-    EngineSeries box2d;               ///< Box2D's series
+    Options options{};  ///< the options of the run
+    std::vector<BodyMetrics> bodies{};  ///< the scene's non-static bodies, in scene order
+    EngineSeries perpdot{};           ///< perpdot's series
+    EngineSeries box2d{};             ///< Box2D's series
     int divergenceStep = -1;          ///< earliest over the bodies; -1: within tolerance throughout
-    std::string divergedBody;         ///< the body that diverged first
-    Trajectory perpdotTrajectory;     ///< filled when options.recordTrajectories
-    Trajectory box2dTrajectory;       ///< filled when options.recordTrajectories
+    std::string divergedBody{};       ///< the body that diverged first
+    Trajectory perpdotTrajectory{};   ///< filled when options.recordTrajectories
+    Trajectory box2dTrajectory{};     ///< filled when options.recordTrajectories
 
     /// Whether no body diverged.
     bool withinTolerance() const { return divergenceStep < 0; }
@@ -116,8 +116,8 @@ Report run(const Scene& scene, const Options& options = {});
 
 /// What writeReport() wrote.
 struct ReportFiles {
-    std::vector<std::string> written;  ///< paths
-    std::string plotProblem;           ///< empty, or why there are no plots (e.g. gnuplot missing)
+    std::vector<std::string> written{};  ///< paths
+    std::string plotProblem{};         ///< empty, or why there are no plots (e.g. gnuplot missing)
 };
 /// Writes DIR/report.json (every metric and series), DIR/trajectories.csv (both engines, when the
 /// report kept its trajectories), DIR/series.csv and, drawn by gnuplot, DIR/position_error.png and
@@ -153,15 +153,15 @@ struct EngineTiming {
 };
 /// The result of time(): both engines' timings of one scene.
 struct Timing {
-    std::string scene;  ///< the scene's name
+    std::string scene{};  ///< the scene's name
     int bodies = 0;  ///< non-static, alive after the last step (a scene's script may spawn and destroy)
     int steps = 0;  ///< steps timed per repeat
-    EngineTiming perpdot;  ///< perpdot's timing
-    EngineTiming box2d;    ///< Box2D's timing
+    EngineTiming perpdot{};  ///< perpdot's timing
+    EngineTiming box2d{};  ///< Box2D's timing
     /// What EngineTiming::stability measures for this scene (docs/crosscheck.md): "top fell" (m),
     /// "escaped" (bodies), "momentum error" (of p0, the initial momentum) or "below floor" (bodies).
-    std::string stabilityLabel;
-    std::string stabilityUnit;  ///< the unit of EngineTiming::stability
+    std::string stabilityLabel{};
+    std::string stabilityUnit{};  ///< the unit of EngineTiming::stability
 };
 /// Times the scene in both engines (see TimingOptions).
 Timing time(const Scene& scene, const TimingOptions& options = {});

@@ -19,8 +19,8 @@ namespace perpdot {
 
 /// The character mover a viewer gives the player in a scene (perpdot/mover.hpp).
 struct SceneMover {
-    Vec2 start;    ///< capsule centre, world
-    MoverDef def;  ///< how it walks (one-way platform categories, slope limit, …)
+    Vec2 start{};  ///< capsule centre, world
+    MoverDef def{};  ///< how it walks (one-way platform categories, slope limit, …)
 };
 
 /// Callbacks of a built-in scene, for what its JSON cannot say.

@@ -14,7 +14,7 @@
 namespace perpdot {
 
 /// Which kind of joint a JointId names.
-enum class JointType : uint8_t { Revolute, Prismatic, Distance, Weld, Wheel, Motor, Mouse, Gear, Pulley, Filter };
+enum class JointType : uint8_t { Revolute, Prismatic, Distance, Weld, Wheel, Motor, Mouse, Gear, Pulley, Filter, Friction };
 
 /// A joint definition of this header (World::createJoint): it names its joint type.
 template <class Def>
@@ -23,10 +23,10 @@ concept JointDef = std::same_as<decltype(Def::type), const JointType>;
 /// A hinge: the anchors coincide, B turns freely about them, optionally limited and motorised.
 struct RevoluteJointDef {
     static constexpr JointType type = JointType::Revolute;  ///< the joint this defines
-    BodyId bodyA;  ///< the first body
-    BodyId bodyB;  ///< the second body
-    Vec2 localAnchorA;  ///< anchor point, A's frame
-    Vec2 localAnchorB;  ///< anchor point, B's frame
+    BodyId bodyA{};  ///< the first body
+    BodyId bodyB{};  ///< the second body
+    Vec2 localAnchorA{};  ///< anchor point, A's frame
+    Vec2 localAnchorB{};  ///< anchor point, B's frame
     float referenceAngle = 0.0f;  ///< θB - θA when the joint angle is zero
     bool enableLimit = false;  ///< keep the joint angle within [lowerAngle, upperAngle]
     float lowerAngle = 0.0f;   ///< rad
@@ -41,10 +41,10 @@ struct RevoluteJointDef {
 /// A slider: B moves along an axis fixed in A and does not turn relative to A.
 struct PrismaticJointDef {
     static constexpr JointType type = JointType::Prismatic;  ///< the joint this defines
-    BodyId bodyA;  ///< the first body
-    BodyId bodyB;  ///< the second body
-    Vec2 localAnchorA;  ///< anchor point, A's frame
-    Vec2 localAnchorB;  ///< anchor point, B's frame
+    BodyId bodyA{};  ///< the first body
+    BodyId bodyB{};  ///< the second body
+    Vec2 localAnchorA{};  ///< anchor point, A's frame
+    Vec2 localAnchorB{};  ///< anchor point, B's frame
     Vec2 localAxisA{1.0f, 0.0f};  ///< the sliding axis, A's frame (normalised on creation)
     float referenceAngle = 0.0f;  ///< θB - θA held by the joint
     bool enableLimit = false;     ///< keep the translation within [lower, upper]
@@ -60,10 +60,10 @@ struct PrismaticJointDef {
 /// A rod or spring between two anchors, optionally with a minimum and maximum length.
 struct DistanceJointDef {
     static constexpr JointType type = JointType::Distance;  ///< the joint this defines
-    BodyId bodyA;  ///< the first body
-    BodyId bodyB;  ///< the second body
-    Vec2 localAnchorA;  ///< anchor point, A's frame
-    Vec2 localAnchorB;  ///< anchor point, B's frame
+    BodyId bodyA{};  ///< the first body
+    BodyId bodyB{};  ///< the second body
+    Vec2 localAnchorA{};  ///< anchor point, A's frame
+    Vec2 localAnchorB{};  ///< anchor point, B's frame
     float length = 1.0f;        ///< rest length, m
     float minLength = 0.0f;     ///< the anchors never come closer than this
     float maxLength = 1.0e30f;  ///< nor move further apart than this
@@ -76,10 +76,10 @@ struct DistanceJointDef {
 /// Glues B to A: no relative motion (hertz = 0), or a linear and angular spring.
 struct WeldJointDef {
     static constexpr JointType type = JointType::Weld;  ///< the joint this defines
-    BodyId bodyA;  ///< the first body
-    BodyId bodyB;  ///< the second body
-    Vec2 localAnchorA;  ///< anchor point, A's frame
-    Vec2 localAnchorB;  ///< anchor point, B's frame
+    BodyId bodyA{};  ///< the first body
+    BodyId bodyB{};  ///< the second body
+    Vec2 localAnchorA{};  ///< anchor point, A's frame
+    Vec2 localAnchorB{};  ///< anchor point, B's frame
     float referenceAngle = 0.0f;  ///< θB - θA held by the joint
     float hertz = 0.0f;         ///< 0: rigid
     float dampingRatio = 0.0f;  ///< spring damping ratio ζ
@@ -90,10 +90,10 @@ struct WeldJointDef {
 /// A wheel on a suspension: B slides along a sprung axis of A and turns freely, optionally motorised.
 struct WheelJointDef {
     static constexpr JointType type = JointType::Wheel;  ///< the joint this defines
-    BodyId bodyA;  ///< the chassis
-    BodyId bodyB;  ///< the wheel
-    Vec2 localAnchorA;  ///< anchor point, A's frame
-    Vec2 localAnchorB;  ///< anchor point, B's frame
+    BodyId bodyA{};  ///< the chassis
+    BodyId bodyB{};  ///< the wheel
+    Vec2 localAnchorA{};  ///< anchor point, A's frame
+    Vec2 localAnchorB{};  ///< anchor point, B's frame
     Vec2 localAxisA{0.0f, 1.0f};  ///< suspension axis
     float hertz = 1.0f;           ///< suspension spring
     float dampingRatio = 0.7f;    ///< suspension damping ratio ζ
@@ -107,9 +107,9 @@ struct WheelJointDef {
 /// Drives B towards A's frame offset by (linearOffset, angularOffset) with bounded force and torque.
 struct MotorJointDef {
     static constexpr JointType type = JointType::Motor;  ///< the joint this defines
-    BodyId bodyA;  ///< the first body
-    BodyId bodyB;  ///< the second body
-    Vec2 linearOffset;            ///< in A's frame
+    BodyId bodyA{};  ///< the first body
+    BodyId bodyB{};  ///< the second body
+    Vec2 linearOffset{};          ///< in A's frame
     float angularOffset = 0.0f;     ///< target θB - θA, rad
     float maxForce = 1.0f;          ///< N
     float maxTorque = 1.0f;         ///< N·m
@@ -121,9 +121,9 @@ struct MotorJointDef {
 /// Pulls a point of bodyB towards a world target with a soft spring (mouse dragging).
 struct MouseJointDef {
     static constexpr JointType type = JointType::Mouse;  ///< the joint this defines
-    BodyId bodyA;  ///< usually a static body; only bodyB moves
-    BodyId bodyB;  ///< the body dragged
-    Vec2 target;   ///< world
+    BodyId bodyA{};  ///< usually a static body; only bodyB moves
+    BodyId bodyB{};  ///< the body dragged
+    Vec2 target{}; ///< world
     float hertz = 5.0f;         ///< spring frequency
     float dampingRatio = 0.7f;  ///< spring damping ratio ζ
     float maxForce = 1000.0f;   ///< N
@@ -140,9 +140,9 @@ struct MouseJointDef {
 struct GearJointDef {
     static constexpr JointType type = JointType::Gear;  ///< the joint this defines
     /// A revolute or prismatic joint; the gear's body A is its body B.
-    JointId jointA;
+    JointId jointA{};
     /// A revolute or prismatic joint; the gear's body B is its body B.
-    JointId jointB;
+    JointId jointB{};
     /// Finite and not 0; negative turns both the same way.
     float ratio = 1.0f;
     /// Whether the two geared bodies collide with each other.
@@ -157,17 +157,17 @@ struct GearJointDef {
 struct PulleyJointDef {
     static constexpr JointType type = JointType::Pulley;  ///< the joint this defines
     /// The body on the first side of the rope.
-    BodyId bodyA;
+    BodyId bodyA{};
     /// The body on the second side of the rope.
-    BodyId bodyB;
+    BodyId bodyB{};
     /// World point the rope to body A hangs from.
-    Vec2 groundAnchorA;
+    Vec2 groundAnchorA{};
     /// World point the rope to body B hangs from.
-    Vec2 groundAnchorB;
+    Vec2 groundAnchorB{};
     /// Where the rope holds body A, in A's frame.
-    Vec2 localAnchorA;
+    Vec2 localAnchorA{};
     /// Where the rope holds body B, in B's frame.
-    Vec2 localAnchorB;
+    Vec2 localAnchorB{};
     /// Rope length on A's side (m, > 0): usually the anchors' current distance.
     float lengthA = 1.0f;
     /// Rope length on B's side (m, > 0).
@@ -185,9 +185,26 @@ struct PulleyJointDef {
 /// and wake together; destroying it lets them collide again.
 struct FilterJointDef {
     static constexpr JointType type = JointType::Filter;  ///< the joint this defines
-    BodyId bodyA;              ///< the first body
-    BodyId bodyB;              ///< the second body
+    BodyId bodyA{};            ///< the first body
+    BodyId bodyB{};            ///< the second body
     void* userData = nullptr;  ///< the application's pointer
+};
+
+/// Top-down friction between two bodies (Box2D 2.4's b2FrictionJoint): the relative velocity of
+/// the anchors is driven to zero with a force of at most maxForce, the relative angular velocity
+/// with a torque of at most maxTorque; no position is held. Against a static body A a sliding body
+/// decelerates at maxForce/m and its spin at maxTorque/I, and it stays still under smaller loads.
+/// (Box2D v3 has no friction joint: its motor joint with a zero correction factor does the same.)
+struct FrictionJointDef {
+    static constexpr JointType type = JointType::Friction;  ///< the joint this defines
+    BodyId bodyA;  ///< usually the static ground
+    BodyId bodyB;  ///< the body slowed down
+    Vec2 localAnchorA;  ///< anchor point, A's frame
+    Vec2 localAnchorB;  ///< anchor point, B's frame
+    float maxForce = 0.0f;   ///< N, >= 0 and finite
+    float maxTorque = 0.0f;  ///< N·m, >= 0 and finite
+    bool collideConnected = false;  ///< whether A and B still collide with each other
+    void* userData = nullptr;       ///< the application's pointer
 };
 
 }  // namespace perpdot

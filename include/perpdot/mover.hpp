@@ -44,14 +44,14 @@ struct MoverInput {
 
 /// The mover's whole state: plain data, copyable, comparable, safe to keep beside a snapshot.
 struct MoverState {
-    BodyId body;              ///< its kinematic body in the World
-    ShapeId shape;            ///< the capsule shape on that body
+    BodyId body{};            ///< its kinematic body in the World
+    ShapeId shape{};          ///< the capsule shape on that body
     Vec2 position{};          ///< capsule centre, world
     Vec2 velocity{};          ///< own velocity (walking, falling), m/s
     Vec2 pushVelocity{};      ///< velocity given by dynamic bodies that pushed it, m/s
     bool grounded = false;    ///< standing on walkable ground
     Vec2 groundNormal{0.0f, 1.0f};  ///< normal of that ground
-    ShapeId ground;           ///< the shape it stands on (invalid when airborne)
+    ShapeId ground{};         ///< the shape it stands on (invalid when airborne)
     Vec2 lastDisplacement{};  ///< how far the last moveMover() moved it, m
     /// Exact equality of every field (a replayed mover compares equal).
     friend bool operator==(const MoverState&, const MoverState&) = default;

@@ -11,6 +11,7 @@
 #include "perpdot/ids.hpp"
 #include "perpdot/joints.hpp"
 #include "perpdot/math.hpp"
+#include "perpdot/portable_math.hpp"
 #include "perpdot/queries.hpp"
 #include "perpdot/shapes.hpp"
 #include "perpdot/state_hash.hpp"

@@ -13,9 +13,9 @@ namespace perpdot {
 
 /// A ray P(t) = origin + t·translation hit a shape at fraction t ∈ [0, 1].
 struct RayHit {
-    ShapeId shape;  ///< the shape hit
-    Vec2 point;     ///< world
-    Vec2 normal;    ///< the surface normal at the point, facing the ray
+    ShapeId shape{};  ///< the shape hit
+    Vec2 point{};   ///< world
+    Vec2 normal{};  ///< the surface normal at the point, facing the ray
     float fraction = 0.0f;  ///< t of the hit point along the translation
 };
 
@@ -25,7 +25,7 @@ struct RayHit {
 /// of mass when the centre is inside the shape): linear falloff, nothing at `radius` and beyond.
 /// Off-centre points also spin the body: Δω = perpDot(p − c, J)/I.
 struct ExplosionDef {
-    Vec2 position;                 ///< the centre, world
+    Vec2 position{};               ///< the centre, world
     float radius = 1.0f;           ///< m, > 0
     float impulse = 1.0f;          ///< N·s on a shape at the centre, ≥ 0
     bool blockedByStatic = false;  ///< a shape whose nearest point is hidden from the centre by a static shape takes nothing
@@ -39,13 +39,13 @@ using CastShape = std::variant<Circle, Polygon, Segment>;
 /// Where a swept shape first touches a world shape.
 struct ShapeCastHit {
     /// The world shape that was hit.
-    ShapeId shape;
+    ShapeId shape{};
     /// World point of first contact, on the hit shape's surface; the cast's start position when
     /// the shapes already overlap there.
-    Vec2 point;
+    Vec2 point{};
     /// The hit shape's surface normal at `point`, facing the swept shape (−translation/|translation|
     /// for an overlap at the start).
-    Vec2 normal;
+    Vec2 normal{};
     /// t ∈ [0, 1]: the swept shape touches at xf.p + t·translation (0: overlapping at the start).
     float fraction = 0.0f;
 };

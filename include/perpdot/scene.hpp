@@ -31,6 +31,11 @@ struct SceneShape {
     Vec2 v1{};                     ///< segment start; capsule center1 (JSON "center1")
     Vec2 v2{};                     ///< segment end; capsule center2 (JSON "center2")
     bool loop = false;             ///< chain
+    /// chain: the solid side (JSON "solid": "left" or "right"); the scene format's default is
+    /// Left, the one-sided rule of Box2D and of scene files written before the key existed
+    ChainSide solid = ChainSide::Left;
+    std::optional<Vec2> prevVertex{};  ///< open chain: ghost vertex before the first (JSON "prev_vertex")
+    std::optional<Vec2> nextVertex{};  ///< open chain: ghost vertex after the last (JSON "next_vertex")
     // material
     float density = 1.0f;  ///< kg/m²
     float friction = 0.6f;  ///< Coulomb μ
@@ -39,6 +44,15 @@ struct SceneShape {
     Filter filter{};  ///< collision filter
     /// Equal in every field (a scene that round-trips through JSON compares equal).
     friend bool operator==(const SceneShape&, const SceneShape&) = default;
+};
+
+/// A body's mass properties given instead of its shapes' (World::setMassData, JSON "mass_data").
+struct SceneMass {
+    float mass = 1.0f;               ///< kg (0: 1 kg, as World::setMassData)
+    Vec2 center{};                   ///< centre of mass, body frame
+    float rotationalInertia = 0.0f;  ///< about the centre of mass, kg·m² (0: the body does not turn)
+    /// Equal in every field.
+    friend bool operator==(const SceneMass&, const SceneMass&) = default;
 };
 
 /// A named body of a scene; the fields are BodyDef's.
@@ -57,6 +71,7 @@ struct SceneBody {
     bool allowSleep = true;  ///< BodyDef::allowSleep
     bool awake = true;  ///< BodyDef::awake: false starts it asleep (where allowSleep)
     std::vector<SceneShape> shapes{};  ///< its shapes
+    std::optional<SceneMass> massData{};  ///< overrides the shapes' mass (dynamic bodies; none: from the shapes)
     /// Equal in every field (a scene that round-trips through JSON compares equal).
     friend bool operator==(const SceneBody&, const SceneBody&) = default;
 };
@@ -158,8 +173,8 @@ void saveScene(const Scene& scene, const std::string& path);
 
 /// A built-in scene: its name, what it shows, and how to make it.
 struct BuiltinScene {
-    std::string name;  ///< the name for findScene() and `perpdot run`
-    std::string description;  ///< one line on what it shows
+    std::string name{};  ///< the name for findScene() and `perpdot run`
+    std::string description{};  ///< one line on what it shows
     std::function<Scene()> make;  ///< builds the scene
 };
 const std::vector<BuiltinScene>& builtinScenes();  ///< Every built-in scene, in `perpdot list` order.

@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -52,10 +53,30 @@ struct Segment {
     friend bool operator==(const Segment&, const Segment&) = default;
 };
 
-/// Massless chain of segments whose inner corners do not catch sliding shapes.
+/// Which side of a chain is solid, looking along it from one vertex to the next.
+enum class ChainSide : uint8_t {
+    /// Solid on the right, shapes collide from the left: ground given left to right (solid below,
+    /// surface normal up), or a clockwise loop around solid ground. The default.
+    Right,
+    /// Solid on the left, shapes collide from the right: Box2D's one-sided chains (its normal
+    /// points to the right of v1→v2), ground given right to left, a counter-clockwise loop around
+    /// solid ground or a clockwise loop as a container; the scene format's default (`"solid": "left"`).
+    Left,
+};
+
+/// Massless chain of segments whose inner corners do not catch sliding shapes. One-sided: shapes
+/// collide with it from its open side only (`solid` says which side is solid) and pass through
+/// from the other.
 struct Chain {
-    std::vector<Vec2> vertices;  ///< body frame, in order along the chain
+    std::vector<Vec2> vertices{};  ///< body frame, in order along the chain
     bool loop = false;           ///< the last vertex joins the first
+    ChainSide solid = ChainSide::Right;  ///< the solid side; the default suits terrain given left to right
+    /// Open chains: Box2D 2.4's ghost vertices, the points before the first vertex and after the
+    /// last (b2ChainShape::CreateChain's prevVertex, nextVertex), so that the end segments meet the
+    /// next piece of ground without a corner. None: the end segment continued straight on.
+    /// A loop takes none (Error).
+    std::optional<Vec2> prevVertex{};
+    std::optional<Vec2> nextVertex{};  ///< Open chains: the ghost vertex after the last (see prevVertex).
     /// Exact equality of every field.
     friend bool operator==(const Chain&, const Chain&) = default;
 };

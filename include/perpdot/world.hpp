@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -56,7 +57,7 @@ struct WorldDef {
 
 /// One point of a contact manifold.
 struct ContactPoint {
-    Vec2 point;               ///< world, midway between the surfaces
+    Vec2 point{};             ///< world, midway between the surfaces
     float separation = 0.0f;  ///< negative when overlapping
     float normalImpulse = 0.0f;  ///< N·s along the normal, accumulated over the last step
     float tangentImpulse = 0.0f;  ///< N·s of friction along perp(normal)
@@ -65,11 +66,11 @@ struct ContactPoint {
 
 /// A touching contact between two shapes: its manifold and impulses.
 struct ContactData {
-    ShapeId shapeA;  ///< one shape
-    ShapeId shapeB;  ///< the other; the normal points from A to B
-    Vec2 normal;  ///< from A to B
+    ShapeId shapeA{};  ///< one shape
+    ShapeId shapeB{};  ///< the other; the normal points from A to B
+    Vec2 normal{};  ///< from A to B
     int pointCount = 0;  ///< points used, 0..2
-    ContactPoint points[2];  ///< the first pointCount are valid
+    ContactPoint points[2]{};  ///< the first pointCount are valid
 };
 
 /// Pool sizes and health counters, for soak tests and tools.
@@ -83,8 +84,15 @@ struct WorldStats {
     int frozenBodies = 0;  ///< times a body was frozen because its state became NaN or infinite
 };
 
+/// A game's own collision rule (Box2D 2.4's b2ContactFilter::ShouldCollide): asked, once the
+/// shapes' Filters pass, when the broadphase finds a new pair of overlapping shapes; return false
+/// and the pair gets no contact (it is asked again when their boxes part and overlap anew). Called
+/// during step() on the caller's thread, pairs in a fixed order; the world is locked.
+using ShouldCollideFn = std::function<bool(ShapeId shapeA, ShapeId shapeB)>;
+
 /// The simulation: bodies, shapes, joints and contacts, advanced by step(). Every call that takes an
-/// id throws perpdot::Error when the id is stale (its object was destroyed) or null.
+/// id throws perpdot::Error naming the call when the id is null, stale (its object was destroyed)
+/// or from another World ("World::setTransform: stale BodyId {index 3, generation 2}"; ids.hpp).
 class World {
 public:
     explicit World(const WorldDef& def = {});  ///< An empty world with settings `def`.
@@ -95,7 +103,13 @@ public:
     World(const World&) = delete;  ///< Not copyable: use snapshot() and restore().
     World& operator=(const World&) = delete;  ///< Not copyable.
 
-    /// Advance by `timeStep` seconds. Never throws; allocates nothing once contacts are cached.
+    /// Advance by `timeStep` seconds; allocates nothing once contacts are cached. The events of
+    /// the previous step are cleared as it starts (end events raised since, by destroyShape or
+    /// destroyBody, are kept for it), so a paused game that calls step(0) counts no event twice.
+    /// step(0) does what Box2D 2.4's Step(0) does: it finds new pairs and runs the narrowphase,
+    /// raising begin and end events and calling the pre-solve callback, and moves nothing.
+    /// Throws perpdot::Error (the world unchanged) for a negative, NaN or infinite time step, and
+    /// when called from inside step() (a pre-solve callback, a task of the job system).
     void step(float timeStep);
 
     // --- bodies ---
@@ -128,6 +142,52 @@ public:
     void setLinearDamping(BodyId body, float damping);  ///< BodyDef::linearDamping
     void setAngularDamping(BodyId body, float damping);  ///< BodyDef::angularDamping
 
+    // --- bodies at run time (Box2D's b2Body setters) ---
+    /// Makes the body static, kinematic or dynamic (b2Body::SetType): its contacts end (end events)
+    /// and are found again from the next step, its mass is recomputed from its shapes (a mass
+    /// override is dropped), and it wakes; made static it also stops (v = 0, ω = 0).
+    void setType(BodyId body, BodyType type);
+    /// Infinite rotational inertia (true): the body stops turning and never turns; its mass is
+    /// recomputed from its shapes, as setType does.
+    void setFixedRotation(BodyId body, bool fixedRotation);
+    bool isFixedRotation(BodyId body) const;  ///< BodyDef::fixedRotation, or the last setFixedRotation
+    void setBullet(BodyId body, bool bullet);  ///< BodyDef::bullet: continuous collision against dynamic bodies too
+    bool isBullet(BodyId body) const;  ///< BodyDef::bullet, or the last setBullet
+    /// BodyDef::allowSleep; false also wakes the body.
+    void setAllowSleep(BodyId body, bool allowSleep);
+    bool allowsSleep(BodyId body) const;  ///< BodyDef::allowSleep, or the last setAllowSleep
+    /// The body's mass m, centre of mass (body frame) and rotational inertia about it.
+    MassData massData(BodyId body) const;
+    /// Overrides a dynamic body's mass properties (b2Body::SetMassData; ignored for static and
+    /// kinematic bodies): m ≤ 0 becomes 1 kg, as in Box2D; I ≤ 0 or fixed rotation, no turning. The
+    /// material points keep their velocity. Kept until resetMassData(), setType(),
+    /// setFixedRotation() or a shape of the body is created, destroyed or changes density.
+    /// Error for a non-finite or negative value.
+    void setMassData(BodyId body, const MassData& massData);
+    /// The mass properties from the shapes again (b2Body::ResetMassData).
+    void resetMassData(BodyId body);
+    /// The touching contacts of the body's shapes (b2Body::GetContactList).
+    std::vector<ContactData> bodyContacts(BodyId body) const;
+    /// The joints attached to the body (b2Body::GetJointList), in the order they were attached.
+    std::vector<JointId> bodyJoints(BodyId body) const;
+    /// Box2D v3's b2Body_SetTargetTransform: sets the velocity with which a kinematic (or dynamic)
+    /// body reaches the pose (position, angle) at the end of a step of `timeStep` seconds, and wakes
+    /// it: v = (c_target − c)/h, ω = (angle − θ)/h (angles are not wrapped). What the body carries
+    /// rides with it. Error for a non-finite pose or a time step not > 0; ignored for static bodies.
+    void setTargetTransform(BodyId body, Vec2 position, float angle, float timeStep);
+    void setUserData(BodyId body, void* userData);  ///< BodyDef::userData
+    /// Takes the body out of the simulation without destroying it (b2Body::SetEnabled(false)): its
+    /// contacts end (end events), its shapes leave the broadphase (no query, contact or sensor sees
+    /// them), it is not moved, and its joints are not solved; true puts it back where it was, with
+    /// the velocity it had, and wakes it. A disabled body keeps its mass, joints and shapes.
+    void setEnabled(BodyId body, bool enabled);
+    bool isEnabled(BodyId body) const;  ///< false while disabled by setEnabled
+    /// Moves the world's origin to `newOrigin` (b2World::ShiftOrigin), for large worlds: every
+    /// position, anchor, fat box and contact point is moved by −newOrigin, so the simulation goes
+    /// on as before, translated (up to float rounding of the new coordinates). A game's own world
+    /// positions (MoverState, targets) are its to shift. Error for a non-finite origin.
+    void shiftOrigin(Vec2 newOrigin);
+
     // --- forces and impulses (wake the body) ---
     void applyForce(BodyId body, Vec2 force, Vec2 worldPoint);  ///< F and τ = perpDot(P - CM, F)
     void applyForceToCenter(BodyId body, Vec2 force);  ///< F at the centre of mass: no torque
@@ -143,7 +203,9 @@ public:
     ShapeId createShape(BodyId body, const ShapeDef& def, const Polygon& polygon);
     /// A new segment on `body`.
     ShapeId createShape(BodyId body, const ShapeDef& def, const Segment& segment);
-    ShapeId createShape(BodyId body, const ShapeDef& def, const Chain& chain);  ///< A new chain on `body`.
+    /// A new chain on `body`: one-sided, solid on the side Chain::solid names (default: the right,
+    /// so ground given left to right is solid below); Error if the chain is invalid.
+    ShapeId createShape(BodyId body, const ShapeDef& def, const Chain& chain);
     /// Attach a capsule; Error on a non-finite or out-of-range centre, radius <= 0, or centres
     /// closer than the linear slop (0.005 m).
     ShapeId createShape(BodyId body, const ShapeDef& def, const Capsule& capsule);
@@ -172,6 +234,19 @@ public:
     void setRollingResistance(ShapeId shape, float resistance);  ///< ShapeDef::rollingResistance
     void setTangentSpeed(ShapeId shape, float speed);  ///< conveyor belt surface speed, m/s
     void enablePreSolveEvents(ShapeId shape, bool enable);  ///< ShapeDef::enablePreSolveEvents
+    // Shapes at run time (Box2D's b2Fixture setters):
+    /// A new filter (b2Fixture::SetFilterData): contacts it no longer allows end at once (end
+    /// events before the next step's), pairs it now allows are found in the next step.
+    void setFilter(ShapeId shape, const Filter& filter);
+    /// Makes the shape a sensor (true) or solid: its contacts end at once (end events), and the
+    /// next step finds them again as sensor overlaps or as contacts.
+    void setSensor(ShapeId shape, bool sensor);
+    /// Takes the shape out of the broadphase (false: its contacts end, no query sees it; its body
+    /// keeps the shape's mass) or puts it back (true); the shape of a disabled body stays out.
+    void setEnabled(ShapeId shape, bool enabled);
+    bool isEnabled(ShapeId shape) const;  ///< false while disabled by setEnabled(ShapeId, false)
+    void* userData(ShapeId shape) const;  ///< ShapeDef::userData, or the last setUserData
+    void setUserData(ShapeId shape, void* userData);  ///< ShapeDef::userData
 
     // --- joints ---
     /// A new joint of def's type (joints.hpp) between def.bodyA and def.bodyB (a gear's: the bodies B
@@ -188,15 +263,78 @@ public:
     Vec2 jointAnchorB(JointId joint) const;  ///< world
     /// A pulley's two ground anchors, world (the points its ropes hang from); Error for other types.
     std::pair<Vec2, Vec2> pulleyGroundAnchors(JointId joint) const;
-    /// The joint breaks when, at the end of a step, its reaction force exceeds `maxForce` N or its
-    /// reaction torque exceeds `maxTorque` N·m (infinity: never): a JointBreakEvent is reported,
-    /// and the joint is destroyed then if `destroy`. Error for a negative or NaN limit.
+    /// The joint breaks when its reaction force averaged over a step exceeds `maxForce` N or its
+    /// reaction torque exceeds `maxTorque` N·m (infinity: never): a JointBreakEvent is reported at
+    /// the end of the step, and the joint is destroyed then if `destroy`. The average is the
+    /// joint's impulse summed over all the step's substeps divided by the step, so a sudden blow
+    /// (an explosion) counts in full. Error for a negative or NaN limit.
     void setJointBreakLimits(JointId joint, float maxForce, float maxTorque, bool destroy = true);
     JointEvents jointEvents() const;  ///< Joint break events of the last step.
     Vec2 jointReactionForce(JointId joint) const;   ///< on B, N, from the last step
     float jointReactionTorque(JointId joint) const; ///< on B, N·m, from the last step
     void setMouseTarget(JointId joint, Vec2 target);  ///< Mouse joints: the world target.
     void setMotorSpeed(JointId joint, float speed);  ///< revolute, prismatic, wheel
+
+    // --- joints at run time (joint_settings.cpp): each call names the joint types it serves and
+    // throws perpdot::Error for another type, a stale id or a value its definition would refuse.
+    // A setter wakes the joint's bodies; the settings are part of snapshots. ---
+    /// Revolute, prismatic: turn the limit rows on or off (off forgets their impulses).
+    void enableLimit(JointId joint, bool enable);
+    bool isLimitEnabled(JointId joint) const;  ///< Revolute, prismatic: whether the limit is on.
+    /// Revolute (rad, of jointAngle) and prismatic (m, of jointTranslation): the limits, lower <= upper.
+    void setLimits(JointId joint, float lower, float upper);
+    float lowerLimit(JointId joint) const;  ///< Revolute, prismatic: the lower limit.
+    float upperLimit(JointId joint) const;  ///< Revolute, prismatic: the upper limit.
+    /// Revolute, prismatic, wheel: turn the motor row on or off (a change forgets its impulse).
+    void enableMotor(JointId joint, bool enable);
+    bool isMotorEnabled(JointId joint) const;  ///< Revolute, prismatic, wheel: whether the motor is on.
+    float motorSpeed(JointId joint) const;  ///< Revolute, wheel (rad/s), prismatic (m/s).
+    /// Revolute, wheel: the motor's torque bound, N·m (>= 0).
+    void setMaxMotorTorque(JointId joint, float torque);
+    float maxMotorTorque(JointId joint) const;  ///< Revolute, wheel: the motor's torque bound.
+    void setMaxMotorForce(JointId joint, float force);  ///< Prismatic: the motor's force bound, N (>= 0).
+    float maxMotorForce(JointId joint) const;  ///< Prismatic: the motor's force bound.
+    /// Revolute, wheel: the torque the motor applied over the last step's last substep, N·m.
+    float motorTorque(JointId joint) const;
+    /// Prismatic: the force the motor applied over the last step's last substep, N.
+    float motorForce(JointId joint) const;
+    /// Wheel, distance, weld, mouse: the spring's frequency (0: rigid, Box2D's EnableSpring(false)).
+    void setSpringHertz(JointId joint, float hertz);
+    /// Wheel, distance, weld, mouse: the spring's damping ratio ζ (>= 0).
+    void setSpringDampingRatio(JointId joint, float dampingRatio);
+    float springHertz(JointId joint) const;  ///< Wheel, distance, weld, mouse: the spring's frequency.
+    float springDampingRatio(JointId joint) const;  ///< Wheel, distance, weld, mouse: ζ.
+    void setLength(JointId joint, float length);  ///< Distance: the rest length, m (> 0).
+    /// Distance: the anchors' distance stays within [minLength, maxLength] (0 <= min <= max;
+    /// Box2D 2.4's rope joint is maxLength alone).
+    void setLengthRange(JointId joint, float minLength, float maxLength);
+    float restLength(JointId joint) const;  ///< Distance: the rest length (Box2D: GetLength).
+    float minLength(JointId joint) const;  ///< Distance: the shortest the anchors may come.
+    float maxLength(JointId joint) const;  ///< Distance: the furthest the anchors may part.
+    float currentLength(JointId joint) const;  ///< Distance: the anchors' distance now, m.
+    /// Motor, friction (maxForce), mouse (maxForce): the force bound, N (>= 0).
+    void setMaxForce(JointId joint, float force);
+    void setMaxTorque(JointId joint, float torque);  ///< Motor, friction: the torque bound, N·m (>= 0).
+    float maxForce(JointId joint) const;  ///< Motor, friction, mouse: the force bound.
+    float maxTorque(JointId joint) const;  ///< Motor, friction: the torque bound.
+    void setLinearOffset(JointId joint, Vec2 offset);  ///< Motor: B's origin target, A's frame.
+    void setAngularOffset(JointId joint, float offset);  ///< Motor: the target θB − θA, rad.
+    /// Revolute, weld, prismatic: θB − θA − referenceAngle, rad (accumulated, not wrapped).
+    float jointAngle(JointId joint) const;
+    /// Revolute, weld, prismatic, wheel: ωB − ωA, rad/s.
+    float jointAngularSpeed(JointId joint) const;
+    /// Prismatic, wheel: (pB − pA)·axis, the anchors' separation along the world axis, m.
+    float jointTranslation(JointId joint) const;
+    /// Prismatic, wheel: d/dt of jointTranslation, m/s (the axis turns with body A).
+    float jointLinearSpeed(JointId joint) const;
+    void* userData(JointId joint) const;  ///< The definition's userData, or the last setUserData's.
+    void setUserData(JointId joint, void* userData);  ///< Any type: the application's pointer.
+    /// Called by destroyBody, after the body is gone, once for each joint it destroyed with it
+    /// (Box2D 2.4's b2DestructionListener::SayGoodbye): the joint's id, stale by then, and its
+    /// userData; the callback may change the world. Not called by destroyJoint, nor for joints a
+    /// break destroys (JointBreakEvent reports those). An empty function: none.
+    void setJointDestroyedCallback(JointDestroyedFn callback);
+    // --- end of joints at run time ---
 
     // --- contacts ---
     int contactCount() const;  ///< touching contacts
@@ -206,6 +344,9 @@ public:
     ContactEvents contactEvents() const;  ///< Begin, end and hit events of the last step.
     SensorEvents sensorEvents() const;  ///< Sensor begin and end events of the last step.
     void setPreSolve(PreSolveFn callback);  ///< empty function: none
+    /// The game's collision rule (ShouldCollideFn); empty function: none. Pairs that already have
+    /// a contact keep it. Not saved in snapshots (restore keeps this World's).
+    void setShouldCollide(ShouldCollideFn callback);
 
     // --- queries ---
     /// Closest hit of the ray origin -> origin + translation, if any.
@@ -246,11 +387,13 @@ public:
 
     // --- snapshots (bit-exact: restore + N steps equals N steps) ---
     /// Versioned bytes of the whole state: settings, bodies, shapes, joints, and the contact cache
-    /// with its warm-start impulses, and end events raised since the last step. Not saved: userData
-    /// pointers, the pre-solve callback, the events of the last step.
+    /// with its warm-start impulses, end events raised since the last step, and this World's
+    /// identity (ids.hpp). Not saved: userData pointers, the pre-solve and should-collide
+    /// callbacks, the events of the last step.
     std::vector<uint8_t> snapshot() const;
-    /// Replaces this world's state with a snapshot's (ids from the snapshotted world stay valid, the
-    /// pre-solve callback stays). Corrupt or truncated bytes: Error, and the world is unchanged.
+    /// Replaces this world's state with a snapshot's (ids from the snapshotted world are valid, and
+    /// so are this World's own; the callbacks stay). Corrupt or truncated bytes: Error, and the
+    /// world is unchanged.
     void restore(std::span<const uint8_t> snapshot);
     // Compact snapshots for rollback (docs/reliability.md): the bytes in which this world's state
     // differs from `baseline`, any earlier snapshot() or baselineSnapshot(); unchanged bodies,

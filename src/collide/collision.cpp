@@ -23,6 +23,7 @@
 #include <cstdint>
 #include <optional>
 #include <type_traits>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -105,6 +106,8 @@ struct CollisionSystem::Impl {
     b2DynamicTree tree;
     b2DynamicTree staticTree;         // static proxies again; a leaf's user data is its proxy id in `tree`
     std::vector<int> staticLeaf;      // by proxy id: its leaf in staticTree, or -1
+    std::vector<ChildKey> key;        // by proxy id: the shape and child it bounds (not in the tree's
+                                      // user data: a 32-bit pointer holds only one of the two ints)
     // By proxy id, its fat AABB as the tree holds it: 16 bytes a proxy side by side, where the
     // narrowphase's overlap test would otherwise miss the cache on a 40-byte tree node per proxy.
     std::vector<AABB> fat;
@@ -278,15 +281,33 @@ void CollisionSystem::setGeometry(int shape, const Polygon& polygon) { impl_->se
 void CollisionSystem::setGeometry(int shape, const Segment& segment) { impl_->setGeometry(shape, toB2(segment)); }
 void CollisionSystem::setGeometry(int shape, const Capsule& capsule) { impl_->setGeometry(shape, capsuleToB2(capsule)); }
 
+ChainPath box2dChainPath(const Chain& chain) {
+    ChainPath path{chain.vertices, {}, {}};
+    // Box2D's one-sided edges collide on the right of v1→v2 (solid left): a chain solid on the
+    // right runs the other way, its ghosts swapped.
+    const bool reversed = chain.solid == ChainSide::Right;
+    if (reversed) std::reverse(path.vertices.begin(), path.vertices.end());
+    const std::optional<Vec2>& prev = reversed ? chain.nextVertex : chain.prevVertex;
+    const std::optional<Vec2>& next = reversed ? chain.prevVertex : chain.nextVertex;
+    const std::vector<Vec2>& v = path.vertices;
+    const size_t n = v.size();
+    if (!chain.loop) {  // ghosts not given: the end segments continued straight on
+        path.prev = prev ? *prev : v[0] + (v[0] - v[1]);
+        path.next = next ? *next : v[n - 1] + (v[n - 1] - v[n - 2]);
+    }
+    return path;
+}
+
 void CollisionSystem::setGeometry(int shape, const Chain& chain) {
-    const std::vector<Vec2>& v = chain.vertices;
+    const ChainPath path = box2dChainPath(chain);
+    const std::vector<Vec2>& v = path.vertices;
     const int n = static_cast<int>(v.size());
     const int edgeCount = chain.loop ? n : n - 1;
-    // Ghost vertices: the neighbours on a loop, straight extensions at the ends of an open chain.
+    // Ghost vertices: the neighbours on a loop, the path's ghosts at the ends of an open chain.
     auto vertex = [&](int i) -> Vec2 {
         if (chain.loop) return v[(i % n + n) % n];
-        if (i < 0) return v[0] + (v[0] - v[1]);
-        if (i >= n) return v[n - 1] + (v[n - 1] - v[n - 2]);
+        if (i < 0) return path.prev;
+        if (i >= n) return path.next;
         return v[i];
     };
     ChainEdges edges(edgeCount);
@@ -314,19 +335,19 @@ bool CollisionSystem::mustSwap(ShapeType a, ShapeType b) { return rank(a) < rank
 
 int CollisionSystem::createProxy(const AABB& aabb, ChildKey key, bool isStatic) {
     const b2AABB box{toB2(aabb.lower), toB2(aabb.upper)};
-    // userData packs the child key: shape in the high 32 bits, child in the low.
-    const uint64_t packed = (static_cast<uint64_t>(static_cast<uint32_t>(key.shape)) << 32) | static_cast<uint32_t>(key.child);
-    const int proxy = impl_->tree.CreateProxy(box, reinterpret_cast<void*>(static_cast<uintptr_t>(packed)));
+    const int proxy = impl_->tree.CreateProxy(box, nullptr);
     ++impl_->insertions;
     ++impl_->proxyCount;
     if (static_cast<size_t>(proxy) >= impl_->staticLeaf.size()) {
         impl_->staticLeaf.resize(proxy + 1, -1);
+        impl_->key.resize(proxy + 1);
         impl_->since.resize(proxy + 1);
         impl_->priorFat.resize(proxy + 1);
         impl_->fat.resize(proxy + 1);
         impl_->margin.resize(proxy + 1);
     }
     impl_->since[proxy] = Impl::Since::New;
+    impl_->key[proxy] = key;
     impl_->staticLeaf[proxy] = isStatic ? impl_->staticTree.CreateProxy(box, reinterpret_cast<void*>(static_cast<uintptr_t>(proxy))) : -1;
     const bool hasGeometry = static_cast<size_t>(key.shape) < impl_->geometry.size() &&
                              !std::holds_alternative<std::monostate>(impl_->geometry[key.shape]);
@@ -451,10 +472,7 @@ void CollisionSystem::clearMoved(int proxy) {
 }
 void CollisionSystem::requery(int proxy) { impl_->since[proxy] = Impl::Since::New; }
 
-ChildKey CollisionSystem::proxyKey(int proxy) const {
-    const auto packed = static_cast<uint64_t>(reinterpret_cast<uintptr_t>(impl_->tree.GetUserData(proxy)));
-    return {static_cast<int>(packed >> 32), static_cast<int>(packed & 0xFFFFFFFFu)};
-}
+ChildKey CollisionSystem::proxyKey(int proxy) const { return impl_->key[proxy]; }
 
 void CollisionSystem::queryImpl(const AABB& aabb, void* context, bool (*visit)(void*, int)) const {
     struct Callback {

@@ -34,11 +34,11 @@ World::Impl::Impl(const WorldDef& d) : def(d), joints(makeJointStore()), workers
     if (!(std::isfinite(def.maxLinearSpeed) && def.maxLinearSpeed > 0.0f)) throw Error("WorldDef.maxLinearSpeed must be finite and > 0");
 }
 
-Body& World::Impl::body(BodyId id) {
-    return const_cast<Body&>(static_cast<const Impl*>(this)->body(id));
+Body& World::Impl::body(BodyId id, const char* call) {
+    return const_cast<Body&>(static_cast<const Impl*>(this)->body(id, call));
 }
 
-const Body& World::Impl::body(BodyId id) const { return bodies.checked(id.index, id.generation, "BodyId"); }
+const Body& World::Impl::body(BodyId id, const char* call) const { return checkedItem(bodies, id, identity, "BodyId", call); }
 
 void World::Impl::checkUnlocked(const char* what) const {
     if (locked) throw Error(std::string(what) + ": the world cannot be changed during step()");
@@ -82,7 +82,7 @@ void World::Impl::wake(int index) {
         Body& b = bodies[i];
         const int next = b.islandNext;
         b.islandNext = -1;
-        if (b.type != BodyType::Static) {
+        if (b.type != BodyType::Static && b.enabled) {
             b.awake = true;
             b.sleepTime = 0.0f;
         }
@@ -136,7 +136,7 @@ void World::destroyBody(BodyId id) {
     Impl& w = *impl_;
     w.checkUnlocked("destroyBody");
     Body& b = w.body(id);
-    destroyJointsOf(w, id.index);
+    const std::vector<std::pair<JointId, void*>> goodbyes = destroyJointsOf(w, id.index);
     w.wake(id.index);  // its island mates lose a support
     destroyContactsOf(w, id.index, -1);
     for (int s : b.shapes) {
@@ -146,9 +146,10 @@ void World::destroyBody(BodyId id) {
     }
     b.shapes.clear();
     w.bodies.destroy(id.index);
+    for (const auto& [joint, userData] : goodbyes) w.jointDestroyed(joint, userData);  // Box2D's SayGoodbye
 }
 
-bool World::isValid(BodyId id) const { return impl_->bodies.isValid(id.index, id.generation); }
+bool World::isValid(BodyId id) const { return isLiveHandle(impl_->bodies, id, impl_->identity); }
 
 std::vector<BodyId> World::bodies() const {
     std::vector<BodyId> ids;

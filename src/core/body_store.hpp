@@ -18,6 +18,7 @@ struct Body {
     // reads their poses, so these share a cache line. (A body's solver slot during a step is
     // StepScratch::bodySlots.)
     bool awake = true;
+    bool enabled = true;   // World::setEnabled: false keeps it out of the step and the broadphase
     int jointCount = 0;    // joints attached (maintained by the joint store); beside the type, for
                            // the contact groups' per-step look at every awake body's kind
     Transform xf;          // origin frame

@@ -56,7 +56,11 @@ bool pairWanted(const World::Impl& w, int proxyA, int proxyB) {
     const ShapeData& sa = w.shapes[w.collision.proxyKey(proxyA).shape];
     const ShapeData& sb = w.shapes[w.collision.proxyKey(proxyB).shape];
     if (sa.body == sb.body) return false;
-    if (w.bodies[sa.body].type != BodyType::Dynamic && w.bodies[sb.body].type != BodyType::Dynamic) return false;
+    const BodyType ta = w.bodies[sa.body].type, tb = w.bodies[sb.body].type;
+    // A contact needs a dynamic body; a sensor also sees a kinematic one (a character mover
+    // entering a trigger zone).
+    const bool sensorSeesKinematic = (sa.sensor || sb.sensor) && (ta == BodyType::Kinematic || tb == BodyType::Kinematic);
+    if (ta != BodyType::Dynamic && tb != BodyType::Dynamic && !sensorSeesKinematic) return false;
     // A sensor sees shapes that are not sensors and want to be seen.
     if (sa.sensor && sb.sensor) return false;
     if ((sa.sensor && !sb.enableSensorEvents) || (sb.sensor && !sa.enableSensorEvents)) return false;
@@ -69,6 +73,9 @@ void addPair(World::Impl& w, const NewPair& pair) {
     ContactCache& cache = w.contactCache;
     int proxyA = pair.proxyA, proxyB = pair.proxyB;
     const uint64_t key = proxyPairKey(proxyA, proxyB);
+    // The game's rule (World::setShouldCollide) judges pairs that have no contact yet.
+    if (w.shouldCollide && !cache.pairs.contains(key) && !w.shouldCollide(w.shapeId(pair.a.shape), w.shapeId(pair.b.shape)))
+        return;
     if (!cache.pairs.insert(key)) return;  // one lookup: found twice, or has its contact
     collide::ChildKey keyA = pair.a, keyB = pair.b;
     const ShapeData* sa = &w.shapes[keyA.shape];

@@ -57,15 +57,15 @@ void removeJoint(World::Impl& w, int index) {
     s.joints.destroy(index);
 }
 
-JointReaction reactionOf(const Joint& j) { return stagesOf(j.type).reaction(j); }
+JointReaction reactionOf(const Joint& j) { return stagesOf(j.type).reaction(j.data); }
 
 }  // namespace
 
 Joint& addJoint(World::Impl& w, JointType type, BodyId bodyA, BodyId bodyB, Vec2 localAnchorA, Vec2 localAnchorB,
                 float referenceAngle, bool collideConnected, void* userData) {
     w.checkUnlocked("createJoint");
-    w.body(bodyA);
-    w.body(bodyB);
+    w.body(bodyA, "createJoint");
+    w.body(bodyB, "createJoint");
     if (bodyA.index == bodyB.index) throw Error("a joint needs two different bodies");
     requireFinite(isFinite(localAnchorA) && isFinite(localAnchorB), "joint anchors");
     requireFinite(std::isfinite(referenceAngle), "referenceAngle");
@@ -91,12 +91,12 @@ Joint& addJoint(World::Impl& w, JointType type, BodyId bodyA, BodyId bodyB, Vec2
     return j;
 }
 
-Joint& checkedJoint(const World::Impl& w, JointId id) {
-    return const_cast<Joint&>(store(w).joints.checked(id.index, id.generation, "JointId"));
+Joint& checkedJoint(const World::Impl& w, JointId id, const char* call) {
+    return const_cast<Joint&>(checkedItem(store(w).joints, id, w.identity, "JointId", call));
 }
 
 JointId jointId(const World::Impl& w, const Joint& joint) {
-    return {static_cast<int32_t>(&joint - store(w).joints.slots().data()), joint.generation};
+    return {static_cast<int32_t>(&joint - store(w).joints.slots().data()), joint.generation, w.identity.issued};
 }
 
 // --- Solver stages ---
@@ -118,6 +118,7 @@ void prepareJoint(PreparedJoint& j, const World::Impl& w, const Joint& joint, co
     j.anchorB = rotate(b.xf.q, joint.localAnchorB - b.localCenter);
     j.deltaCenter = b.center - a.center;
     j.deltaAngle = b.angle - a.angle - joint.referenceAngle;
+    j.breakable = !std::isinf(joint.breakForce) || !std::isinf(joint.breakTorque);
     stagesOf(j.type).prepare(j, ctx, a, b);
 }
 
@@ -129,7 +130,7 @@ JointKey keyOf(const PreparedJoint& j) {
             j.type,
             j.mass.mA != 0.0f || j.mass.iA != 0.0f,
             j.mass.mB != 0.0f || j.mass.iB != 0.0f,
-            pointRowsOnly(j),
+            pointRowsOnly(j) && !j.breakable,
             lanes != nullptr && lanes->optionalRows(j)};
 }
 
@@ -172,20 +173,32 @@ void jointRows(World::Impl& w, const StepContext& ctx, RowPass pass, int color, 
     }
     const bool useBias = pass == RowPass::Solve;
     const std::vector<float>& stepRotation = w.scratch.stepRotation;
+    JointScratch& d = jointScratch(w);
     forJointUnits(
         w, color, begin, end,
         [&](const JointLaneStages& lanes, JointBlock* blocks, int count) {
             lanes.solve(blocks, count, states, stepRotation, ctx, useBias);
         },
-        [&](PreparedJoint& j, JointPair& p) { stagesOf(j.type).solve(j, p, ctx, useBias); });
+        [&](PreparedJoint& j, JointPair& p) {
+            const JointStages& stages = stagesOf(j.type);
+            stages.solve(j, p, ctx, useBias);
+            // The relax pass is a substep's last word on a joint: its λ is what the substep applied.
+            if (pass == RowPass::Relax && j.breakable) {
+                JointReaction& sum = d.stepImpulse[static_cast<size_t>(&j - d.prepared.data())];
+                const JointReaction substep = stages.reaction(j.data);
+                sum.linear += substep.linear;
+                sum.angular += substep.angular;
+            }
+        });
 }
 
 namespace {
 
-// The joints of a type with lanes go to the blocks, unless no colour could take them: -1 alone, 0
+// The joints of a type with lanes go to the blocks, unless no colour could take them or they have
+// break limits (their impulses are summed one joint at a time): -1 alone, 0
 // in lanes with the type's rows alone, 1 with optional rows (JointScratch::laneRows).
-int8_t laneRowsOf(int color, const JointKey& j) {
-    if (color == GraphColoring::overflow || stagesOf(j.type).lanes == nullptr) return -1;
+int8_t laneRowsOf(int color, const JointKey& j, bool breakable) {
+    if (color == GraphColoring::overflow || stagesOf(j.type).lanes == nullptr || breakable) return -1;
     return j.optionalRows ? 1 : 0;
 }
 
@@ -199,7 +212,8 @@ void prepareJoints(World::Impl& w, const StepContext& ctx) {
     s.invHs = ctx.invHs;
     auto awake = [&](int index) {
         const Joint& joint = s.joints[index];
-        return joint.alive && (w.scratch.bodySlots[joint.bodyA] != 0 || w.scratch.bodySlots[joint.bodyB] != 0);
+        return joint.alive && (w.scratch.bodySlots[joint.bodyA] != 0 || w.scratch.bodySlots[joint.bodyB] != 0) &&
+               w.bodies[joint.bodyA].enabled && w.bodies[joint.bodyB].enabled;  // World::setEnabled
     };
     // prepareJoint writes every field, so last step's elements are reused as they are.
     w.workers.parallelSelect(
@@ -208,6 +222,7 @@ void prepareJoints(World::Impl& w, const StepContext& ctx) {
             d.awake.resize(total);
             d.prepared.resize(total);
             d.keys.resize(total);
+            d.stepImpulse.assign(total, {});
         },
         [&](int k, int index) {
             d.awake[k] = index;
@@ -242,7 +257,7 @@ void colorJoints(World::Impl& w) {
         if (d.trees.inTree[k]) continue;
         const JointKey& j = d.keys[k];
         const int color = d.colors[k] = coloring.assign(j.indexA, j.indexB);
-        const int8_t rows = d.laneRows[k] = laneRowsOf(color, j);
+        const int8_t rows = d.laneRows[k] = laneRowsOf(color, j, d.prepared[k].breakable);
         if (rows < 0) ++scalarCount[color];
         else ++(rows > 0 ? optionalLanes : plainLanes)[color][static_cast<int>(j.type)];
     }
@@ -344,9 +359,15 @@ bool jointAllowsCollision(const World::Impl& w, int bodyA, int bodyB) {
     return true;
 }
 
-void destroyJointsOf(World::Impl& w, int body) {
+std::vector<std::pair<JointId, void*>> destroyJointsOf(World::Impl& w, int body) {
     JointStore& s = store(w);
-    while (s.bodyLists.head(body) >= 0) removeJoint(w, s.bodyLists.head(body) >> 1);
+    std::vector<std::pair<JointId, void*>> goodbyes;
+    while (s.bodyLists.head(body) >= 0) {
+        const int index = s.bodyLists.head(body) >> 1;
+        if (w.jointDestroyed) goodbyes.emplace_back(jointId(w, s.joints[index]), s.joints[index].userData);
+        removeJoint(w, index);
+    }
+    return goodbyes;
 }
 
 void forEachJointPair(const World::Impl& w, void (*visit)(void* context, int bodyA, int bodyB), void* context) {
@@ -362,12 +383,12 @@ void World::destroyJoint(JointId id) {
 }
 
 bool World::isValid(JointId id) const {
-    return store(*impl_).joints.isValid(id.index, id.generation);
+    return isLiveHandle(store(*impl_).joints, id, impl_->identity);
 }
 
 std::vector<JointId> World::joints() const {
     std::vector<JointId> ids;
-    store(*impl_).joints.forEachLive([&](int i, const Joint& j) { ids.push_back({i, j.generation}); });
+    store(*impl_).joints.forEachLive([&](int i, const Joint& j) { ids.push_back({i, j.generation, impl_->identity.issued}); });
     return ids;
 }
 
@@ -404,30 +425,32 @@ void World::setJointBreakLimits(JointId id, float maxForce, float maxTorque, boo
     j.destroyOnBreak = destroy;
 }
 
-// A joint breaks when |F| > breakForce or |τ| > breakTorque, F and τ its reaction on B over the
-// step's last substep (the accumulated impulses / hs, as jointReactionForce reports them).
-void breakJoints(World::Impl& w) {
+// A joint breaks when |F| > breakForce or |τ| > breakTorque, F and τ its reaction on B averaged
+// over the step: the impulses of all its substeps summed (JointScratch::stepImpulse) over h, so a
+// blow within one substep counts in full. Asleep joints were not solved and do not break.
+void breakJoints(World::Impl& w, const StepContext& ctx) {
     JointStore& s = store(w);
     JointScratch& d = jointScratch(w);
-    auto reaction = [&](const Joint& j) {
-        const JointReaction r = reactionOf(j);
-        return std::pair{s.invHs * r.linear, s.invHs * r.angular};  // force, torque
+    auto reaction = [&](int k) {
+        const JointReaction& r = d.stepImpulse[k];
+        return std::pair{ctx.invH * r.linear, ctx.invH * r.angular};  // force, torque
     };
-    auto overLimit = [&](int index) {
-        const Joint& j = s.joints[index];
-        if (!j.alive || (std::isinf(j.breakForce) && std::isinf(j.breakTorque))) return false;
-        const auto [force, torque] = reaction(j);
+    auto overLimit = [&](int k) {
+        if (!d.prepared[k].breakable) return false;
+        const Joint& j = s.joints[d.awake[k]];
+        const auto [force, torque] = reaction(k);
         return length(force) > j.breakForce || std::fabs(torque) > j.breakTorque;
     };
     // The workers find the joints over their limits; a break wakes bodies, so which of them are
     // awake is asked one by one, in store order, as the joints break.
     w.workers.parallelSelect(
-        s.joints.capacity(), overLimit, [&](int total) { d.breaking.resize(total); },
-        [&](int k, int index) { d.breaking[k] = index; });
-    for (int index : d.breaking) {
+        static_cast<int>(d.awake.size()), overLimit, [&](int total) { d.breaking.resize(total); },
+        [&](int k, int prepared) { d.breaking[k] = prepared; });
+    for (int k : d.breaking) {
+        const int index = d.awake[k];
         const Joint& j = s.joints[index];
         if (!w.bodies[j.bodyA].awake && !w.bodies[j.bodyB].awake) continue;  // asleep: nothing changed
-        const auto [force, torque] = reaction(j);
+        const auto [force, torque] = reaction(k);
         w.events.jointBreak.push_back({jointId(w, j), force, torque, j.destroyOnBreak, j.userData});
         if (j.destroyOnBreak) removeJoint(w, index);
     }

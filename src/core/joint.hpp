@@ -2,6 +2,8 @@
 #pragma once
 
 #include <memory>
+#include <utility>
+#include <vector>
 
 #include "core/step_context.hpp"
 #include "perpdot/world.hpp"
@@ -38,14 +40,16 @@ void storeJointImpulses(World::Impl& world, const StepContext& ctx);
 // After the substeps: a Newton step on the positions of each revolute tree (joint_tree.hpp).
 void projectJoints(World::Impl& world);
 
-// Reports (and destroys, where asked) the joints whose reaction passed their break limits this
-// step; run after storeJointImpulses.
-void breakJoints(World::Impl& world);
+// Reports (and destroys, where asked) the joints whose reaction, averaged over the step, passed
+// their break limits; run after storeJointImpulses.
+void breakJoints(World::Impl& world, const StepContext& ctx);
 
 // False when a joint between the two bodies has collideConnected == false.
 bool jointAllowsCollision(const World::Impl& world, int bodyA, int bodyB);
-// Destroys every joint attached to the body (called before the body goes).
-void destroyJointsOf(World::Impl& world, int body);
+// Destroys every joint attached to the body (called before the body goes). Returns the joints
+// (stale ids) and their userData where the world has a joint-destroyed callback, for destroyBody
+// to call it once the body is gone; otherwise nothing.
+std::vector<std::pair<JointId, void*>> destroyJointsOf(World::Impl& world, int body);
 // Calls visit(bodyA, bodyB) for every joint, for islands.
 void forEachJointPair(const World::Impl& world, void (*visit)(void* context, int bodyA, int bodyB), void* context);
 

@@ -126,8 +126,8 @@ void prepareDistance(PreparedJoint& j, const StepContext& ctx, const Body&, cons
     if (!ctx.enableWarmStarting) s.impulse = s.lowerImpulse = s.upperImpulse = 0.0f;
 }
 
-JointReaction reactionDistance(const Joint& j) {
-    const DistanceJoint& s = j.data.as<DistanceJoint>();
+JointReaction reactionDistance(const JointData& data) {
+    const DistanceJoint& s = data.as<DistanceJoint>();
     return {(s.impulse + s.lowerImpulse - s.upperImpulse) * s.axis, 0.0f};
 }
 

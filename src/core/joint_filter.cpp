@@ -16,7 +16,7 @@ constexpr auto fields(const FilterJoint*) { return std::tuple{}; }
 void prepareFilter(PreparedJoint&, const StepContext&, const Body&, const Body&) {}
 void warmStartFilter(PreparedJoint&, JointPair&) {}
 void solveFilter(PreparedJoint&, JointPair&, const StepContext&, bool) {}
-JointReaction reactionFilter(const Joint&) { return {}; }
+JointReaction reactionFilter(const JointData&) { return {}; }
 
 }  // namespace
 

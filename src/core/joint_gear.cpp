@@ -98,8 +98,8 @@ CoupledRow gearRow(const GearJoint& g, const SideNow& a, const SideNow& b) {
 Joint& makeJoint(World::Impl& w, const GearJointDef& def) {
     requireFinite(std::isfinite(def.ratio), "GearJointDef.ratio");
     if (def.ratio == 0.0f) throw Error("GearJointDef.ratio must not be 0");
-    const Joint& jointA = checkedJoint(w, def.jointA);
-    const Joint& jointB = checkedJoint(w, def.jointB);
+    const Joint& jointA = checkedJoint(w, def.jointA, "createJoint");
+    const Joint& jointB = checkedJoint(w, def.jointB, "createJoint");
     const GearSide sideA = gearSide(w, jointA, "jointA");
     const GearSide sideB = gearSide(w, jointB, "jointB");
     const int bodyA = jointA.bodyB, bodyB = jointB.bodyB;
@@ -138,8 +138,8 @@ void solveGear(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool useB
 }
 
 // On B: a torque for a revolute side, a force along the axis for a prismatic one.
-JointReaction reactionGear(const Joint& j) {
-    const GearJoint& g = j.data.as<GearJoint>();
+JointReaction reactionGear(const JointData& data) {
+    const GearJoint& g = data.as<GearJoint>();
     const float impulse = g.ratio * g.impulse;
     if (g.sideB.kind == JointType::Revolute) return {{}, impulse};
     return {impulse * g.sideB.axis, 0.0f};

@@ -96,10 +96,26 @@ void prepareMotor(PreparedJoint& j, const StepContext& ctx, const Body&, const B
     }
 }
 
-JointReaction reactionMotor(const Joint& j) { return {j.data.as<MotorJoint>().linearImpulse, j.data.as<MotorJoint>().angularImpulse}; }
+// The friction joint is the motor joint's rows at the anchors with no correction (rate 0): the
+// point rows drive vB + ωB perp(rB) − vA − ωA perp(rA) to zero, |λ| ≤ maxForce·hs, the angle row
+// ωB − ωA to zero, |λ| ≤ maxTorque·hs (Box2D 2.4's b2FrictionJoint).
+Joint& makeJoint(World::Impl& w, const FrictionJointDef& def) {
+    requireFinite(std::isfinite(def.maxForce) && std::isfinite(def.maxTorque), "FrictionJointDef limits");
+    if (def.maxForce < 0.0f || def.maxTorque < 0.0f) throw Error("FrictionJointDef: maxForce and maxTorque must be >= 0");
+    Joint& j = addJoint(w, JointType::Friction, def.bodyA, def.bodyB, def.localAnchorA, def.localAnchorB, 0.0f,
+                        def.collideConnected, def.userData);
+    MotorJoint& s = j.data.emplace<MotorJoint>();
+    s.maxForce = def.maxForce;
+    s.maxTorque = def.maxTorque;
+    return j;
+}
+
+JointReaction reactionMotor(const JointData& data) { return {data.as<MotorJoint>().linearImpulse, data.as<MotorJoint>().angularImpulse}; }
 
 template JointId World::createJoint(const MotorJointDef&);
-extern const JointKind motorKind = jointKind<MotorJoint>(
-    {prepareMotor, warmStartJoint<MotorRowSet>, solveJoint<MotorRowSet>, reactionMotor, &motorLanes});
+template JointId World::createJoint(const FrictionJointDef&);
+constexpr JointStages motorStages{prepareMotor, warmStartJoint<MotorRowSet>, solveJoint<MotorRowSet>, reactionMotor, &motorLanes};
+extern const JointKind motorKind = jointKind<MotorJoint>(motorStages);
+extern const JointKind frictionKind = jointKind<MotorJoint>(motorStages);
 
 }  // namespace perpdot

@@ -3,32 +3,12 @@
 // The target is anchor A, so it stays put in A's frame (A is normally static).
 #include <cmath>
 
+#include "core/joint_mouse.hpp"
 #include "core/joint_rows.hpp"
 #include "core/joint_type.hpp"
 #include "core/world_impl.hpp"
 
 namespace perpdot {
-
-namespace {
-
-// The target is anchor A (fixed in the world during a step: A is meant to be static).
-struct MouseJoint {
-    float hertz = 0, dampingRatio = 0, maxForce = 0;
-    Softness softness;
-    Vec2 linearImpulse;
-};
-
-static_assert(reviewedLayout<MouseJoint, 32>);
-constexpr auto fields(const MouseJoint*) {
-    using J = MouseJoint;
-    return std::tuple{field("hertz", &J::hertz).anyBits(),
-                      field("dampingRatio", &J::dampingRatio).anyBits(),
-                      field("maxForce", &J::maxForce).anyBits(),
-                      field("softness", &J::softness).anyBits(),
-                      field("linearImpulse", &J::linearImpulse).anyBits()};
-}
-
-}  // namespace
 
 Joint& makeJoint(World::Impl& w, const MouseJointDef& def) {
     requireFinite(isFinite(def.target), "MouseJointDef.target");
@@ -36,7 +16,7 @@ Joint& makeJoint(World::Impl& w, const MouseJointDef& def) {
                   "MouseJointDef spring");
     if (!(def.hertz > 0.0f) || def.dampingRatio < 0.0f || def.maxForce < 0.0f)
         throw Error("MouseJointDef: need hertz > 0, dampingRatio >= 0 and maxForce >= 0");
-    const Transform xfA = w.body(def.bodyA).xf, xfB = w.body(def.bodyB).xf;
+    const Transform xfA = w.body(def.bodyA, "createJoint").xf, xfB = w.body(def.bodyB, "createJoint").xf;
     Joint& j = addJoint(w, JointType::Mouse, def.bodyA, def.bodyB, invTransformPoint(xfA, def.target),
                         invTransformPoint(xfB, def.target), 0.0f, def.collideConnected, def.userData);
     MouseJoint& s = j.data.emplace<MouseJoint>();
@@ -64,7 +44,7 @@ void solveMouse(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool) {
     solvePointRows(p, f.rA, f.rB, f.d, s.softness, s.linearImpulse, s.maxForce * ctx.hs);
 }
 
-JointReaction reactionMouse(const Joint& j) { return {j.data.as<MouseJoint>().linearImpulse, 0.0f}; }
+JointReaction reactionMouse(const JointData& data) { return {data.as<MouseJoint>().linearImpulse, 0.0f}; }
 
 template JointId World::createJoint(const MouseJointDef&);
 extern const JointKind mouseKind = jointKind<MouseJoint>({prepareMouse, warmStartMouse, solveMouse, reactionMouse});

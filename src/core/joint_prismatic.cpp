@@ -125,8 +125,8 @@ void preparePrismatic(PreparedJoint& j, const StepContext& ctx, const Body& a, c
     }
 }
 
-JointReaction reactionPrismatic(const Joint& j) {
-    const PrismaticJoint& s = j.data.as<PrismaticJoint>();
+JointReaction reactionPrismatic(const JointData& data) {
+    const PrismaticJoint& s = data.as<PrismaticJoint>();
     return {(s.motorImpulse + s.lowerImpulse - s.upperImpulse) * s.axisA + s.impulse.x * perp(s.axisA), s.impulse.y};
 }
 

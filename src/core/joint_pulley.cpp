@@ -87,8 +87,8 @@ void solvePulley(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool us
 }
 
 // The rope's pull on B: ratio·λ along B's rope direction (λ < 0 while the rope is in tension).
-JointReaction reactionPulley(const Joint& j) {
-    const PulleyJoint& s = j.data.as<PulleyJoint>();
+JointReaction reactionPulley(const JointData& data) {
+    const PulleyJoint& s = data.as<PulleyJoint>();
     return {(s.ratio * s.impulse) * s.uB, 0.0f};
 }
 
@@ -97,6 +97,12 @@ std::pair<Vec2, Vec2> World::pulleyGroundAnchors(JointId id) const {
     if (j.type != JointType::Pulley) throw Error("pulleyGroundAnchors: not a pulley joint");
     const PulleyJoint& s = j.data.as<PulleyJoint>();
     return {s.groundA, s.groundB};
+}
+
+void shiftPulleyGround(Joint& j, Vec2 newOrigin) {
+    PulleyJoint& s = j.data.as<PulleyJoint>();
+    s.groundA -= newOrigin;
+    s.groundB -= newOrigin;
 }
 
 template JointId World::createJoint(const PulleyJointDef&);

@@ -7,13 +7,13 @@
 namespace perpdot {
 
 extern const JointKind revoluteKind, prismaticKind, distanceKind, weldKind, wheelKind, motorKind, mouseKind, gearKind,
-    pulleyKind, filterKind;
+    pulleyKind, filterKind, frictionKind;
 
 namespace {
 
 // In JointType's order; jointTypeCount (joint_store.hpp) names the last enumerator.
 constexpr std::array registry{&revoluteKind, &prismaticKind, &distanceKind, &weldKind, &wheelKind,
-                              &motorKind,    &mouseKind,     &gearKind,     &pulleyKind, &filterKind};
+                              &motorKind,    &mouseKind,     &gearKind,     &pulleyKind, &filterKind, &frictionKind};
 static_assert(registry.size() == jointTypeCount, "a JointType without a kind");
 
 }  // namespace

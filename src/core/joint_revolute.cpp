@@ -118,8 +118,8 @@ void warmStartRevolute(PreparedJoint& j, JointPair& p) { warmStartJoint<Revolute
 
 void solveRevolute(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool useBias) { solveJoint<RevoluteRowSet>(j, p, ctx, useBias); }
 
-JointReaction reactionRevolute(const Joint& j) {
-    const RevoluteJoint& r = j.data.as<RevoluteJoint>();
+JointReaction reactionRevolute(const JointData& data) {
+    const RevoluteJoint& r = data.as<RevoluteJoint>();
     return {r.linearImpulse, r.motorImpulse + r.lowerImpulse - r.upperImpulse};
 }
 

@@ -103,6 +103,7 @@ static_assert(std::is_trivially_copyable_v<Joint>, "the joint store is snapshott
 // of the step). Packed contiguously so that each pass streams only this, not the whole Joint.
 struct PreparedJoint {
     JointType type = JointType::Revolute;
+    bool breakable = false;  // it has break limits: solved alone, its substeps' impulses summed (breakJoints)
     int indexA = 0, indexB = 0;  // solver slots
     JointMass mass;
     Vec2 anchorA, anchorB;  // rA, rB: from each centre of mass to its anchor, at step start
@@ -128,6 +129,12 @@ inline JointPair pairOf(BodyState& a, BodyState& b, const std::vector<float>& st
 inline JointPair pairOf(std::vector<BodyState>& states, const std::vector<float>& stepRotation, const PreparedJoint& j) {
     return pairOf(states[j.indexA], states[j.indexB], stepRotation, j);
 }
+
+// Impulses on B per substep, turned into force and torque by the caller (× 1/hs).
+struct JointReaction {
+    Vec2 linear;
+    float angular = 0;
+};
 
 struct JointBlock;  // four joints of one type in SIMD lanes (joint_solver_wide.hpp)
 
@@ -160,12 +167,9 @@ struct JointScratch {
     std::vector<int8_t> laneRows;
     std::vector<std::array<int, 4>> blockLanes;  // by block: its lanes' k in prepared, -1 empty
     std::vector<int> breaking;  // breakJoints: the joints over their break limits, in store order
-};
-
-// Impulses on B per substep, turned into force and torque by the caller (× 1/hs).
-struct JointReaction {
-    Vec2 linear;
-    float angular = 0;
+    // Of prepared[k] where breakable: the impulses on B summed over the step's substeps (each
+    // substep's accumulated λ after its relax pass), zero elsewhere.
+    std::vector<JointReaction> stepImpulse;
 };
 
 // The common part of createJoint: checks the bodies, links the joint, wakes the bodies and,
@@ -173,8 +177,10 @@ struct JointReaction {
 Joint& addJoint(World::Impl& world, JointType type, BodyId bodyA, BodyId bodyB, Vec2 localAnchorA,
                 Vec2 localAnchorB, float referenceAngle, bool collideConnected, void* userData);
 JointId jointId(const World::Impl& world, const Joint& joint);
-// The live joint of `id`; Error for a stale or invalid id.
-Joint& checkedJoint(const World::Impl& world, JointId id);
+// A pulley's world ground anchors move by −newOrigin (World::shiftOrigin; joint_pulley.cpp).
+void shiftPulleyGround(Joint& pulley, Vec2 newOrigin);
+// The live joint of `id`; Error naming `call` (by default the caller) for a null, stale or foreign id.
+Joint& checkedJoint(const World::Impl& world, JointId id, const char* call = __builtin_FUNCTION());
 void requireFinite(bool ok, const char* what);  // Error "<what> must be finite" unless ok
 
 // A joint type's solver stages. prepare runs after the common frame (anchors, masses, deltaCenter,
@@ -187,7 +193,7 @@ struct JointStages {
     void (*prepare)(PreparedJoint& joint, const StepContext& ctx, const Body& a, const Body& b);
     void (*warmStart)(PreparedJoint& joint, JointPair& pair);
     void (*solve)(PreparedJoint& joint, JointPair& pair, const StepContext& ctx, bool useBias);
-    JointReaction (*reaction)(const Joint& joint);
+    JointReaction (*reaction)(const JointData& data);  // the accumulated impulses on B of one substep
     const JointLaneStages* lanes = nullptr;
 };
 
@@ -204,7 +210,7 @@ struct JointKind {
     float* (*motorSpeed)(JointData& data);  // for setMotorSpeed; null: the type has no motor
 };
 // How many joint types there are: JointType's last enumerator names it (a new type moves it there).
-constexpr int jointTypeCount = static_cast<int>(JointType::Filter) + 1;
+constexpr int jointTypeCount = static_cast<int>(JointType::Friction) + 1;
 
 // The kind of `type`; null for a number that names no type (read from a snapshot).
 const JointKind* kindOf(JointType type);

@@ -92,7 +92,7 @@ void prepareWeld(PreparedJoint& j, const StepContext& ctx, const Body&, const Bo
     }
 }
 
-JointReaction reactionWeld(const Joint& j) { return {j.data.as<WeldJoint>().linearImpulse, j.data.as<WeldJoint>().angularImpulse}; }
+JointReaction reactionWeld(const JointData& data) { return {data.as<WeldJoint>().linearImpulse, data.as<WeldJoint>().angularImpulse}; }
 
 template JointId World::createJoint(const WeldJointDef&);
 extern const JointKind weldKind = jointKind<WeldJoint>(

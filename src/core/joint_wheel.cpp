@@ -129,8 +129,8 @@ void prepareWheel(PreparedJoint& j, const StepContext& ctx, const Body& a, const
     if (!ctx.enableWarmStarting) s.perpImpulse = s.springImpulse = s.motorImpulse = 0.0f;
 }
 
-JointReaction reactionWheel(const Joint& j) {
-    const WheelJoint& s = j.data.as<WheelJoint>();
+JointReaction reactionWheel(const JointData& data) {
+    const WheelJoint& s = data.as<WheelJoint>();
     return {s.springImpulse * s.axisA + s.perpImpulse * perp(s.axisA), s.motorImpulse};
 }
 

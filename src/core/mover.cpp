@@ -15,6 +15,7 @@
 
 #include "collide/time_of_impact.hpp"
 #include "core/world_impl.hpp"
+#include "perpdot/portable_math.hpp"
 
 namespace perpdot {
 
@@ -44,7 +45,7 @@ struct Gap {
 class MoverSolver {
 public:
     MoverSolver(World::Impl& w, const MoverDef& def, const MoverState& s)
-        : w_(w), def_(def), body_(s.body.index), shape_(s.shape.index), cosMaxSlope_(std::cos(def.maxSlope)) {}
+        : w_(w), def_(def), body_(s.body.index), shape_(s.shape.index), cosMaxSlope_(sinCos(def.maxSlope).cos) {}
 
     bool walkable(Vec2 normal) const { return normal.y >= cosMaxSlope_; }
 
@@ -302,7 +303,7 @@ void World::moveMover(const MoverDef& def, MoverState& s, const MoverInput& inpu
     // (1) Being pushed: out of what moved in, and the momentum dynamic bodies gave the body.
     s.position += solver.recover(s.position);
     s.pushVelocity += solver.pushedVelocity();
-    if (wasGrounded) s.pushVelocity = std::exp(-def.pushDamping * dt) * s.pushVelocity;
+    if (wasGrounded) s.pushVelocity = exp(-def.pushDamping * dt) * s.pushVelocity;
 
     // (2) Ride the platform: its point velocity under the feet over the step that just moved it.
     if (wasGrounded && isValid(s.ground)) {

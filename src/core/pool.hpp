@@ -14,12 +14,10 @@
 #include <cstdint>
 #include <memory>
 #include <span>
-#include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
 
-#include "perpdot/error.hpp"
 
 namespace perpdot {
 
@@ -54,21 +52,6 @@ public:
         requires hasGeneration
     {
         return index >= 0 && index < capacity() && items_[index].alive && items_[index].generation == generation;
-    }
-
-    // The live item of id (index, generation); `what` names the id type in the Error for a stale or invalid one.
-    const T& checked(int index, uint32_t generation, const char* what) const
-        requires hasGeneration
-    {
-        if (!isValid(index, generation))
-            throw Error(std::string("stale or invalid ") + what + " (index " + std::to_string(index) + ", generation " +
-                        std::to_string(generation) + ")");
-        return items_[index];
-    }
-    T& checked(int index, uint32_t generation, const char* what)
-        requires hasGeneration
-    {
-        return const_cast<T&>(std::as_const(*this).checked(index, generation, what));
     }
 
     // A value-initialised live item in the last freed slot, or in a new one; it keeps the slot's generation.

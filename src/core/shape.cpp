@@ -40,6 +40,11 @@ void validateGeometry(const Segment& s) {
 void validateGeometry(const Chain& c) {
     const size_t minimum = c.loop ? 3 : 2;
     if (c.vertices.size() < minimum) throw Error("chain needs at least " + std::to_string(minimum) + " vertices");
+    if (c.solid != ChainSide::Right && c.solid != ChainSide::Left) throw Error("chain solid side is neither Right nor Left");
+    if (c.loop && (c.prevVertex || c.nextVertex)) throw Error("a chain loop takes no prevVertex or nextVertex (its neighbours are its own)");
+    for (const std::optional<Vec2>& ghost : {c.prevVertex, c.nextVertex})
+        if (ghost && (!isFinite(*ghost) || !withinShapeRange(*ghost)))
+            throw Error("chain ghost vertex is not finite or more than 100000 m from the body origin");
     for (size_t i = 0; i < c.vertices.size(); ++i) {
         if (!isFinite(c.vertices[i])) throw Error("chain vertex " + std::to_string(i) + " is not finite");
         if (!withinShapeRange(c.vertices[i])) throw Error("chain vertex " + std::to_string(i) + " is more than 100000 m from the body origin");
@@ -72,7 +77,7 @@ void requireFiniteMass(const ShapeData::Geometry& geometry, float density) {
 template <class Geometry>
 ShapeId create(World::Impl& w, BodyId bodyId, const ShapeDef& def, const Geometry& geometry) {
     w.checkUnlocked("createShape");
-    w.body(bodyId);
+    w.body(bodyId, "createShape");
     validate(def);
     validateGeometry(geometry);
     requireFiniteMass(geometry, def.density);
@@ -89,11 +94,13 @@ ShapeId create(World::Impl& w, BodyId bodyId, const ShapeDef& def, const Geometr
 
 }  // namespace
 
-ShapeData& World::Impl::shape(ShapeId id) {
-    return const_cast<ShapeData&>(static_cast<const Impl*>(this)->shape(id));
+ShapeData& World::Impl::shape(ShapeId id, const char* call) {
+    return const_cast<ShapeData&>(static_cast<const Impl*>(this)->shape(id, call));
 }
 
-const ShapeData& World::Impl::shape(ShapeId id) const { return shapes.checked(id.index, id.generation, "ShapeId"); }
+const ShapeData& World::Impl::shape(ShapeId id, const char* call) const {
+    return checkedItem(shapes, id, identity, "ShapeId", call);
+}
 
 int World::Impl::addShape(BodyId bodyId, const ShapeDef& def) {
     const int index = shapes.create();
@@ -122,6 +129,7 @@ void World::Impl::createProxies(int index) {
     forgetBoxRoom(s.body);
     s.type = static_cast<ShapeType>(s.geometry.index());
     const Transform& xf = bodies[s.body].xf;
+    if (!s.enabled || !bodies[s.body].enabled) return;  // out of the broadphase (World::setEnabled)
     const bool isStatic = bodies[s.body].type == BodyType::Static;
     const int children = collision.childCount(index);
     s.proxies.resize(children);
@@ -200,7 +208,7 @@ void World::destroyShape(ShapeId id) {
     w.wake(bodyIndex);
 }
 
-bool World::isValid(ShapeId id) const { return impl_->shapes.isValid(id.index, id.generation); }
+bool World::isValid(ShapeId id) const { return isLiveHandle(impl_->shapes, id, impl_->identity); }
 
 std::vector<ShapeId> World::shapes(BodyId body) const {
     std::vector<ShapeId> ids;
@@ -234,7 +242,7 @@ AABB World::aabb(ShapeId id) const {
     const ShapeData& s = impl_->shape(id);
     const Transform& xf = impl_->bodies[s.body].xf;
     AABB box = impl_->collision.computeAABB(id.index, 0, xf);
-    for (int child = 1; child < static_cast<int>(s.proxies.size()); ++child) {
+    for (int child = 1; child < impl_->collision.childCount(id.index); ++child) {
         box = combine(box, impl_->collision.computeAABB(id.index, child, xf));
     }
     return box;

@@ -17,6 +17,7 @@ struct ShapeData {
     bool alive = false;
     int body = -1;
     ShapeType type = ShapeType::Circle;
+    bool enabled = true;  // World::setEnabled(ShapeId): false keeps it out of the broadphase
     using Geometry = std::variant<Circle, Polygon, Segment, Chain, Capsule>;  // index = ShapeType
     Geometry geometry;
     float density = 1, friction = 0.6f, restitution = 0;

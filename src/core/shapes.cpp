@@ -5,6 +5,7 @@
 #include <string>
 
 #include "perpdot/error.hpp"
+#include "perpdot/portable_math.hpp"
 #include "perpdot/shapes.hpp"
 
 namespace perpdot {
@@ -62,7 +63,7 @@ Polygon makePolygon(std::span<const Vec2> points, float radius) {
     for (int i = 0; i < n; ++i) {
         const Vec2 e1 = poly.vertices[(i + 1) % n] - poly.vertices[i];
         const Vec2 e2 = poly.vertices[(i + 2) % n] - poly.vertices[(i + 1) % n];
-        turning += std::atan2(perpDot(e1, e2), dot(e1, e2));
+        turning += atan2(perpDot(e1, e2), dot(e1, e2));
     }
     if (std::fabs(turning - 2.0f * pi) > 1.0e-3f) throw Error("polygon is not convex");
     return poly;
@@ -130,10 +131,10 @@ MassData computeMass(const Polygon& polygon, float density) {
             parts[count++] = {m, 0.5f * (a + b) + (0.5f * r) * outwardNormal(i), m * (len * len + r * r) / 12.0f};
 
             const Vec2 n0 = outwardNormal((i + n - 1) % n), n1 = outwardNormal(i);
-            const float phi = std::atan2(perpDot(n0, n1), dot(n0, n1));  // exterior angle at vertex a
+            const float phi = atan2(perpDot(n0, n1), dot(n0, n1));  // exterior angle at vertex a
             const float ms = density * 0.5f * r * r * phi;
             // Sector centroid lies on the bisector at 4 r sin(φ/2) / (3φ) from the vertex.
-            const float d = 4.0f * r * std::sin(0.5f * phi) / (3.0f * phi);
+            const float d = 4.0f * r * sinCos(0.5f * phi).sin / (3.0f * phi);
             parts[count++] = {ms, a + d * normalize(n0 + n1), ms * (0.5f * r * r - d * d)};
         }
     }

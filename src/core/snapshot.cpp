@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <bit>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <unordered_set>
 
@@ -99,7 +100,12 @@ void writeGeometry(ByteWriter& out, const ShapeData& s) {
         const Chain& chain = std::get<Chain>(s.geometry);
         out.u32(static_cast<uint32_t>(chain.vertices.size()));
         for (Vec2 v : chain.vertices) out.vec2(v);
-        out.boolean(chain.loop);
+        // The loop byte's bits: loop, solid on the right, prevVertex and nextVertex follow (a chain
+        // of the code before ChainSide has the bits 0 and so its one side, Left).
+        out.u8(static_cast<uint8_t>((chain.loop ? 1 : 0) | (chain.solid == ChainSide::Right ? 2 : 0) |
+                                    (chain.prevVertex ? 4 : 0) | (chain.nextVertex ? 8 : 0)));
+        if (chain.prevVertex) out.vec2(*chain.prevVertex);
+        if (chain.nextVertex) out.vec2(*chain.nextVertex);
     }
 }
 
@@ -145,7 +151,12 @@ void readGeometry(ByteReader& in, ShapeData& s, const ShapeData* held) {
                 Chain chain;
                 chain.vertices.resize(in.count(8, "chain vertex"));
                 for (Vec2& v : chain.vertices) v = in.finiteVec2();
-                chain.loop = in.boolean();
+                const uint8_t bits = in.u8();
+                if (bits > 15) in.fail("chain flags " + std::to_string(bits) + " are not valid");
+                chain.loop = (bits & 1) != 0;
+                chain.solid = (bits & 2) != 0 ? ChainSide::Right : ChainSide::Left;
+                if ((bits & 4) != 0) chain.prevVertex = in.finiteVec2();
+                if ((bits & 8) != 0) chain.nextVertex = in.finiteVec2();
                 validateGeometry(chain);
                 s.geometry = std::move(chain);
                 break;
@@ -367,6 +378,7 @@ std::vector<uint8_t> writeSnapshot(const World::Impl& w, bool futureOnly) {
     }
     writePending(out, w.events.contactEnd, w.events.contactEndReported);
     writePending(out, w.events.sensorEnd, w.events.sensorEndReported);
+    out.u32(w.identity.issued);  // since format 5: the handles this World issued are valid where it is restored
     return std::move(out.bytes);
 }
 
@@ -476,6 +488,11 @@ void World::restore(std::span<const uint8_t> bytes) {
         w.events.contactEnd = readPending<ContactEndTouchEvent>(in);
         w.events.sensorEnd = readPending<SensorEndTouchEvent>(in);
     }
+    std::optional<uint32_t> snapshotIdentity;
+    if (in.version >= 5) {
+        snapshotIdentity = in.u32();
+        if (*snapshotIdentity == 0) in.fail("world identity 0 is no World's");
+    }
     in.expectEnd();
 
     // Everything is checked: build the geometry and the broadphase — or, when this world's
@@ -486,12 +503,16 @@ void World::restore(std::span<const uint8_t> bytes) {
     for (int i = 0; i < shapeCount; ++i) {
         if (!shapeAlive[i]) continue;
         ShapeData& s = w.shapes[i];
+        // A shape out of the broadphase (World::setEnabled) has no proxies, one in it one per child.
+        const collide::CollisionSystem& geometry = keepBroadphase ? impl_->collision : w.collision;
+        if (!keepBroadphase) std::visit([&](const auto& g) { w.collision.setGeometry(i, g); }, s.geometry);
+        const bool inBroadphase = s.enabled && w.bodies[s.body].enabled;
+        if ((inBroadphase ? geometry.childCount(i) : 0) != static_cast<int>(savedProxies[i].size()))
+            in.fail("proxy count does not match the shape");
         if (keepBroadphase) {
             s.proxies = impl_->shapes[i].proxies;
             continue;
         }
-        std::visit([&](const auto& g) { w.collision.setGeometry(i, g); }, s.geometry);
-        if (w.collision.childCount(i) != static_cast<int>(savedProxies[i].size())) in.fail("proxy count does not match the shape");
         for (int child = 0; child < static_cast<int>(savedProxies[i].size()); ++child)
             s.proxies.push_back(w.collision.restoreProxy(savedProxies[i][static_cast<size_t>(child)], {i, child},
                                                          w.bodies[s.body].type == BodyType::Static));
@@ -519,7 +540,14 @@ void World::restore(std::span<const uint8_t> bytes) {
         // are this world's, not the snapshot's.
         for (int proxy : fresh->movedProxies) fresh->collision.requery(proxy);
     }
-    fresh->preSolve = std::move(impl_->preSolve);  // a setting of this World, not of the state
+    fresh->preSolve = std::move(impl_->preSolve);  // settings of this World, not of the state
+    fresh->jointDestroyed = std::move(impl_->jointDestroyed);
+    fresh->shouldCollide = std::move(impl_->shouldCollide);
+    // The snapshotted World's identity (ids.hpp): the handles valid when it was taken are valid
+    // here, and so are this World's own. A snapshot of format < 5 has none: this World's stays.
+    fresh->identity = {.issued = snapshotIdentity.value_or(impl_->identity.issued), .own = impl_->identity.own};
+    for (ContactEndTouchEvent& e : fresh->events.contactEnd) e.shapeA.world = e.shapeB.world = fresh->identity.issued;
+    for (SensorEndTouchEvent& e : fresh->events.sensorEnd) e.sensorShape.world = e.visitorShape.world = fresh->identity.issued;
     // The threads are the restoring machine's, not the snapshot's: the world keeps its own workers.
     fresh->def.workerCount = impl_->def.workerCount;
     fresh->def.enqueueTask = impl_->def.enqueueTask;

@@ -19,8 +19,10 @@ namespace perpdot {
 // 1: joint type data as raw struct bytes. 2: every struct through its field list. 3: end events
 // raised between steps (a body or shape destroyed), which the next step reports. 4: kept
 // manifolds (manifold_reuse.hpp), WorldDef::contactReuseDistance and box2dSkin (older: true),
-// joints' break limits.
-constexpr uint32_t formatVersion = 4;
+// joints' break limits. 5: bodies and shapes taken out of the simulation (World::setEnabled); a
+// chain's loop byte also holds its solid side and whether ghost vertices follow (bits 2, 4, 8: 0 in
+// older files, whose chains were solid on the left).
+constexpr uint32_t formatVersion = 5;
 
 // --- math ---
 
@@ -80,7 +82,8 @@ constexpr auto fields(const Body*) {
                       field("allowSleep", &Body::allowSleep),
                       field("awake", &Body::awake),
                       field("jointCount", &Body::jointCount),
-                      field("islandNext", &Body::islandNext)};
+                      field("islandNext", &Body::islandNext),
+                      field("enabled", &Body::enabled).since(5)};
 }
 
 constexpr auto fields(const Filter*) {
@@ -104,7 +107,8 @@ constexpr auto fields(const ShapeData*) {
                       field("enableHitEvents", &S::enableHitEvents),
                       field("enableSensorEvents", &S::enableSensorEvents),
                       field("enablePreSolveEvents", &S::enablePreSolveEvents),
-                      field("filter", &S::filter)};
+                      field("filter", &S::filter),
+                      field("enabled", &S::enabled).since(5)};
 }
 
 // --- contacts: any float bits (see Field::anyBits) ---

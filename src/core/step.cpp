@@ -3,6 +3,7 @@
 // one restitution pass, and the impulses are kept for the next step's warm start.
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "core/stages.hpp"
 
@@ -31,7 +32,9 @@ StepContext makeStepContext(const World::Impl& w, float h) {
 
 void World::step(float timeStep) {
     Impl& w = *impl_;
-    if (!(timeStep > 0.0f) || !std::isfinite(timeStep) || w.locked) return;
+    if (w.locked) throw Error("World::step: called during step() (from a callback); step after it returns");
+    if (!(timeStep >= 0.0f) || !std::isfinite(timeStep))
+        throw Error("World::step: the time step must be finite and >= 0, not " + std::to_string(timeStep));
     // Unlocks however step() ends: an exception thrown by the user's pre-solve callback leaves
     // the step unfinished but the world usable.
     struct Lock {
@@ -48,6 +51,11 @@ void World::step(float timeStep) {
 
     updatePairs(w);     // pairs: proxies that left their fat AABB meet new partners
     updateContacts(w);  // narrowphase: each contact keeps its manifold or takes a new one
+    if (timeStep == 0.0f) {  // Box2D 2.4's Step(0): the contacts and their events, no motion
+        releaseApartContacts(w);
+        w.events.endStep();
+        return;
+    }
 
     StepContext ctx = makeStepContext(w, timeStep);
     integrateVelocities(w, ctx);
@@ -66,7 +74,7 @@ void World::step(float timeStep) {
     reportHitEvents(w);
     finishTreeRefit(w);
     finalizeBodies(w, ctx);  // positions back into the bodies; continuous collision
-    breakJoints(w);          // joints whose reaction passed their break limits
+    breakJoints(w, ctx);     // joints whose reaction over the step passed their break limits
 
     updateSleep(w, timeStep);  // sleep: islands at rest
     w.events.endStep();

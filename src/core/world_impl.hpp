@@ -14,6 +14,7 @@
 #include "core/box_room.hpp"
 #include "core/contact_cache.hpp"
 #include "core/event_buffers.hpp"
+#include "core/handle_check.hpp"
 #include "core/joint.hpp"
 #include "core/shape_store.hpp"
 #include "core/step_scratch.hpp"
@@ -25,6 +26,8 @@ namespace perpdot {
 
 struct World::Impl {
     WorldDef def;
+    // This World's identity, carried by the handles it issues (ids.hpp, handle_check.hpp).
+    WorldIdentity identity;
     // The owned parts (docs/architecture.md): the stores, the broadphase with its move buffer,
     // and the step's working arrays.
     Pool<Body> bodies;
@@ -41,20 +44,23 @@ struct World::Impl {
 
     EventBuffers events;  // of the last step (event_buffers.hpp, events.cpp)
     PreSolveFn preSolve;
+    JointDestroyedFn jointDestroyed;  // World::setJointDestroyedCallback: called by destroyBody
+    ShouldCollideFn shouldCollide;  // World::setShouldCollide, asked by addPair (contact_cache.cpp)
     // The state the last restore replaced (snapshot.cpp): the next restore reads into its pools' memory.
     std::unique_ptr<Impl> spare;
 
     Impl(const WorldDef& d);
 
-    // Checked access: a stale or foreign id throws perpdot::Error.
-    Body& body(BodyId id);
-    const Body& body(BodyId id) const;
-    ShapeData& shape(ShapeId id);
-    const ShapeData& shape(ShapeId id) const;
+    // Checked access: a null, stale or foreign id throws perpdot::Error naming `call`, by default
+    // the World call this is called from (handle_check.hpp).
+    Body& body(BodyId id, const char* call = __builtin_FUNCTION());
+    const Body& body(BodyId id, const char* call = __builtin_FUNCTION()) const;
+    ShapeData& shape(ShapeId id, const char* call = __builtin_FUNCTION());
+    const ShapeData& shape(ShapeId id, const char* call = __builtin_FUNCTION()) const;
     void checkUnlocked(const char* what) const;
 
-    BodyId bodyId(int index) const { return {index, bodies[index].generation}; }
-    ShapeId shapeId(int index) const { return {index, shapes[index].generation}; }
+    BodyId bodyId(int index) const { return {index, bodies[index].generation, identity.issued}; }
+    ShapeId shapeId(int index) const { return {index, shapes[index].generation, identity.issued}; }
 
     // Bodies (body.cpp)
     void updateMass(int body);

@@ -7,6 +7,7 @@
 
 #include "collide/b2_convert.hpp"
 #include "collide/capsule_b2.hpp"
+#include "collide/collision.hpp"
 #include "collide/polygon_b2.hpp"
 #include "crosscheck/stepper.hpp"
 #include "perpdot/error.hpp"
@@ -57,16 +58,17 @@ b2FixtureDef fixtureDef(const SceneShape& s, const b2Shape* shape) {
     return def;
 }
 
-// Open chains: Box2D 2.4 wants ghost vertices; continue the end segments straight on, so a shape
-// sliding off an end meets no phantom corner.
-void createChain(b2ChainShape& chain, const std::vector<b2Vec2>& v, bool loop) {
-    if (loop) {
+// The chain in Box2D's order (solid on the left) with perpdot's ghost vertices: those given, or the
+// end segments continued straight on, so a shape sliding off an end meets no phantom corner.
+void createChain(b2ChainShape& chain, const SceneShape& s) {
+    const collide::ChainPath path = collide::box2dChainPath(Chain{s.vertices, s.loop, s.solid, s.prevVertex, s.nextVertex});
+    std::vector<b2Vec2> v;
+    for (Vec2 p : path.vertices) v.push_back(toB2(p));
+    if (s.loop) {
         chain.CreateLoop(v.data(), int32(v.size()));
         return;
     }
-    const b2Vec2 prev = v[0] + (v[0] - v[1]);
-    const b2Vec2 next = v.back() + (v.back() - v[v.size() - 2]);
-    chain.CreateChain(v.data(), int32(v.size()), prev, next);
+    chain.CreateChain(v.data(), int32(v.size()), toB2(path.prev), toB2(path.next));
 }
 
 void createFixture(b2Body* body, const SceneShape& s) {
@@ -115,10 +117,8 @@ void createFixture(b2Body* body, const SceneShape& s) {
         return;
     }
     case SceneShape::Kind::Chain: {
-        std::vector<b2Vec2> v;
-        for (Vec2 p : s.vertices) v.push_back(toB2(p));
         b2ChainShape chain;
-        createChain(chain, v, s.loop);
+        createChain(chain, s);
         const b2FixtureDef def = fixtureDef(s, &chain);
         body->CreateFixture(&def);
         return;

@@ -81,19 +81,18 @@ bool inside(const std::vector<Vec2>& outline, Vec2 p) {
     return in;
 }
 
-// The lowest centre of the static bodies' shapes, world: the floor everything should stay above.
-float lowestStaticCenter(const Scene& scene) {
+// The lowest centre of the shapes of the static body named "ground", world: the floor everything
+// should stay above (a catcher below it, as in `compounds`, is another body).
+float groundFloor(const Scene& scene) {
+    const SceneBody& ground = scene.bodies[findBody(scene, "ground").scene];
     float floor = std::numeric_limits<float>::max();
-    for (const SceneBody& b : scene.bodies) {
-        if (b.type != BodyType::Static) continue;
-        const Transform frame{b.position, Rot::fromAngle(b.angle)};
-        for (const SceneShape& s : b.shapes) {
-            const bool line = s.kind == SceneShape::Kind::Segment;
-            floor = std::min(floor, transformPoint(frame, line ? 0.5f * (s.v1 + s.v2) : s.center).y);
-        }
+    const Transform frame{ground.position, Rot::fromAngle(ground.angle)};
+    for (const SceneShape& s : ground.shapes) {
+        const bool line = s.kind == SceneShape::Kind::Segment;
+        floor = std::min(floor, transformPoint(frame, line ? 0.5f * (s.v1 + s.v2) : s.center).y);
     }
-    if (floor == std::numeric_limits<float>::max())
-        throw Error("scene \"" + scene.name + "\": its stability figure needs a static floor");
+    if (ground.type != BodyType::Static || floor == std::numeric_limits<float>::max())
+        throw Error("scene \"" + scene.name + "\": its stability figure needs a static body \"ground\" with shapes");
     return floor;
 }
 
@@ -113,7 +112,7 @@ Momentum linearMomentum(const std::vector<BodySample>& bodies) {
 }  // namespace
 
 StabilityProbe::StabilityProbe(const Scene& scene) {
-    if (scene.name == "bench_tumbler" || scene.name == "spinner") {
+    if (scene.name == "bench_tumbler" || scene.name == "spinner" || scene.name == "washer") {
         kind_ = Kind::Escaped;
         const Found container = findBody(scene, "container");
         const SceneBody& body = scene.bodies[container.scene];
@@ -122,9 +121,9 @@ StabilityProbe::StabilityProbe(const Scene& scene) {
         outline_ = insideOutline(body);
     } else if (scene.name == "smash") {
         kind_ = Kind::MomentumError;
-    } else if (scene.name == "ragdoll_rain") {
+    } else if (scene.name == "ragdoll_rain" || scene.name == "junkyard" || scene.name == "compounds") {
         kind_ = Kind::BelowFloor;
-        floor_ = lowestStaticCenter(scene);
+        floor_ = groundFloor(scene);
     } else {
         top_ = topBody(scene);
     }

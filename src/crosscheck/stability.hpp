@@ -1,9 +1,9 @@
 // The stability figure `perpdot bench` prints beside the timings: one number per engine that says
 // whether the fast run is also a sound one. Which figure depends on the scene (docs/crosscheck.md):
 //   pyramids, joint_grid, any other scene   top fell        m       how far the initially highest dynamic body went down
-//   bench_tumbler, spinner                  escaped         bodies  centres of mass outside the body named "container"
+//   bench_tumbler, spinner, washer          escaped         bodies  centres of mass outside the body named "container"
 //   smash                                   momentum error  of p0   |Σ m v (end) − Σ m v (start)| / |Σ m v (start)|
-//   ragdoll_rain                            below floor     bodies  centres of mass below the lowest static shape's centre
+//   ragdoll_rain, junkyard, compounds       below floor     bodies  centres of mass below the lowest shape centre of "ground"
 #pragma once
 
 #include <vector>

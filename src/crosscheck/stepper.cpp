@@ -1,6 +1,6 @@
 // The two Steppers: perpdot's SceneWorld and Box2D's b2World, sampled into the same BodySample.
-// Each is also the SceneEditor of the scene's script, so both engines spawn and destroy the same
-// bodies before the same steps.
+// Each is also the SceneEditor of the scene's script, so both engines spawn, destroy and drive the
+// same bodies before the same steps.
 #include "crosscheck/stepper.hpp"
 
 #include <string>
@@ -33,6 +33,14 @@ public:
 private:
     std::vector<std::vector<Body>> groups_;
 };
+
+// A script's body index, checked against the scene's body count.
+size_t sceneBodyIndex(int sceneBody, size_t bodyCount) {
+    if (sceneBody < 0 || size_t(sceneBody) >= bodyCount)
+        throw Error("scene script: setVelocity() of body " + std::to_string(sceneBody) + ", but the scene has " +
+                    std::to_string(bodyCount) + " bodies");
+    return size_t(sceneBody);
+}
 
 BodySample samplePerpdot(const World& w, BodyId id) {
     const bool dynamic = w.bodyType(id) == BodyType::Dynamic;
@@ -85,6 +93,11 @@ private:
     void destroy(Group group) override {
         for (const BodyId body : spawned_.take(group)) scene_.world.destroyBody(body);
     }
+    void setVelocity(int sceneBody, Vec2 linearVelocity, float angularVelocity) override {
+        const BodyId body = scene_.bodies[sceneBodyIndex(sceneBody, scene_.bodies.size())];
+        scene_.world.setLinearVelocity(body, linearVelocity);
+        scene_.world.setAngularVelocity(body, angularVelocity);
+    }
 
     SceneWorld scene_;
     std::unique_ptr<SceneScript> script_;
@@ -121,6 +134,11 @@ private:
     Group spawn(const Scene& fragment) override { return spawned_.add(scene_.add(fragment)); }
     void destroy(Group group) override {
         for (b2Body* body : spawned_.take(group)) scene_.destroy(body);
+    }
+    void setVelocity(int sceneBody, Vec2 linearVelocity, float angularVelocity) override {
+        b2Body* body = scene_.body(int(sceneBodyIndex(sceneBody, scene_.scene().bodies.size())));
+        body->SetLinearVelocity({linearVelocity.x, linearVelocity.y});
+        body->SetAngularVelocity(angularVelocity);
     }
 
     Box2DScene scene_;

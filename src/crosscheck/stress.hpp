@@ -1,4 +1,4 @@
-// The torture suite of `perpdot stress` (issue 13): the built-in scenes stress_<case>, each run
+// The torture suite of `perpdot stress`: the built-in scenes stress_<case>, each run
 // in one engine and judged by one figure against a criterion, the issue's target for perpdot.
 #pragma once
 

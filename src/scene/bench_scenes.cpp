@@ -1,9 +1,10 @@
-// The large scenes of the benchmarks, built as Box2D v3's benchmark suite builds them
-// (sleeping off, so every step solves every body; dt = 1/60).
+// The large scenes of the benchmarks, built as Box2D v3's benchmark suite builds them (dt = 1/60;
+// sleeping off where v3 turns it off, so every step solves every body).
 #include <cmath>
 #include <string>
 
 #include "scene/builtin_registry.hpp"
+#include "perpdot/portable_math.hpp"
 #include "scene/scene_builders.hpp"
 
 namespace perpdot {
@@ -96,8 +97,8 @@ Scene spinner() {
     const int points = 360;
     SceneShape loop{.kind = SceneShape::Kind::Chain, .loop = true, .friction = 0.1f};
     for (int i = 0; i < points; ++i) {
-        const float a = -2.0f * pi * static_cast<float>(i) / points;
-        loop.vertices.push_back({loopCenter.x + loopRadius * std::cos(a), loopCenter.y + loopRadius * std::sin(a)});
+        const SinCos a = sinCos(-2.0f * pi * static_cast<float>(i) / points);
+        loop.vertices.push_back({loopCenter.x + loopRadius * a.cos, loopCenter.y + loopRadius * a.sin});
     }
     addBody(s, {.name = "container", .type = BodyType::Static, .shapes = {loop}});
 
@@ -113,7 +114,10 @@ Scene spinner() {
     s.joints.push_back(motor);
 
     std::vector<Vec2> hexagon;
-    for (int k = 0; k < 6; ++k) hexagon.push_back({0.22f * std::cos(k * pi / 3.0f), 0.22f * std::sin(k * pi / 3.0f)});
+    for (int k = 0; k < 6; ++k) {
+        const SinCos a = sinCos(k * pi / 3.0f);
+        hexagon.push_back({0.22f * a.cos, 0.22f * a.sin});
+    }
     const SceneShape kinds[] = {boxShape(0.2f, 0.2f), circleShape(0.2f), polygonShape(hexagon)};
     const int count = 6000;
     const float spacing = 0.5f, halfRow = 23.0f, barClearance = 0.75f;
@@ -282,9 +286,9 @@ Scene motorSwarm() {
         const Vec2 p{-15.0f + 1.5f * static_cast<float>(column), 4.0f + 1.5f * static_cast<float>(row)};
         const std::string name = "hover" + std::to_string(k);
         addBody(s, {.name = name, .position = p, .allowSleep = false, .shapes = {boxShape(0.3f, 0.3f)}});
-        const float phase = 0.7f * static_cast<float>(k);
+        const SinCos phase = sinCos(0.7f * static_cast<float>(k));
         SceneJoint motor{.type = JointType::Motor, .bodyA = "ground", .bodyB = name};
-        motor.linearOffset = p + 0.5f * Vec2{std::cos(phase), std::sin(phase)};
+        motor.linearOffset = p + 0.5f * Vec2{phase.cos, phase.sin};
         motor.angularOffset = 0.4f * static_cast<float>(k % 5 - 2);
         motor.maxForce = k % 2 == 0 ? 20.0f : 2.0f;  // a box weighs 3.6 N
         motor.maxTorque = (k / 2) % 2 == 0 ? 10.0f : 0.05f;
@@ -301,6 +305,60 @@ Scene motorSwarm() {
         motor.maxForce = 10.0f, motor.maxTorque = 1.0f;
         s.joints.push_back(motor);
     }
+    return s;
+}
+
+// A drum turning at 25°/s, tumbling 90 × 90 = 8,100 boxes of 0.2 m, as Box2D v3's "washer"
+// benchmark builds it. The drum is a kinematic body 10 m up (drifting at (1, -2) mm/s, as v3's
+// does): a ring of 36 blocks between radii 16 and 18 m, each spanning 12° so that neighbours
+// overlap by 2°, and every 90° a paddle between radii 14 and 16 m. Sleep on, 500 steps.
+Scene washer() {
+    Scene s;
+    s.steps = 500;
+    const Vec2 center{0.0f, 10.0f};
+    const float r0 = 14.0f, r1 = 16.0f, r2 = 18.0f, block = 10.0f * degrees, overlap = degrees;
+    const auto direction = [](float angle) {
+        const SinCos turned = sinCos(angle);
+        return Vec2{turned.cos, turned.sin};
+    };
+    SceneBody drum{.name = "container", .type = BodyType::Kinematic, .position = center, .linearVelocity = {0.001f, -0.002f},
+                   .angularVelocity = 25.0f * degrees, .allowSleep = false};
+    for (int i = 0; i < 36; ++i) {
+        const float a = block * static_cast<float>(i), b = block * static_cast<float>(i + 1);
+        const Vec2 u1 = direction(a - overlap), u2 = direction(b + overlap);
+        drum.shapes.push_back(polygonShape({r1 * u1, r2 * u1, r2 * u2, r1 * u2}));
+        if (i % 9 == 0) drum.shapes.push_back(polygonShape({r0 * direction(a), r1 * direction(a), r1 * direction(b), r0 * direction(b)}));
+    }
+    addBody(s, std::move(drum));
+    const int grid = 90;
+    const float half = 0.1f, spacing = 2.1f * half, start = -1.1f * half * grid;
+    for (int i = 0; i < grid; ++i)
+        for (int j = 0; j < grid; ++j)
+            addBody(s, {.position = {start + spacing * j, center.y + start + spacing * i}, .shapes = {boxShape(half, half)}});
+    return s;
+}
+
+// 20 × 150 = 3,000 bodies, each a compound of two crossed triangles (density 1, friction 0.5),
+// dropped in columns 2 m apart, 2.25 m above each other, into a bin 80 m wide with walls 100 m
+// high, as Box2D v3's "compounds" benchmark builds them. A static segment 80 m below the floor
+// (v3 puts it on the bin's body; here it is a body of its own, the same physics) catches what
+// leaves the bin. Sleep on, 500 steps.
+Scene compounds() {
+    Scene s;
+    s.steps = 500;
+    addBin(s, 40, 100);
+    addBody(s, {.name = "catcher", .type = BodyType::Static, .shapes = {segmentShape({-800.0f, -80.0f}, {800.0f, -80.0f})}});
+    SceneShape left = polygonShape({{-1.0f, 0.0f}, {0.5f, 1.0f}, {0.0f, 2.0f}});
+    SceneShape right = polygonShape({{1.0f, 0.0f}, {-0.5f, 1.0f}, {0.0f, 2.0f}});
+    left.friction = right.friction = 0.5f;
+    const int columns = 20, rows = 150;
+    const float spacing = 2.0f, rowSpacing = 2.25f, firstX = 1.0f - 0.5f * spacing * columns, firstY = 5.575f;
+    float side = 0.25f;  // alternate bodies sit a quarter metre right and left of their column
+    for (int i = 0; i < columns; ++i)
+        for (int j = 0; j < rows; ++j) {
+            addBody(s, {.position = {firstX + spacing * i + side, firstY + rowSpacing * j}, .shapes = {left, right}});
+            side = -side;
+        }
     return s;
 }
 
@@ -332,6 +390,11 @@ std::vector<BuiltinScene> benchScenes() {
          "benchmark: 400 boxes driven by motor joints from the ground, 100 carts carrying a box on a motor joint, sleep "
          "off, 500 steps",
          motorSwarm},
+        {"washer", "benchmark: a kinematic drum with paddles turning at 25 deg/s tumbles 8,100 boxes of 0.2 m, 500 steps",
+         washer},
+        {"compounds",
+         "benchmark: 3,000 compounds of two triangles fall in 20 columns into a bin 80 m wide, 500 steps", compounds},
+        junkyardScene(),
     };
 }
 

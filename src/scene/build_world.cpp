@@ -39,7 +39,7 @@ ShapeId createShape(World& world, BodyId body, const SceneShape& s) {
         case SceneShape::Kind::Capsule: return world.createShape(body, def, Capsule{s.v1, s.v2, s.radius});
         case SceneShape::Kind::Chain: break;
     }
-    return world.createShape(body, def, Chain{s.vertices, s.loop});
+    return world.createShape(body, def, Chain{s.vertices, s.loop, s.solid, s.prevVertex, s.nextVertex});
 }
 
 // The joint's bodies, their local anchors and reference angle, resolved from the scene's world data.
@@ -150,6 +150,10 @@ SceneBodies addToWorld(World& world, const Scene& scene) {
             for (size_t k = 0; k < b.shapes.size(); ++k) {
                 path = element("bodies", i) + "." + element("shapes", k);
                 createShape(world, built.bodies.back(), b.shapes[k]);
+            }
+            if (b.massData) {
+                path = element("bodies", i) + ".mass_data";
+                world.setMassData(built.bodies.back(), {b.massData->mass, b.massData->center, b.massData->rotationalInertia});
             }
         } catch (const Error& e) {
             throw Error(path + ": " + e.what());

@@ -10,6 +10,7 @@
 #include <variant>
 
 #include "perpdot/feature_scenes.hpp"
+#include "perpdot/portable_math.hpp"
 #include "scene/builtin_registry.hpp"
 #include "scene/mover_course.hpp"
 #include "scene/scene_builders.hpp"
@@ -55,7 +56,8 @@ Scene capsules() {
                 .shapes = {capsuleShape({0.0f, -0.6f}, {0.0f, 0.6f}, 0.25f)}});
     for (const float angle : {0.3f, 0.7f}) {
         const float x = angle < 0.5f ? 2.0f : 8.0f;
-        const Vec2 down{std::cos(angle), -std::sin(angle)}, normal{std::sin(angle), std::cos(angle)};
+        const SinCos tilt = sinCos(angle);
+        const Vec2 down{tilt.cos, -tilt.sin}, normal{tilt.sin, tilt.cos};
         addBody(s, {.type = BodyType::Static, .position = {x, 3.0f}, .shapes = {segmentShape(-3.0f * down, 3.0f * down)}});
         addBody(s, {.position = Vec2{x, 3.0f} - 1.5f * down + 0.26f * normal, .angle = -angle,
                     .shapes = {capsuleShape({-0.4f, 0.0f}, {0.4f, 0.0f}, 0.25f)}});
@@ -154,8 +156,9 @@ Scene laser() {
 
 SceneBehaviour laserBehaviour() {
     return {.setup = {}, .draw = [](const SceneWorld& sw, DebugDraw& draw) {
-                const float angle = -0.3f + 0.6f * std::sin(0.01f * static_cast<float>(sw.stepIndex));
-                Vec2 origin{-8.5f, 8.0f}, direction{std::cos(angle - 0.4f), std::sin(angle - 0.4f)};
+                const float angle = -0.3f + 0.6f * sinCos(0.01f * static_cast<float>(sw.stepIndex)).sin;
+                const SinCos aim = sinCos(angle - 0.4f);
+                Vec2 origin{-8.5f, 8.0f}, direction{aim.cos, aim.sin};
                 const Color beam{255, 40, 40, 255};
                 for (int bounce = 0; bounce < 5; ++bounce) {
                     const Vec2 translation = 30.0f * direction;
@@ -205,7 +208,7 @@ SceneBehaviour shapeCastsBehaviour() {
                 const float t = 0.01f * static_cast<float>(sw.stepIndex);
                 const CastShape shapes[] = {makeBox(0.4f, 0.25f), Circle{{}, 0.3f}};
                 for (int k = 0; k < 2; ++k) {
-                    const Transform xf{{-9.0f, 3.0f + 2.5f * std::sin(t + 1.5f * static_cast<float>(k))}, Rot::fromAngle(k == 0 ? t : 0.0f)};
+                    const Transform xf{{-9.0f, 3.0f + 2.5f * sinCos(t + 1.5f * static_cast<float>(k)).sin}, Rot::fromAngle(k == 0 ? t : 0.0f)};
                     const Vec2 translation{18.0f, -1.0f};
                     const Color path{120, 120, 255, 255}, hitColor{255, 200, 0, 255};
                     draw.drawSegment(xf.p, xf.p + translation, path);

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "scene/builtin_registry.hpp"
+#include "perpdot/portable_math.hpp"
 #include "scene/ragdoll_figure.hpp"
 #include "scene/scene_builders.hpp"
 
@@ -21,8 +22,9 @@ void addAnchor(Scene& s, Vec2 position = {}) { addBody(s, {.name = "anchor", .ty
 Scene pendulum() {
     Scene s;
     addAnchor(s, {0.0f, 10.0f});
-    const float d = 2.0f, start = pi / 4.0f;
-    const Vec2 bob{d * std::sin(start), 10.0f - d * std::cos(start)};
+    const float d = 2.0f;
+    const SinCos start = sinCos(pi / 4.0f);
+    const Vec2 bob{d * start.sin, 10.0f - d * start.cos};
     addBody(s, {.name = "bob", .position = bob, .shapes = {circleShape(0.25f)}});
     s.joints.push_back(revolute("anchor", "bob", {0.0f, 10.0f}));
     return s;
@@ -184,7 +186,8 @@ Scene windmill() {
 Scene prismaticSlider() {
     Scene s;
     addAnchor(s, {0.0f, 5.0f});
-    const Vec2 axis{std::cos(pi / 6.0f), std::sin(pi / 6.0f)};
+    const SinCos rail30 = sinCos(pi / 6.0f);
+    const Vec2 axis{rail30.cos, rail30.sin};
     addBody(s, {.name = "slider", .position = {0.0f, 5.0f}, .angle = pi / 6.0f, .shapes = {boxShape(0.5f, 0.25f)}});
     SceneJoint rail{.type = JointType::Prismatic, .bodyA = "anchor", .bodyB = "slider", .anchor = Vec2{0.0f, 5.0f}};
     rail.axis = axis;

@@ -4,15 +4,20 @@
 // name and description: the registry copies them from the entry.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "perpdot/scene.hpp"
+#include "scene/scene_script.hpp"
 
 namespace perpdot {
 
 std::vector<BuiltinScene> coreScenes();   // core_scenes.cpp: single bodies, stacks, friction, restitution
 std::vector<BuiltinScene> benchScenes();  // bench_scenes.cpp: the large scenes of the benchmarks
 BuiltinScene ragdollRainScene();          // ragdoll_rain.cpp: the benchmark whose script spawns ragdolls
+BuiltinScene junkyardScene();             // junkyard.cpp: the benchmark whose script drives a pusher
+std::unique_ptr<SceneScript> makeRagdollRainScript();  // their scripts, for makeSceneScript (scene_script.cpp)
+std::unique_ptr<SceneScript> makeJunkyardScript();
 std::vector<BuiltinScene> demoScenes();  // builtin_demo_scenes.cpp: showcases for the viewer (card house, dominoes, ...)
 std::vector<BuiltinScene> jointScenes();  // builtin_joint_scenes.cpp: pendulums, chain, bridge, ragdoll, car, joint grid, windmill, slider
 std::vector<BuiltinScene> coupledJointScenes();  // builtin_coupled_joint_scenes.cpp: gears, pulley

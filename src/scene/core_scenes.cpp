@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "scene/builtin_registry.hpp"
+#include "perpdot/portable_math.hpp"
 #include "scene/scene_builders.hpp"
 
 namespace perpdot {
@@ -111,9 +112,10 @@ Scene projectile() {
     Scene s;
     s.steps = 80;
     addGround(s, 20.0f);
-    const float speed = 10.0f, launch = pi / 4.0f;
+    const float speed = 10.0f;
+    const SinCos launch = sinCos(pi / 4.0f);
     addBody(s, {.name = "ball", .position = {-8.0f, 1.0f},
-                .linearVelocity = {speed * std::cos(launch), speed * std::sin(launch)}, .shapes = {circleShape(0.25f)}});
+                .linearVelocity = {speed * launch.cos, speed * launch.sin}, .shapes = {circleShape(0.25f)}});
     return s;
 }
 

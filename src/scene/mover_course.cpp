@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "perpdot/portable_math.hpp"
 #include "scene/scene_builders.hpp"
 
 namespace perpdot {
@@ -14,7 +15,8 @@ constexpr float platformLeft = 9.0f, platformRight = 13.0f;  // where the moving
 
 // A static ramp rising at `angle` from (x, 0) to height `height`, then a flat top 1 m long.
 void addRamp(Scene& s, float x, float angle, float height) {
-    const float run = height / std::tan(angle);
+    const SinCos sc = sinCos(angle);
+    const float run = height * sc.cos / sc.sin;  // height / tan(angle)
     addBody(s, {.type = BodyType::Static, .shapes = {polygonShape({{x, 0.0f}, {x + run + 1.0f, 0.0f}, {x + run + 1.0f, height}, {x + run, height}})}});
 }
 

@@ -90,10 +90,6 @@ BuiltinScene ragdollRainScene() {
             ragdollRain};
 }
 
-// The only scripted scene so far; a second one would move this table to scene_script.cpp.
-std::unique_ptr<SceneScript> makeSceneScript(std::string_view sceneName) {
-    if (sceneName == "ragdoll_rain") return std::make_unique<RagdollRain>();
-    return nullptr;
-}
+std::unique_ptr<SceneScript> makeRagdollRainScript() { return std::make_unique<RagdollRain>(); }
 
 }  // namespace perpdot

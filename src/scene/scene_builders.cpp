@@ -59,6 +59,14 @@ SceneBody& addGround(Scene& scene, float halfWidth, float top) {
                            .shapes = {boxShape(halfWidth, 1.0f)}});
 }
 
+SceneBody& addBin(Scene& scene, int halfSpan, int wallBoxes) {
+    SceneBody& bin = addBody(scene, {.name = "ground", .type = BodyType::Static});
+    for (int i = -halfSpan; i <= halfSpan; ++i) bin.shapes.push_back(boxShape(0.55f, 0.5f, {float(i), 0.0f}));
+    for (const float side : {-1.0f, 1.0f})
+        for (int i = 1; i <= wallBoxes; ++i) bin.shapes.push_back(boxShape(0.5f, 0.55f, {side * float(halfSpan), float(i)}));
+    return bin;
+}
+
 void addPyramid(Scene& scene, int baseCount, float h, float leftX, float baseY, bool allowSleep) {
     SceneBody box{.allowSleep = allowSleep, .shapes = {boxShape(h, h)}};
     for (int row = 0; row < baseCount; ++row) {

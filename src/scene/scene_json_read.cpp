@@ -261,6 +261,17 @@ SceneShape readShape(const Object& o) {
             for (size_t i = 1; i < s.vertices.size(); ++i)
                 if (distance(s.vertices[i - 1], s.vertices[i]) <= minEdgeLength)
                     fail(element(member(o.path(), "vertices"), i), "coincides with the previous vertex");
+            const std::string solid = o.string("solid", "left");
+            if (solid != "left" && solid != "right") fail(member(o.path(), "solid"), "expected \"left\" or \"right\", got \"" + solid + "\"");
+            s.solid = solid == "right" ? ChainSide::Right : ChainSide::Left;
+            for (const auto& [key, ghost] : {std::pair{"prev_vertex", &s.prevVertex}, std::pair{"next_vertex", &s.nextVertex}}) {
+                if (!o.has(key)) continue;
+                if (s.loop) fail(member(o.path(), key), "a loop takes no ghost vertices");
+                const Vec2 g = o.vecAt(key);
+                if (std::fabs(g.x) > maxCoordinate || std::fabs(g.y) > maxCoordinate)
+                    fail(member(o.path(), key), "must be at most " + std::to_string(maxCoordinate) + " in magnitude");
+                *ghost = g;
+            }
             break;
         }
     }
@@ -270,6 +281,15 @@ SceneShape readShape(const Object& o) {
     s.sensor = o.boolean("sensor", s.sensor);
     if (o.has("filter")) s.filter = readFilter(Object(o.required("filter"), member(o.path(), "filter")));
     return s;
+}
+
+SceneMass readMass(const Object& o) {
+    o.allowOnly({scene_keys::massData});
+    SceneMass m;
+    m.mass = o.nonNegative("mass", m.mass, maxDensity);
+    m.center = o.boundedVec("center", {}, maxCoordinate);
+    m.rotationalInertia = o.nonNegative("rotational_inertia", m.rotationalInertia, maxDensity * maxCoordinate);
+    return m;
 }
 
 SceneBody readBody(const Object& o, size_t index) {
@@ -290,6 +310,7 @@ SceneBody readBody(const Object& o, size_t index) {
     b.allowSleep = o.boolean("allow_sleep", true);
     b.awake = o.boolean("awake", true);
     for (const auto& [item, path] : o.array("shapes")) b.shapes.push_back(readShape(Object(*item, path)));
+    if (o.has("mass_data")) b.massData = readMass(Object(o.required("mass_data"), member(o.path(), "mass_data")));
     return b;
 }
 

@@ -117,6 +117,9 @@ Json shapeJson(const SceneShape& s) {
             o["type"] = "chain";
             o["vertices"] = points(s.vertices);
             put(o, "loop", s.loop, d.loop);
+            if (s.solid != d.solid) o["solid"] = "right";
+            if (s.prevVertex) o["prev_vertex"] = vec(*s.prevVertex);
+            if (s.nextVertex) o["next_vertex"] = vec(*s.nextVertex);
             break;
     }
     put(o, "density", s.density, d.density);
@@ -148,6 +151,14 @@ Json bodyJson(const SceneBody& b, size_t index) {
         Json shapes = Json::array();
         for (const SceneShape& s : b.shapes) shapes.push_back(shapeJson(s));
         o["shapes"] = std::move(shapes);
+    }
+    if (b.massData) {
+        const SceneMass md;
+        Json m = Json::object();
+        put(m, "mass", b.massData->mass, md.mass);
+        put(m, "center", b.massData->center, md.center);
+        put(m, "rotational_inertia", b.massData->rotationalInertia, md.rotationalInertia);
+        o["mass_data"] = std::move(m);
     }
     return o;
 }

@@ -16,7 +16,8 @@ inline constexpr std::string_view root[] = {"format", "name",   "description", "
 inline constexpr std::string_view solver[] = {"substeps", "velocity_iterations", "position_iterations", "box2d_skin"};
 inline constexpr std::string_view body[] = {"name", "type", "position", "angle", "linear_velocity", "angular_velocity",
                                             "linear_damping", "angular_damping", "gravity_scale", "fixed_rotation",
-                                            "bullet", "allow_sleep", "awake", "shapes"};
+                                            "bullet", "allow_sleep", "awake", "shapes", "mass_data"};
+inline constexpr std::string_view massData[] = {"mass", "center", "rotational_inertia"};
 
 inline constexpr std::string_view filter[] = {"category", "mask", "group"};
 inline constexpr std::string_view shape[] = {"type", "density", "friction", "restitution", "sensor", "filter"};
@@ -24,7 +25,7 @@ inline constexpr std::string_view circle[] = {"radius", "center"};
 inline constexpr std::string_view box[] = {"half_extents", "center", "angle"};
 inline constexpr std::string_view polygon[] = {"vertices", "radius"};
 inline constexpr std::string_view segment[] = {"v1", "v2"};
-inline constexpr std::string_view chain[] = {"vertices", "loop"};
+inline constexpr std::string_view chain[] = {"vertices", "loop", "solid", "prev_vertex", "next_vertex"};
 inline constexpr std::string_view capsule[] = {"center1", "center2", "radius"};
 
 inline constexpr std::string_view joint[] = {"type", "body_a", "body_b", "collide_connected", "break_force", "break_torque", "destroy_on_break"};
@@ -47,7 +48,7 @@ inline constexpr std::string_view explosion[] = {"type", "point", "value", "radi
 // Every list above, for the documentation test.
 inline std::vector<KeyList> all() {
     return {root,     solver, body,     filter,    shape, circle, box,   polygon, segment, chain, capsule,
-            joint,    jointAnchors, revolute, distance, prismatic, weld, wheel, motor, gear, pulley, action, actionPoint, explosion};
+            massData, joint, jointAnchors, revolute, distance, prismatic, weld, wheel, motor, gear, pulley, action, actionPoint, explosion};
 }
 
 }  // namespace perpdot::scene_keys

@@ -1,5 +1,5 @@
 // What a scene file cannot say about a scene that changes while it runs: bodies created and
-// destroyed at given steps (`ragdoll_rain`). A SceneScript is called before each step with a
+// destroyed at given steps (`ragdoll_rain`), a kinematic body driven along a path (`junkyard`). A SceneScript is called before each step with a
 // SceneEditor; perpdot's World and Box2D's b2World each implement the editor
 // (crosscheck/stepper.cpp), so both engines see the same spawns and destroys at the same steps.
 #pragma once
@@ -22,6 +22,9 @@ public:
     virtual Group spawn(const Scene& fragment) = 0;
     // Destroys the group's bodies, with their shapes, joints and contacts.
     virtual void destroy(Group group) = 0;
+    // Sets the velocity of the scene's body `sceneBody` (its index in Scene::bodies), e.g. to
+    // drive a kinematic body along a path; Error for an index the scene does not have.
+    virtual void setVelocity(int sceneBody, Vec2 linearVelocity, float angularVelocity) = 0;
 };
 
 class SceneScript {

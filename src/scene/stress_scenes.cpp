@@ -1,4 +1,4 @@
-// The torture suite of `perpdot stress` (issue 13): each scene reproduces one case where a
+// The torture suite of `perpdot stress`: each scene reproduces one case where a
 // solver shows its limits. The figures and criteria that judge them are in
 // src/crosscheck/stress.cpp; the scenes say only what is built. Sleeping is turned off per body
 // (allowSleep), so that the exported JSON runs exactly like the built-in scene.
@@ -68,8 +68,8 @@ Scene heavyOnLight(float ratio) {
 }
 
 // 20 links of 0.5 m (0.1 m thick) hinged end to end from a pin, released horizontal; the last
-// link has density 100, so its mass is 100 times a link's.
-Scene heavyChain() {
+// link has density `ratio`, so its mass is `ratio` times a link's.
+Scene heavyChain(float ratio) {
     Scene s;
     s.steps = 10 * seconds;
     const Vec2 pin{0.0f, 20.0f};
@@ -79,7 +79,7 @@ Scene heavyChain() {
     std::string previous = "pin";
     for (int i = 0; i < links; ++i) {
         SceneShape link = boxShape(0.5f * length, 0.05f);
-        if (i == links - 1) link.density = 100.0f;
+        if (i == links - 1) link.density = ratio;
         const std::string name = "link" + std::to_string(i);
         addBody(s, {.name = name, .position = pin + Vec2{(static_cast<float>(i) + 0.5f) * length, 0.0f}, .allowSleep = false,
                     .shapes = {link}});
@@ -113,6 +113,106 @@ Scene pyramid20() {
     return s;
 }
 
+
+// A 0.1 m ball of mass `mass` at `at`, falling at 10 m/s (the blow of the joint cases).
+void addStriker(Scene& s, Vec2 at, float mass) {
+    SceneShape ball = circleShape(0.1f);
+    ball.density = mass / (3.14159265f * 0.1f * 0.1f);
+    addBody(s, {.name = "striker", .position = at, .linearVelocity = {0.0f, -10.0f}, .allowSleep = false, .shapes = {ball}});
+}
+
+// Simultaneous impacts. `count` frictionless balls (e = 1, 0.25 m) in a row along x, `gap` apart,
+// in zero gravity; the first `moving` of them travel at 2 m/s into the others (Newton's cradle).
+Scene cradle(int count, int moving, float gap) {
+    Scene s;
+    s.steps = 3 * seconds;
+    s.gravity = {0.0f, 0.0f};
+    const float radius = 0.25f;
+    for (int i = 0; i < count; ++i) {
+        SceneShape ball = circleShape(radius);
+        ball.restitution = 1.0f;
+        ball.friction = 0.0f;
+        addBody(s, {.name = "ball" + std::to_string(i), .position = {float(i) * (2.0f * radius + gap), 0.0f},
+                    .linearVelocity = {i < moving ? 2.0f : 0.0f, 0.0f}, .allowSleep = false, .shapes = {ball}});
+    }
+    return s;
+}
+
+// A billiard break: a cue ball at 5 m/s into a racked triangle of 15 touching balls (top-down:
+// zero gravity, frictionless, e = 1).
+Scene billiards() {
+    Scene s;
+    s.steps = 2 * seconds;
+    s.gravity = {0.0f, 0.0f};
+    const float radius = 0.25f, rowStep = 2.0f * radius * 0.8660254f;  // rows of touching balls: 2r·cos 30°
+    const auto ball = [&](const std::string& name, Vec2 at, Vec2 velocity) {
+        SceneShape shape = circleShape(radius);
+        shape.restitution = 1.0f;
+        shape.friction = 0.0f;
+        addBody(s, {.name = name, .position = at, .linearVelocity = velocity, .allowSleep = false, .shapes = {shape}});
+    };
+    ball("cue", {-3.0f, 0.0f}, {5.0f, 0.0f});
+    for (int row = 0; row < 5; ++row)
+        for (int k = 0; k <= row; ++k)
+            ball("ball" + std::to_string(row) + "_" + std::to_string(k),
+                 {float(row) * rowStep, (float(k) - 0.5f * float(row)) * 2.0f * radius}, {});
+    return s;
+}
+
+// Hard joints under impact (zero gravity): a light 1 m arm (0.1 kg) held at its left end by
+// `joint` to a static pin, struck 0.9 m out by a 0.1 m ball 50 times its mass at 10 m/s.
+Scene armStruck(JointType joint) {
+    Scene s;
+    s.steps = seconds;
+    s.gravity = {0.0f, 0.0f};
+    addBody(s, {.name = "pin", .type = BodyType::Static});
+    SceneShape arm = boxShape(0.5f, 0.05f);
+    arm.density = 1.0f;  // 0.1 kg
+    addBody(s, {.name = "arm", .position = {0.5f, 0.0f}, .allowSleep = false, .shapes = {arm}});
+    SceneJoint hold{.type = joint, .bodyA = "pin", .bodyB = "arm", .anchor = Vec2{0.0f, 0.0f}};
+    if (joint == JointType::Revolute) hold.enableLimit = true, hold.lowerAngle = -0.05f, hold.upperAngle = 0.05f;
+    s.joints.push_back(hold);
+    addStriker(s, {0.9f, 0.25f}, 50.0f * 0.1f);
+    return s;
+}
+
+// A light 0.5 m box (0.25 kg) on a vertical prismatic joint limited to ±5 cm, struck from above
+// by a ball 50 times its mass at 10 m/s (zero gravity).
+Scene sliderStruck() {
+    Scene s;
+    s.steps = seconds;
+    s.gravity = {0.0f, 0.0f};
+    addBody(s, {.name = "base", .type = BodyType::Static});
+    addBody(s, {.name = "slider", .position = {0.0f, 0.0f}, .allowSleep = false, .shapes = {boxShape(0.25f, 0.25f)}});
+    s.joints.push_back({.type = JointType::Prismatic, .bodyA = "base", .bodyB = "slider", .anchor = Vec2{0.0f, 0.0f},
+                        .enableLimit = true, .lower = -0.05f, .upper = 0.05f, .axis = {0.0f, 1.0f}});
+    addStriker(s, {0.0f, 0.5f}, 50.0f * 0.25f);
+    return s;
+}
+
+// A suspension bridge of 20 hinged 0.5 m planks (0.05 kg each) between two posts: a closed loop
+// of joints, carrying a load of 1000 planks' mass dropped on its middle.
+Scene loadedBridge() {
+    Scene s;
+    s.steps = 10 * seconds;
+    const int planks = 20;
+    const float half = 0.25f, y = 10.0f, left = -half * planks;
+    addBody(s, {.name = "left_post", .type = BodyType::Static, .position = {left, y}});
+    addBody(s, {.name = "right_post", .type = BodyType::Static, .position = {-left, y}});
+    std::string previous = "left_post";
+    for (int i = 0; i < planks; ++i) {
+        const std::string name = "plank" + std::to_string(i);
+        addBody(s, {.name = name, .position = {left + (2.0f * float(i) + 1.0f) * half, y}, .allowSleep = false,
+                    .shapes = {boxShape(half, 0.05f)}});
+        s.joints.push_back({.type = JointType::Revolute, .bodyA = previous, .bodyB = name, .anchor = Vec2{left + 2.0f * float(i) * half, y}});
+        previous = name;
+    }
+    s.joints.push_back({.type = JointType::Revolute, .bodyA = previous, .bodyB = "right_post", .anchor = Vec2{-left, y}});
+    SceneShape load = boxShape(0.25f, 0.25f);
+    load.density = 1000.0f * 0.05f / 0.25f;  // 50 kg
+    addBody(s, {.name = "load", .position = {0.0f, y + 0.3f}, .allowSleep = false, .shapes = {load}});
+    return s;
+}
 }  // namespace
 
 std::vector<BuiltinScene> stressScenes() {
@@ -128,9 +228,24 @@ std::vector<BuiltinScene> stressScenes() {
         {"stress_mass100", "stress: a 1 m box of density 100 on a 1 m box of density 1, 10 s", [] { return heavyOnLight(100.0f); }},
         {"stress_mass300", "stress: a 1 m box of density 300 on a 1 m box of density 1, 10 s", [] { return heavyOnLight(300.0f); }},
         {"stress_mass1000", "stress: a 1 m box of density 1000 on a 1 m box of density 1, 10 s", [] { return heavyOnLight(1000.0f); }},
-        {"stress_chain", "stress: 20 hinged 0.5 m links, the last 100 times a link's mass, released horizontal, 10 s", heavyChain},
+        {"stress_chain", "stress: 20 hinged 0.5 m links, the last 100 times a link's mass, released horizontal, 10 s",
+         [] { return heavyChain(100.0f); }},
         {"stress_tiles", "stress: a 1 m box sliding frictionless at 6 m/s over 40 separate 1 m tiles, 5 s", tiles},
         {"stress_pyramid20", "stress: a 20-row pyramid of unit boxes, sleep off, 60 s", pyramid20},
+        {"stress_pile20", "stress: the 20-row pyramid of unit boxes, judged on its height, 60 s", pyramid20},
+        {"stress_column100", "stress: 100 unit boxes stacked exactly touching, sleep off, 30 s", [] { return stack(100, 30 * seconds); }},
+        {"stress_cradle5", "stress: a ball at 2 m/s into 4 touching balls, e = 1, zero gravity, 3 s", [] { return cradle(5, 1, 0.0f); }},
+        {"stress_cradle7_two", "stress: two touching balls at 2 m/s into 5 touching balls, e = 1, 3 s", [] { return cradle(7, 2, 0.0f); }},
+        {"stress_cradle_gaps", "stress: 5 balls 1 mm apart, the first three at 2 m/s, e = 1, 3 s", [] { return cradle(5, 3, 0.001f); }},
+        {"stress_billiards", "stress: a cue ball at 5 m/s into a rack of 15 touching balls, e = 1, top-down, 2 s", billiards},
+        {"stress_hinge_hit", "stress: a 0.1 kg hinged arm limited to +-0.05 rad struck by a 5 kg ball at 10 m/s, 1 s",
+         [] { return armStruck(JointType::Revolute); }},
+        {"stress_weld_hit", "stress: a 0.1 kg welded arm struck by a 5 kg ball at 10 m/s, 1 s", [] { return armStruck(JointType::Weld); }},
+        {"stress_slider_hit", "stress: a 0.25 kg slider limited to +-5 cm struck along its axis by a 12.5 kg ball at 10 m/s, 1 s",
+         sliderStruck},
+        {"stress_chain1000", "stress: the 20-link chain with an end 1000 times a link's mass, 10 s", [] { return heavyChain(1000.0f); }},
+        {"stress_chain10k", "stress: the 20-link chain with an end 10,000 times a link's mass, 10 s", [] { return heavyChain(10000.0f); }},
+        {"stress_bridge1000", "stress: a 20-plank bridge carrying 1000 times a plank's mass, 10 s", loadedBridge},
     };
 }
 

@@ -49,7 +49,7 @@ private:
     size_t at_ = 0;
 };
 
-struct Session {
+struct ApiRun {
     World world;
     std::vector<BodyId> bodies;
     std::vector<ShapeId> shapes;
@@ -233,15 +233,18 @@ struct Session {
         (void)world.sensorEvents();
     }
 
-    // A snapshot restores into a fresh world and saves back to the same bytes; then either world
-    // goes on (the restored one keeps every id valid).
+    // A snapshot restores into a fresh world and saves back to the same bytes; then the world,
+    // moved or not (it keeps its identity, and every id it issued stays valid), restores it.
     void snapshotRestore() {
         const std::vector<uint8_t> bytes = world.snapshot();
         World copy;
         copy.restore(bytes);
         if (copy.snapshot() != bytes) std::abort();
-        if (in.flag()) world = std::move(copy);
-        else world.restore(bytes);
+        if (in.flag()) {
+            World moved = std::move(world);
+            world = std::move(moved);
+        }
+        world.restore(bytes);
     }
 
     void destroy() {
@@ -277,8 +280,8 @@ struct Session {
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     Program in(data, size);
-    Session session{World{}, {}, {}, {}, in};
-    for (int ops = 0; ops < 256 && !in.done(); ++ops) session.run(in.byte());
-    for (int i = 0; i < 4; ++i) session.world.step(1.0f / 60.0f);
+    ApiRun api{World{}, {}, {}, {}, in};
+    for (int ops = 0; ops < 256 && !in.done(); ++ops) api.run(in.byte());
+    for (int i = 0; i < 4; ++i) api.world.step(1.0f / 60.0f);
     return 0;
 }
