@@ -29,12 +29,14 @@ command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 # ARM64 unit tests under qemu: those that start no other program (the CLI and stress tests start
 # the perpdot command: an ARM64 program started by a test needs the kernel to hand it to qemu,
 # binfmt_misc, which CI machines lack) and use no oneTBB workers, chosen to fit the CI budget
-# (qemu runs perpdot about 20 times slower than the CPU): threads on a game's task system,
-# determinism and snapshots, the SIMD lanes against scalar rows, the numerics, Box2D's collision
-# through perpdot (shapes, casts, time of impact), and the dynamics checked against analytic
-# results and Box2D's b2World. SnapshotRollback (1,800 restore points) would take two thirds of
-# the time: it runs on x86-64 and i386, and snapshots across CPUs are compareSnapshots' job.
-armTests='Workers.AGames*:Workers.ATask*:Determinism.*:Snapshot.*:GearPulleySnapshot.*'
+# (qemu runs perpdot about 20 times slower than the CPU): the portable sin, cos, atan2 and exp
+# bit for bit (their accuracy tests compare with long double, software-emulated on ARM64: they run
+# on x86-64 and i386), threads on a game's task system, determinism and snapshots, the SIMD lanes
+# against scalar rows, the numerics, Box2D's collision through perpdot (shapes, casts, time of
+# impact), and the dynamics checked against analytic results and Box2D's b2World.
+# SnapshotRollback (1,800 restore points) would take two thirds of the time: it runs on x86-64 and
+# i386, and snapshots across CPUs are compareSnapshots' job.
+armTests='PortableMath.SameBitsOnEveryCpu:Workers.AGames*:Workers.ATask*:Determinism.*:Snapshot.*:GearPulleySnapshot.*'
 armTests+=':ContactSolverWide.*:JointSolverWide.*:Numerics.*:Capsule.*:ShapeCast.*:TimeOfImpact.*:Mass.*'
 armTests+=':Contact.*:BoxOnGround.*:Dynamics.*:CrosscheckPhysics.*:PairSet.*:RadixSort.*:StaticTree.*'
 

@@ -64,7 +64,9 @@ Reduced reduce(float x) {
     const std::int64_t half = static_cast<std::int64_t>(fraction) >> 1;  // 2^−63 quarter turns
     // r = half · (π/2 · 2^−63), the count split into two floats and π/2 into two.
     constexpr float cHi = 0x1.921fb6p-63f, cLo = -0x1.777a5cp-88f;
-    const auto halfHi = static_cast<float>(half);
+    // rounded: on 32-bit x86 the int64 conversion goes through the x87 unit, and GCC would convert
+    // its exact 64-bit value back below instead of the float (halfLo 0, the last bit lost).
+    const float halfHi = detail::rounded(static_cast<float>(half));
     const auto halfLo = static_cast<float>(half - static_cast<std::int64_t>(halfHi));
     return {halfHi * cHi + (halfHi * cLo + halfLo * cHi), quadrant};
 }
