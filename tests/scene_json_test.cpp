@@ -114,11 +114,11 @@ TEST(SceneJson, EveryFieldRoundTrips) {
           {"name": "a", "type": "kinematic", "position": [1, 2], "angle": 0.3, "linear_velocity": [1, 0], "angular_velocity": -1,
            "awake": false},
           {"name": "b", "position": [3, 2], "linear_damping": 0.1, "angular_damping": 0.2, "gravity_scale": 0.5,
-           "fixed_rotation": true, "bullet": true, "allow_sleep": false,
+           "fixed_rotation": true, "bullet": true, "allow_sleep": false, "enabled": false,
            "shapes": [{"type": "box", "half_extents": [1, 0.25], "center": [0.1, 0.2], "angle": 0.5, "density": 2,
                        "restitution": 0.5, "sensor": true, "filter": {"category": 2, "mask": 5, "group": -3}},
                       {"type": "polygon", "vertices": [[0, 0], [1, 1], [1, 0]], "radius": 0.05},
-                      {"type": "circle", "radius": 0.3, "center": [0, 1]}]}],
+                      {"type": "circle", "radius": 0.3, "center": [0, 1], "enabled": false}]}],
         "joints": [
           {"type": "revolute", "body_a": "a", "body_b": "b", "anchor": [2, 2], "enable_limit": true, "lower_angle": -1,
            "upper_angle": 1, "enable_motor": true, "motor_speed": 2, "max_motor_torque": 10, "collide_connected": true},
@@ -129,7 +129,8 @@ TEST(SceneJson, EveryFieldRoundTrips) {
           {"type": "weld", "body_a": "a", "body_b": "b", "anchor": [2, 2], "hertz": 5, "damping_ratio": 0.7},
           {"type": "wheel", "body_a": "a", "body_b": "b", "anchor": [3, 2], "axis": [0, 1], "hertz": 3, "max_motor_torque": 4},
           {"type": "motor", "body_a": "a", "body_b": "b", "linear_offset": [1, 1], "angular_offset": 0.5, "max_force": 20,
-           "max_torque": 30}],
+           "max_torque": 30},
+          {"type": "friction", "body_a": "ground", "body_b": "b", "anchor": [3, 2], "max_force": 3}],
         "actions": [
           {"type": "force", "body": "b", "value": [1, 2], "point": [3, 3], "first_step": 1, "last_step": 5},
           {"type": "impulse", "body": "b", "value": [0, -1]},
@@ -143,7 +144,14 @@ TEST(SceneJson, EveryFieldRoundTrips) {
     EXPECT_TRUE(s.bodies[2].awake);
     EXPECT_EQ(s.bodies[2].shapes[0].filter, (Filter{2, 5, -3}));
     EXPECT_TRUE(s.bodies[0].shapes[0].loop);
-    ASSERT_EQ(s.joints.size(), 6u);
+    EXPECT_FALSE(s.bodies[2].enabled);
+    EXPECT_TRUE(s.bodies[1].enabled);
+    EXPECT_FALSE(s.bodies[2].shapes[2].enabled);
+    EXPECT_TRUE(s.bodies[2].shapes[1].enabled);
+    ASSERT_EQ(s.joints.size(), 7u);
+    EXPECT_EQ(s.joints[6].type, JointType::Friction);
+    EXPECT_EQ(s.joints[6].maxForce, 3.0f);
+    EXPECT_EQ(s.joints[6].maxTorque, 0.0f);
     EXPECT_EQ(s.joints[1].length, 2.5f);
     EXPECT_EQ(s.joints[1].anchorB, (Vec2{3.0f, 2.0f}));
     EXPECT_EQ(s.joints[2].localAnchorA, (Vec2{0.0f, 1.0f}));
@@ -204,6 +212,8 @@ TEST(SceneJson, InvalidScenesAreRefusedWithTheirPath) {
         {"vector of three", sceneWith(R"({"position": [1, 2, 3]})"), "bodies[0].position: expected a vector"},
         {"bool for a number", sceneWith(R"({"angle": true})"), "bodies[0].angle: expected a number"},
         {"number for a bool", sceneWith(R"({"bullet": 1})"), "bodies[0].bullet: expected true or false"},
+        {"string for enabled", withShape(R"({"type": "circle", "radius": 1, "enabled": "no"})"),
+         "bodies[0].shapes[0].enabled: expected true or false"},
         {"string element", sceneWith(R"({"position": [0, "1"]})"), "bodies[0].position[1]: expected a number"},
         {"shapes not an array", sceneWith(R"({"shapes": {"type": "circle"}})"), "bodies[0].shapes: expected an array"},
         {"body not an object", sceneWith("42"), "bodies[0]: expected an object"},
@@ -239,6 +249,10 @@ TEST(SceneJson, InvalidScenesAreRefusedWithTheirPath) {
         {"joint on one body", withJoint(R"({"type": "weld", "body_a": "box", "body_b": "box"})"), "joints[0].body_b: "},
         {"joint key of another type", withJoint(R"({"type": "revolute", "body_a": "box", "body_b": "ball", "axis": [1, 0]})"),
          "joints[0].axis: unknown key"},
+        {"negative friction force", withJoint(R"({"type": "friction", "body_a": "box", "body_b": "ball", "max_force": -1})"),
+         "joints[0].max_force: must not be negative"},
+        {"friction joint with a motor key", withJoint(R"({"type": "friction", "body_a": "box", "body_b": "ball", "linear_offset": [0, 1]})"),
+         "joints[0].linear_offset: unknown key"},
         {"unknown joint type", withJoint(R"({"type": "rope", "body_a": "box", "body_b": "ball"})"),
          "joints[0].type: unknown type \"rope\""},
         {"distance joint with one world anchor",

@@ -42,6 +42,7 @@ struct SceneShape {
     float restitution = 0.0f;  ///< e
     bool sensor = false;  ///< ShapeDef::sensor
     Filter filter{};  ///< collision filter
+    bool enabled = true;  ///< false: created disabled (World::setEnabled(ShapeId, false))
     /// Equal in every field (a scene that round-trips through JSON compares equal).
     friend bool operator==(const SceneShape&, const SceneShape&) = default;
 };
@@ -70,6 +71,7 @@ struct SceneBody {
     bool bullet = false;  ///< BodyDef::bullet
     bool allowSleep = true;  ///< BodyDef::allowSleep
     bool awake = true;  ///< BodyDef::awake: false starts it asleep (where allowSleep)
+    bool enabled = true;  ///< false: created disabled (World::setEnabled(BodyId, false); b2BodyDef::enabled)
     std::vector<SceneShape> shapes{};  ///< its shapes
     std::optional<SceneMass> massData{};  ///< overrides the shapes' mass (dynamic bodies; none: from the shapes)
     /// Equal in every field (a scene that round-trips through JSON compares equal).
@@ -103,8 +105,8 @@ struct SceneJoint {
     Vec2 axis{1.0f, 0.0f};                       ///< prismatic, wheel (world)
     Vec2 linearOffset{};                         ///< motor
     float angularOffset = 0.0f;  ///< motor, rad
-    float maxForce = 1.0f;  ///< motor, N
-    float maxTorque = 1.0f;  ///< motor, N·m
+    float maxForce = 1.0f;  ///< motor (friction: the file's default is 0), N
+    float maxTorque = 1.0f;  ///< motor (friction: the file's default is 0), N·m
     /// Equal in every field (a scene that round-trips through JSON compares equal).
     int jointA = -1;  ///< gear: index of an earlier revolute or prismatic joint
     int jointB = -1;  ///< gear: index of an earlier revolute or prismatic joint

@@ -41,6 +41,7 @@ b2BodyDef bodyDef(const SceneBody& b) {
     def.bullet = b.bullet;
     def.allowSleep = b.allowSleep;
     def.awake = b.awake;
+    def.enabled = b.enabled;
     return def;
 }
 
@@ -55,6 +56,11 @@ b2FixtureDef fixtureDef(const SceneShape& s, const b2Shape* shape) {
     def.filter.categoryBits = s.filter.category;
     def.filter.maskBits = s.filter.mask;
     def.filter.groupIndex = s.filter.group;
+    if (!s.enabled) {  // Box2D 2.4 cannot disable a fixture: one that collides with nothing keeps its mass, as perpdot's does
+        def.filter.categoryBits = 0;
+        def.filter.maskBits = 0;
+        def.filter.groupIndex = 0;  // a shared positive group would collide whatever the mask
+    }
     return def;
 }
 
@@ -254,6 +260,13 @@ b2Joint* createJoint(b2World& world, const SceneJoint& j, b2Body* a, b2Body* b, 
         def.bodyA = a, def.bodyB = b, def.collideConnected = j.collideConnected;
         def.linearOffset = toB2(j.linearOffset);
         def.angularOffset = j.angularOffset;
+        def.maxForce = j.maxForce, def.maxTorque = j.maxTorque;
+        return world.CreateJoint(&def);
+    }
+    case JointType::Friction: {
+        b2FrictionJointDef def;
+        def.bodyA = a, def.bodyB = b, def.collideConnected = j.collideConnected;
+        def.localAnchorA = anchor.localA, def.localAnchorB = anchor.localB;
         def.maxForce = j.maxForce, def.maxTorque = j.maxTorque;
         return world.CreateJoint(&def);
     }

@@ -112,6 +112,10 @@ JointId createJoint(World& world, const SceneJoint& j, const JointFrame& f, cons
                 .bodyA = f.bodyA, .bodyB = f.bodyB, .linearOffset = j.linearOffset,
                 .angularOffset = j.angularOffset, .maxForce = j.maxForce, .maxTorque = j.maxTorque,
                 .collideConnected = j.collideConnected});
+        case JointType::Friction:
+            return world.createJoint(FrictionJointDef{
+                .bodyA = f.bodyA, .bodyB = f.bodyB, .localAnchorA = f.localAnchorA, .localAnchorB = f.localAnchorB,
+                .maxForce = j.maxForce, .maxTorque = j.maxTorque, .collideConnected = j.collideConnected});
         case JointType::Gear: {
             const auto geared = [&](int index) {
                 if (index < 0 || index >= static_cast<int>(built.size())) throw Error("gear: no earlier joint " + std::to_string(index));
@@ -149,12 +153,14 @@ SceneBodies addToWorld(World& world, const Scene& scene) {
             built.bodies.push_back(world.createBody(bodyDef(b)));
             for (size_t k = 0; k < b.shapes.size(); ++k) {
                 path = element("bodies", i) + "." + element("shapes", k);
-                createShape(world, built.bodies.back(), b.shapes[k]);
+                const ShapeId shape = createShape(world, built.bodies.back(), b.shapes[k]);
+                if (!b.shapes[k].enabled) world.setEnabled(shape, false);
             }
             if (b.massData) {
                 path = element("bodies", i) + ".mass_data";
                 world.setMassData(built.bodies.back(), {b.massData->mass, b.massData->center, b.massData->rotationalInertia});
             }
+            if (!b.enabled) world.setEnabled(built.bodies.back(), false);
         } catch (const Error& e) {
             throw Error(path + ": " + e.what());
         }

@@ -184,7 +184,7 @@ constexpr std::pair<const char*, SceneShape::Kind> shapeKinds[] = {
 constexpr std::pair<const char*, JointType> jointTypes[] = {
     {"revolute", JointType::Revolute}, {"prismatic", JointType::Prismatic}, {"distance", JointType::Distance},
     {"weld", JointType::Weld}, {"wheel", JointType::Wheel}, {"motor", JointType::Motor},
-    {"gear", JointType::Gear}, {"pulley", JointType::Pulley}};
+    {"friction", JointType::Friction}, {"gear", JointType::Gear}, {"pulley", JointType::Pulley}};
 constexpr std::pair<const char*, SceneAction::Kind> actionKinds[] = {
     {"force", SceneAction::Kind::Force}, {"impulse", SceneAction::Kind::Impulse},
     {"torque", SceneAction::Kind::Torque}, {"angular_impulse", SceneAction::Kind::AngularImpulse},
@@ -279,6 +279,7 @@ SceneShape readShape(const Object& o) {
     s.friction = o.nonNegative("friction", s.friction, maxMaterial);
     s.restitution = o.nonNegative("restitution", s.restitution, maxMaterial);
     s.sensor = o.boolean("sensor", s.sensor);
+    s.enabled = o.boolean("enabled", s.enabled);
     if (o.has("filter")) s.filter = readFilter(Object(o.required("filter"), member(o.path(), "filter")));
     return s;
 }
@@ -309,6 +310,7 @@ SceneBody readBody(const Object& o, size_t index) {
     b.bullet = o.boolean("bullet", false);
     b.allowSleep = o.boolean("allow_sleep", true);
     b.awake = o.boolean("awake", true);
+    b.enabled = o.boolean("enabled", true);
     for (const auto& [item, path] : o.array("shapes")) b.shapes.push_back(readShape(Object(*item, path)));
     if (o.has("mass_data")) b.massData = readMass(Object(o.required("mass_data"), member(o.path(), "mass_data")));
     return b;
@@ -323,6 +325,7 @@ KeyList jointKeys(JointType type) {
         case JointType::Weld: return scene_keys::weld;
         case JointType::Wheel: return scene_keys::wheel;
         case JointType::Motor: return scene_keys::motor;
+        case JointType::Friction: return scene_keys::friction;
         case JointType::Gear: return scene_keys::gear;
         case JointType::Pulley: return scene_keys::pulley;
         default: break;  // not in the file format (mouse joints)
@@ -428,8 +431,11 @@ SceneJoint readJoint(const Object& o, const std::set<std::string>& bodyNames, co
     if (length(j.axis) < 1.0e-6f) fail(member(o.path(), "axis"), "must not be zero");
     j.linearOffset = o.vec("linear_offset", {});
     j.angularOffset = o.number("angular_offset", 0.0f);
-    j.maxForce = o.nonNegative("max_force", j.maxForce);
-    j.maxTorque = o.nonNegative("max_torque", j.maxTorque);
+    // A motor drives with 1 N and 1 N·m unless told (b2MotorJointDef); a friction joint, like
+    // b2FrictionJointDef, holds nothing unless told.
+    const float defaultMax = j.type == JointType::Friction ? 0.0f : 1.0f;
+    j.maxForce = o.nonNegative("max_force", defaultMax);
+    j.maxTorque = o.nonNegative("max_torque", defaultMax);
     if (o.has("break_force")) j.breakForce = o.nonNegative("break_force", 0.0f);
     if (o.has("break_torque")) j.breakTorque = o.nonNegative("break_torque", 0.0f);
     j.destroyOnBreak = o.boolean("destroy_on_break", true);

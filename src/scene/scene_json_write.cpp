@@ -64,6 +64,7 @@ const char* name(JointType type) {
         case JointType::Weld: return "weld";
         case JointType::Wheel: return "wheel";
         case JointType::Motor: return "motor";
+        case JointType::Friction: return "friction";
         case JointType::Gear: return "gear";
         case JointType::Pulley: return "pulley";
         default: break;  // mouse joints, and types the format does not have (docs/joints.md)
@@ -126,6 +127,7 @@ Json shapeJson(const SceneShape& s) {
     put(o, "friction", s.friction, d.friction);
     put(o, "restitution", s.restitution, d.restitution);
     put(o, "sensor", s.sensor, d.sensor);
+    put(o, "enabled", s.enabled, d.enabled);
     if (s.filter != d.filter)
         o["filter"] = Json{{"category", s.filter.category}, {"mask", s.filter.mask}, {"group", s.filter.group}};
     return o;
@@ -147,6 +149,7 @@ Json bodyJson(const SceneBody& b, size_t index) {
     put(o, "bullet", b.bullet, d.bullet);
     put(o, "allow_sleep", b.allowSleep, d.allowSleep);
     put(o, "awake", b.awake, d.awake);
+    put(o, "enabled", b.enabled, d.enabled);
     if (!b.shapes.empty()) {
         Json shapes = Json::array();
         for (const SceneShape& s : b.shapes) shapes.push_back(shapeJson(s));
@@ -212,6 +215,10 @@ Json jointJson(const SceneJoint& j) {
         put(o, "angular_offset", j.angularOffset, d.angularOffset);
         put(o, "max_force", j.maxForce, d.maxForce);
         put(o, "max_torque", j.maxTorque, d.maxTorque);
+    }
+    if (j.type == JointType::Friction) {  // always written: the reader's default (0) is not SceneJoint's
+        o["max_force"] = shortest(j.maxForce);
+        o["max_torque"] = shortest(j.maxTorque);
     }
     if (j.type == JointType::Gear) {
         o["joint_a"] = j.jointA;

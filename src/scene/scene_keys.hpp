@@ -16,11 +16,11 @@ inline constexpr std::string_view root[] = {"format", "name",   "description", "
 inline constexpr std::string_view solver[] = {"substeps", "velocity_iterations", "position_iterations", "box2d_skin"};
 inline constexpr std::string_view body[] = {"name", "type", "position", "angle", "linear_velocity", "angular_velocity",
                                             "linear_damping", "angular_damping", "gravity_scale", "fixed_rotation",
-                                            "bullet", "allow_sleep", "awake", "shapes", "mass_data"};
+                                            "bullet", "allow_sleep", "awake", "enabled", "shapes", "mass_data"};
 inline constexpr std::string_view massData[] = {"mass", "center", "rotational_inertia"};
 
 inline constexpr std::string_view filter[] = {"category", "mask", "group"};
-inline constexpr std::string_view shape[] = {"type", "density", "friction", "restitution", "sensor", "filter"};
+inline constexpr std::string_view shape[] = {"type", "density", "friction", "restitution", "sensor", "filter", "enabled"};
 inline constexpr std::string_view circle[] = {"radius", "center"};
 inline constexpr std::string_view box[] = {"half_extents", "center", "angle"};
 inline constexpr std::string_view polygon[] = {"vertices", "radius"};
@@ -38,6 +38,7 @@ inline constexpr std::string_view prismatic[] = {"axis", "enable_limit", "lower"
 inline constexpr std::string_view weld[] = {"hertz", "damping_ratio"};
 inline constexpr std::string_view wheel[] = {"axis", "hertz", "damping_ratio", "enable_motor", "motor_speed", "max_motor_torque"};
 inline constexpr std::string_view motor[] = {"linear_offset", "angular_offset", "max_force", "max_torque"};
+inline constexpr std::string_view friction[] = {"max_force", "max_torque"};
 inline constexpr std::string_view gear[] = {"joint_a", "joint_b", "ratio"};
 inline constexpr std::string_view pulley[] = {"anchor_b", "ground_anchor_a", "ground_anchor_b", "length_a", "length_b", "ratio"};
 
@@ -48,7 +49,7 @@ inline constexpr std::string_view explosion[] = {"type", "point", "value", "radi
 // Every list above, for the documentation test.
 inline std::vector<KeyList> all() {
     return {root,     solver, body,     filter,    shape, circle, box,   polygon, segment, chain, capsule,
-            massData, joint, jointAnchors, revolute, distance, prismatic, weld, wheel, motor, gear, pulley, action, actionPoint, explosion};
+            massData, joint, jointAnchors, revolute, distance, prismatic, weld, wheel, motor, friction, gear, pulley, action, actionPoint, explosion};
 }
 
 }  // namespace perpdot::scene_keys
