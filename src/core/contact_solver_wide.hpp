@@ -1,6 +1,6 @@
 // The contact rows, written once over a lane type F: float solves one constraint (the overflow
-// colour, contact_solver.cpp), simd::Float4 solves four constraints of one graph colour at once
-// (contact_solver_wide.cpp). Each row is Hecker's collision impulse
+// colour, contact_solver.cpp, and the contact groups), simd::Float4 and the AVX2 Float8 solve four
+// or eight constraints of one graph colour at once (contact_solver_wide.cpp). Each row is Hecker's collision impulse
 //   j = -(v_rel·n + bias) / (1/mA + 1/mB + perpDot(rA,n)²/IA + perpDot(rB,n)²/IB)
 // accumulated and clamped (λn ≥ 0, |λt| ≤ μ λn), softened by the substep's Softness.
 //
@@ -23,7 +23,7 @@ struct ContactPointRows {
     Vec2T<F> anchorA, anchorB;  // fixed for the step: rA, rB
     F baseSeparation{};         // separation minus (rB - rA)·n, so s = base + (ΔpB + rB' - ΔpA - rA')·n
     F normalImpulse{}, tangentImpulse{};
-    F normalMass{}, tangentMass{};  // 1 / effectiveMass of each row; 0 for no manifold point
+    F normalMass{}, tangentMass{};  // effectiveMass = 1/K of each row; 0 for no manifold point
 };
 
 // The fields every pass reads come first, up to the points; the others only where a lane of the

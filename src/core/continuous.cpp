@@ -1,6 +1,7 @@
 // Continuous collision against static geometry (Box2D v3's scheme): after the solve, a body that
 // moved more than half its smallest extent this step is swept from its step-start pose to its end
-// pose with b2TimeOfImpact against the static shapes around the sweep, and moved back to the
+// pose with the time of impact (CollisionSystem::timeOfImpact: conservative advancement on
+// b2Distance) against the static shapes around the sweep, and moved back to the
 // earliest time of impact t < 1. Its velocity is kept: the next step's contact stops it.
 // Bullets against moving bodies: continuous_impacts.cpp.
 #include <algorithm>
@@ -86,7 +87,7 @@ float staticImpact(const World::Impl& w, int index, const collide::Sweep& sweep)
             float toi = w.collision.timeOfImpact({s, 0}, sweep, key, still);
             // The shape's core (a circle of a quarter of its extent, which turning does not change)
             // must still not pass when the shape was already touching at the start, or when the
-            // centre crossed the segment but b2TimeOfImpact saw no impact: a shape turning by
+            // centre crossed the segment but the time of impact saw none: a shape turning by
             // radians in one step can defeat its separating-axis advance.
             if (toi == 0.0f || (toi >= 1.0f && pass == SegmentPass::Crosses))
                 toi = w.collision.coreTimeOfImpact(s, 0.25f * shape.minExtent, sweep, key, still);

@@ -3,8 +3,8 @@
 // Sweeping a bullet against the others' final poses (as against static shapes) misses two bodies
 // that cross: each ends where the other started. Instead every fast body of the step is a Mover
 // whose centre and angle go linearly from its step-start pose to its end pose; the bodies a fast
-// mover's swept box meets become movers too, and each pair with a bullet in it gets
-// b2TimeOfImpact on both moving sweeps. Impacts are then taken in time order (Box2D 2.4's
+// mover's swept box meets become movers too, and each pair with a bullet in it gets a time of
+// impact on both moving sweeps (CollisionSystem::timeOfImpact). Impacts are then taken in time order (Box2D 2.4's
 // b2World::SolveTOI takes the same order, but solves a small island at each one):
 //   1. both bodies go to their poses at the time of impact t, and the manifold there gives the
 //      normal n (A to B) and the contact points;
@@ -12,7 +12,7 @@
 //      perpDot(rA,n)²/IA + perpDot(rB,n)²/IB), accumulated and clamped (λn ≥ 0) over a few
 //      sweeps of the points, with Coulomb friction |λt| ≤ μ λn; equal and opposite, so momentum
 //      is kept;
-//   3. b2TimeOfImpact leaves the shapes 3 linear slops inside each other's radius; the pair goes
+//   3. the time of impact leaves the shapes 3 linear slops inside each other's radius (Box2D's target); the pair goes
 //      back along its paths by depth / approach speed, to where the surfaces first touched;
 //   4. both move on with their new velocities for the rest of the step, and their new paths are
 //      swept again (against static shapes and their other pairs).
@@ -43,7 +43,7 @@ Transform frameAt(const Mover& m, Vec2 localCenter, float t) {
     const Rot q = Rot::fromAngle(angleAt(m, t));
     return {centerAt(m, t) - rotate(q, localCenter), q};
 }
-// The path from step time t to the end of the step, for b2TimeOfImpact (which measures in [0, 1]).
+// The path from step time t to the end of the step, for the time of impact (which measures in [0, 1]).
 collide::Sweep sweepFrom(const Mover& m, Vec2 localCenter, float t) {
     return {localCenter, centerAt(m, t), m.c1, angleAt(m, t), m.a1};
 }
