@@ -1,5 +1,7 @@
 #include "core/impact_propagation.hpp"
 
+#include <algorithm>
+
 #include "core/contact_prepare.hpp"
 #include "core/world_impl.hpp"
 
@@ -28,9 +30,11 @@ void findImpactPoints(const World::Impl& w, std::vector<ImpactPoint>& points) {
                               .normal = contact.normal,
                               .separation = p.separation,
                               .restitution = contact.restitution,
+                              .friction = contact.friction,
                               .invIA = m.invIA,
                               .invIB = m.invIB,
-                              .normalMass = effectiveMass(m, p.anchorA, p.anchorB, contact.normal)});
+                              .normalMass = effectiveMass(m, p.anchorA, p.anchorB, contact.normal),
+                              .tangentMass = effectiveMass(m, p.anchorA, p.anchorB, perp(contact.normal))});
         }
     }
 }
@@ -49,9 +53,9 @@ void propagateImpacts(World::Impl& w, const StepContext& ctx) {
     findImpactPoints(w, points);
     // In order of impact: a point meets when it approaches faster than the restitution threshold
     // (v_rel·n < −threshold, v_rel of the free velocities, as restitution reads it) and closes its
-    // gap within the step (s ≤ −v_rel·n h); it takes j = −(1 + e) v_rel·n / K alone. With e = 1 a
-    // pair of equal masses swaps its velocities along n, and kinetic energy is kept at every
-    // impact. Sweeps in contact order until none meets, at most 4 impacts per point: what is still
+    // gap within the step (s ≤ −v_rel·n h); it takes j = −(1 + e) v_rel·n / K alone, and Coulomb
+    // friction along t = perp(n), |jt| ≤ μ j. With e = 1 and no friction a pair of equal masses
+    // swaps its velocities along n, and kinetic energy is kept at every impact. Sweeps in contact order until none meets, at most 4 impacts per point: what is still
     // approaching then is left to the substeps and the restitution pass.
     const size_t maxImpacts = 4 * points.size();
     size_t impacts = 0;
@@ -61,11 +65,17 @@ void propagateImpacts(World::Impl& w, const StepContext& ctx) {
             BodyState &a = s.freeVelocities[p.slotA], &b = s.freeVelocities[p.slotB];
             const float vn = dot(relativeVelocity(a, b, p.rA, p.rB), p.normal);
             if (vn >= -ctx.restitutionThreshold || p.separation > -vn * ctx.h) continue;
-            const Vec2 P = (-(1.0f + p.restitution) * vn * p.normalMass) * p.normal;
-            kick(a, p.invIA, p.rA, -P);
-            kick(b, p.invIB, p.rB, P);
-            kick(s.states[p.slotA], p.invIA, p.rA, -P);
-            kick(s.states[p.slotB], p.invIB, p.rB, P);
+            auto apply = [&](Vec2 P) {
+                kick(a, p.invIA, p.rA, -P);
+                kick(b, p.invIB, p.rB, P);
+                kick(s.states[p.slotA], p.invIA, p.rA, -P);
+                kick(s.states[p.slotB], p.invIB, p.rB, P);
+            };
+            const float j = -(1.0f + p.restitution) * vn * p.normalMass;
+            apply(j * p.normal);
+            const Vec2 t = perp(p.normal);
+            const float maxFriction = p.friction * j;
+            apply(std::clamp(-dot(relativeVelocity(a, b, p.rA, p.rB), t) * p.tangentMass, -maxFriction, maxFriction) * t);
             met = true;
             if (++impacts == maxImpacts) break;
         }

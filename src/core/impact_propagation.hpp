@@ -18,9 +18,10 @@ struct ImpactPoint {
     int slotA = 0, slotB = 0;
     Vec2 rA, rB, normal;  // anchors from the centres of mass, normal from A to B
     float separation = 0;
-    float restitution = 0;
+    float restitution = 0, friction = 0;
     float invIA = 0, invIB = 0;
-    float normalMass = 0;  // 1 / (1/mA + 1/mB + perpDot(rA,n)²/IA + perpDot(rB,n)²/IB)
+    float normalMass = 0;   // 1 / (1/mA + 1/mB + perpDot(rA,n)²/IA + perpDot(rB,n)²/IB)
+    float tangentMass = 0;  // the same along t = perp(n)
 };
 
 // The impacts of this step (after the contact constraints are selected and their bodies' free
