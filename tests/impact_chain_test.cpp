@@ -88,5 +88,27 @@ TEST(ImpactChainRestitution, HeadOnPairEndsAtHeckersVelocities) {
     EXPECT_NEAR(length(momentum(world, balls) - p0), 0.0f, 1e-5f * length(p0));
 }
 
+// A game hears the impact: a ball at 5 m/s into a resting one, both with hit events, raises one
+// hit at the approach speed, though the impact is resolved before the rows see the approach.
+TEST(ImpactChain, AnImpactPassedOnRaisesItsHitEvent) {
+    World world(weightless());
+    ShapeDef def = test::material(1.0f, 0.0f, 1.0f);
+    def.enableHitEvents = true;
+    const BodyId striker = test::addDisc(world, {-1.0f, 0.0f}, radius, def);
+    test::addDisc(world, {0.0f, 0.0f}, radius, def);
+    world.setLinearVelocity(striker, {5.0f, 0.0f});
+    int hits = 0;
+    float speed = 0.0f;
+    for (int i = 0; i < 30; ++i) {
+        world.step(dt);
+        for (const ContactHitEvent& e : world.contactEvents().hitEvents) {
+            ++hits;
+            speed = e.approachSpeed;
+        }
+    }
+    EXPECT_EQ(hits, 1);
+    EXPECT_NEAR(speed, 5.0f, 0.05f);
+}
+
 }  // namespace
 }  // namespace perpdot

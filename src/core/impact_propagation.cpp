@@ -14,8 +14,8 @@ namespace {
 // impact on to: the restitution pass bounces it.
 void findImpactPoints(const World::Impl& w, std::vector<ImpactPoint>& points) {
     const StepScratch& s = w.scratch;
-    points.clear();
-    for (const ContactConstraint& c : s.constraints) {
+    for (int k = 0; k < static_cast<int>(s.constraints.size()); ++k) {
+        const ContactConstraint& c = s.constraints[k];
         if (c.indexA == 0 || c.indexB == 0) continue;
         const RowMasses m = rowMasses(s, c.indexA, c.indexB);
         if (m.invMassA == 0.0f || m.invMassB == 0.0f) continue;
@@ -23,7 +23,9 @@ void findImpactPoints(const World::Impl& w, std::vector<ImpactPoint>& points) {
         if (contact.restitution == 0.0f) continue;
         for (int i = 0; i < c.pointCount; ++i) {
             const ContactPointState& p = contact.points[i];
-            points.push_back({.slotA = c.indexA,
+            points.push_back({.constraint = k,
+                              .point = i,
+                              .slotA = c.indexA,
                               .slotB = c.indexB,
                               .rA = p.anchorA,
                               .rB = p.anchorB,
@@ -50,6 +52,8 @@ void kick(BodyState& body, float invI, Vec2 r, Vec2 P) {
 void propagateImpacts(World::Impl& w, const StepContext& ctx) {
     StepScratch& s = w.scratch;
     std::vector<ImpactPoint>& points = s.impactPoints;
+    points.clear();
+    if (!w.shapes.anyRestitution) return;  // no shape has ever been elastic: nothing to look for
     findImpactPoints(w, points);
     // In order of impact: a point meets when it approaches faster than the restitution threshold
     // (v_rel·n < −threshold, v_rel of the free velocities, as restitution reads it) and closes its
@@ -61,7 +65,7 @@ void propagateImpacts(World::Impl& w, const StepContext& ctx) {
     size_t impacts = 0;
     for (bool met = true; met && impacts < maxImpacts;) {
         met = false;
-        for (const ImpactPoint& p : points) {
+        for (ImpactPoint& p : points) {
             BodyState &a = s.freeVelocities[p.slotA], &b = s.freeVelocities[p.slotB];
             const float vn = dot(relativeVelocity(a, b, p.rA, p.rB), p.normal);
             if (vn >= -ctx.restitutionThreshold || p.separation > -vn * ctx.h) continue;
@@ -71,6 +75,7 @@ void propagateImpacts(World::Impl& w, const StepContext& ctx) {
                 kick(s.states[p.slotA], p.invIA, p.rA, -P);
                 kick(s.states[p.slotB], p.invIB, p.rB, P);
             };
+            p.impactSpeed = std::max(p.impactSpeed, -vn);
             const float j = -(1.0f + p.restitution) * vn * p.normalMass;
             apply(j * p.normal);
             const Vec2 t = perp(p.normal);

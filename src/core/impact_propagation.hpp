@@ -15,6 +15,7 @@ struct StepContext;
 // A manifold point of an elastic contact between two moving bodies (solver slots), as an impact
 // reads it.
 struct ImpactPoint {
+    int constraint = 0, point = 0;  // which constraint and manifold point
     int slotA = 0, slotB = 0;
     Vec2 rA, rB, normal;  // anchors from the centres of mass, normal from A to B
     float separation = 0;
@@ -22,6 +23,7 @@ struct ImpactPoint {
     float invIA = 0, invIB = 0;
     float normalMass = 0;   // 1 / (1/mA + 1/mB + perpDot(rA,n)²/IA + perpDot(rB,n)²/IB)
     float tangentMass = 0;  // the same along t = perp(n)
+    float impactSpeed = 0;  // the fastest approach an impact here took this step (hit events); 0: none
 };
 
 // The impacts of this step (after the contact constraints are selected and their bodies' free
