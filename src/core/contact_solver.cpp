@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "core/contact_prepare.hpp"
+#include "core/impact_propagation.hpp"
 #include "core/world_impl.hpp"
 
 namespace perpdot {
@@ -184,6 +185,7 @@ void prepareContacts(World::Impl& w, const StepContext& ctx) {
     w.workers.parallelFor(static_cast<int>(s.states.size()), 256, [&](int begin, int end, int) {
         for (int slot = begin; slot < end; ++slot) s.freeVelocities[slot] = velocityWithoutContact(w, ctx, slot);
     });
+    propagateImpacts(w, ctx);  // simultaneous impacts, pair by pair, before the substeps
     findContactGroups(w, ctx);
     prepareContactBlocks(w, ctx);
 }

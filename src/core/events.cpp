@@ -35,11 +35,15 @@ void World::Impl::reportTouch(const Contact& c, bool begin) {
 }
 
 // After the solve: a hit for every touching contact with hit events whose fastest point
-// approached faster than the threshold and actually pushed (λn > 0 at some substep).
+// approached faster than the threshold and actually pushed (λn > 0 at some substep), or took an
+// impact before the substeps (impact_propagation.cpp; its approach is then gone from the rows).
 void reportHitEvents(World::Impl& w) {
     if (!w.shapes.anyHitEvents) return;
     locateContactRows(w);
+    const std::vector<ImpactPoint>& impacts = w.scratch.impactPoints;  // in constraint order
+    size_t impact = 0;
     for (int k = 0; k < static_cast<int>(w.scratch.constraints.size()); ++k) {
+        while (impact < impacts.size() && impacts[impact].constraint < k) ++impact;
         const ContactConstraint& c = w.scratch.constraints[k];
         const Contact& contact = w.contactCache.contacts[c.contact];
         if (!w.shapes[contact.a.shape].enableHitEvents && !w.shapes[contact.b.shape].enableHitEvents) continue;
@@ -50,6 +54,14 @@ void reportHitEvents(World::Impl& w) {
             if (approachSpeed > event.approachSpeed && contact.points[i].maxNormalImpulse > 0.0f) {
                 event.approachSpeed = approachSpeed;
                 event.point = contact.points[i].point;
+                hit = true;
+            }
+        }
+        for (; impact < impacts.size() && impacts[impact].constraint == k; ++impact) {
+            const ImpactPoint& p = impacts[impact];
+            if (p.impactSpeed > event.approachSpeed) {
+                event.approachSpeed = p.impactSpeed;
+                event.point = contact.points[p.point].point;
                 hit = true;
             }
         }

@@ -115,6 +115,7 @@ int World::Impl::addShape(BodyId bodyId, const ShapeDef& def) {
     s.enableContactEvents = def.enableContactEvents;
     s.enableHitEvents = def.enableHitEvents;
     shapes.anyHitEvents = shapes.anyHitEvents || def.enableHitEvents;
+    shapes.noteRestitution(def.restitution);
     s.enableSensorEvents = def.enableSensorEvents;
     s.enablePreSolveEvents = def.enablePreSolveEvents;
     s.filter = def.filter;
@@ -260,6 +261,7 @@ void World::setRestitution(ShapeId id, float restitution) {
     impl_->checkUnlocked("setRestitution");
     if (!(std::isfinite(restitution) && restitution >= 0.0f)) throw Error("setRestitution: restitution must be finite and >= 0");
     impl_->shape(id).restitution = restitution;
+    impl_->shapes.noteRestitution(restitution);
     remixMaterials(*impl_, id.index);
 }
 

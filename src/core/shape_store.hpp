@@ -40,6 +40,10 @@ struct ShapeData {
 
 struct ShapeStore : Pool<ShapeData> {
     bool anyHitEvents = false;  // a shape with enableHitEvents was ever created: look for hits
+    // A shape was ever elastic (created, set or restored with restitution > 0): look for impacts
+    // (impact_propagation.cpp). Without one no contact is elastic, so skipping the search changes nothing.
+    bool anyRestitution = false;
+    void noteRestitution(float restitution) { anyRestitution = anyRestitution || restitution > 0.0f; }
     // Every category and every mask bit of the shapes ever created (never cleared).
     uint16_t categories = 0, masks = 0;
 

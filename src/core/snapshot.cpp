@@ -435,6 +435,7 @@ void World::restore(std::span<const uint8_t> bytes) {
         readShape(in, s, savedProxies.items, bodyCount, holds ? &impl_->shapes[i] : nullptr);
         savedProxies.endSlot();
         w.shapes.noteFilter(s.filter);
+        w.shapes.noteRestitution(s.restitution);
         if (!bodyAlive[s.body]) in.fail("shape " + std::to_string(i) + " belongs to a dead body");
     }
     w.shapes.restoreFreeList(readFreeList(in, shapeAlive, "free shape"));

@@ -154,8 +154,8 @@ std::vector<BuiltinScene> demoScenes() {
         {"card_house", "five storeys of leaning cards (Box2D v3's card house at 5x scale), standing on friction mu = 0.7",
          cardHouse},
         {"newtons_cradle",
-         "a ball hits five touching balls (restitution 1, no friction): momentum is kept, but sequential impulses "
-         "spread it along the row instead of passing it all to the far ball",
+         "a ball hits five touching balls (restitution 1, no friction): the impact passes down the row and the far "
+         "ball leaves at the striker's speed",
          newtonsCradle},
         {"offcenter_hit", "zero gravity: a ball hits a free rod near its end; the rod translates and spins (Hecker)",
          offcenterHit},
