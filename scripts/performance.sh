@@ -77,7 +77,7 @@ for entry in "${scenes[@]}"; do
 done
 
 # --- where the time goes -----------------------------------------------------------------------
-# Inclusive instructions of each stage of World::step (src/core/step.cpp), as a share of the step's.
+# Inclusive instructions of each stage of World::step (src/core/world/step.cpp), as a share of the step's.
 stages=(updatePairs updateContacts integrateVelocities prepareJoints startTreeRefit colorJoints prepareContacts
         "SolverStages::run" finalizeBodies updateSleep)
 stageNames=("broadphase pairs" "narrowphase" "forces" "joints prepared" "tree re-fit ahead" "joints coloured"

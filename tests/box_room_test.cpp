@@ -9,7 +9,7 @@
 #include <random>
 
 #include "collide/collision.hpp"
-#include "core/box_room.hpp"
+#include "core/shapes/box_room.hpp"
 
 namespace perpdot {
 namespace {

@@ -1,4 +1,4 @@
-// Contact groups solved directly (src/core/contact_groups.hpp): a small group with a heavily loaded
+// Contact groups solved directly (src/core/solver/contact_groups.hpp): a small group with a heavily loaded
 // row rests where the contact forces' accelerations put it, C = K F / ω² — g/ω² on the ground, 0
 // between bodies — instead of sinking by its load over its own stiffness. The `perpdot stress`
 // cases check the centred heavy box and the 50-box column; these check what the suite does not.

@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "core/contact_solver_wide.hpp"
+#include "core/solver/contact_solver_wide.hpp"
 #include "perpdot/feature_scenes.hpp"
 #include "perpdot/scene.hpp"
 #include "perpdot/state_hash.hpp"

@@ -1,4 +1,4 @@
-// The contact rows of src/core/contact_solver_wide.hpp solve four constraints in simd::Float4
+// The contact rows of src/core/solver/contact_solver_wide.hpp solve four constraints in simd::Float4
 // lanes with bit for bit the results of solving them one at a time with F = float (no FMA, no
 // approximate reciprocal), including one-point manifolds, rolling resistance, restitution (the pass
 // after the substeps, which skips slow, non-pushing and inelastic points) and empty lanes, the lanes
@@ -10,7 +10,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "core/contact_solver_wide.hpp"
+#include "core/solver/contact_solver_wide.hpp"
 #include "lanes_helpers.hpp"
 
 namespace perpdot {

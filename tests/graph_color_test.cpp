@@ -1,4 +1,4 @@
-// Graph colouring of contact constraints (src/core/graph_color.hpp): no two constraints of one
+// Graph colouring of contact constraints (src/core/solver/graph_color.hpp): no two constraints of one
 // colour share a dynamic body, static bodies are shared freely, the overflow colour takes what
 // the 16 colours cannot, and the result depends only on the order of the constraints.
 #include <gtest/gtest.h>
@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/graph_color.hpp"
+#include "core/solver/graph_color.hpp"
 
 namespace perpdot {
 namespace {

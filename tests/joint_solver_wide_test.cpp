@@ -1,4 +1,4 @@
-// The joint rows of src/core/joint_solver_wide.hpp solve four joints of a type in simd::Float4
+// The joint rows of src/core/joints/joint_solver_wide.hpp solve four joints of a type in simd::Float4
 // lanes (a JointBlock) with bit for bit the results of the type's scalar stages solving them one
 // at a time: revolute point rows alone; revolute and prismatic motors and limits, weld springs,
 // wheel motors and springs, distance springs with their min and max rows on or off lane by lane,
@@ -13,13 +13,13 @@
 #include <string>
 #include <vector>
 
-#include "core/joint_distance.hpp"
-#include "core/joint_motor.hpp"
-#include "core/joint_prismatic.hpp"
-#include "core/joint_revolute.hpp"
-#include "core/joint_solver_wide.hpp"
-#include "core/joint_weld.hpp"
-#include "core/joint_wheel.hpp"
+#include "core/joints/joint_distance.hpp"
+#include "core/joints/joint_motor.hpp"
+#include "core/joints/joint_prismatic.hpp"
+#include "core/joints/joint_revolute.hpp"
+#include "core/joints/joint_solver_wide.hpp"
+#include "core/joints/joint_weld.hpp"
+#include "core/joints/joint_wheel.hpp"
 #include "lanes_helpers.hpp"
 
 namespace perpdot {

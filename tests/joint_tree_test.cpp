@@ -1,4 +1,4 @@
-// Revolute trees solved directly (src/core/joint_tree.hpp): which joints form a tree, and what the
+// Revolute trees solved directly (src/core/joints/joint_tree.hpp): which joints form a tree, and what the
 // direct solve and the position projection keep — closed hinges under a heavy load at the default
 // 4 substeps, the momentum and centre of mass of a free chain, a branched tree at rest.
 #include <gtest/gtest.h>
@@ -7,8 +7,8 @@
 #include <random>
 #include <vector>
 
-#include "core/joint_rows.hpp"
-#include "core/joint_tree.hpp"
+#include "core/joints/joint_rows.hpp"
+#include "core/joints/joint_tree.hpp"
 #include "joint_helpers.hpp"
 
 namespace perpdot {

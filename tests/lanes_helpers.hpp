@@ -7,8 +7,8 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "core/row_lanes.hpp"
-#include "core/step_context.hpp"
+#include "core/solver/row_lanes.hpp"
+#include "core/world/step_context.hpp"
 
 namespace perpdot::lanes_test {
 

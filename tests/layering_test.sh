@@ -1,10 +1,11 @@
 #!/bin/sh
 # The layers' include fences (cmake/perpdot_layer.cmake) hold: with a layer's include directories,
-# the preprocessor finds (__has_include) its own and lower layers' headers, and none of a layer above.
-# Usage: layering_test.sh CXX "CORE_INCLUDE_DIRS" "SCENE_INCLUDE_DIRS" "CROSSCHECK_INCLUDE_DIRS"
+# the preprocessor finds (__has_include) its own headers and what the layers below export, and
+# none of a layer above nor a lower layer's private ones.
+# Usage: layering_test.sh CXX "COLLIDE_DIRS" "CORE_DIRS" "SCENE_DIRS" "CROSSCHECK_DIRS"
 # (each a :-separated list).
 set -u
-cxx=$1 core=$2 scene=$3 crosscheck=$4
+cxx=$1 collide=$2 core=$3 scene=$4 crosscheck=$5
 failed=0
 check() {  # expected(found|missing) layer dirs header
     flags=$(echo "$3" | tr ':' '\n' | sed 's/^/-I/' | tr '\n' ' ')
@@ -16,20 +17,33 @@ check() {  # expected(found|missing) layer dirs header
         failed=1
     fi
 }
+# collide: the Box2D adapter and the SIMD lanes, below the engine: the math and shape headers only.
+for h in perpdot/world.hpp perpdot/body.hpp core/world/world_impl.hpp core/solver/lanes.hpp perpdot/scene.hpp scene/build_world.hpp; do
+    check missing collide "$collide" $h
+done
+for h in perpdot/math.hpp perpdot/shapes.hpp collide/collision.hpp simd/simd.hpp; do
+    check found collide "$collide" $h
+done
+# core: the engine, with collide as its part.
 for h in perpdot/scene.hpp perpdot/feature_scenes.hpp perpdot/crosscheck.hpp scene/build_world.hpp crosscheck/stepper.hpp; do
     check missing core "$core" $h
 done
-for h in perpdot/perpdot.hpp core/step_context.hpp collide/pair_set.hpp; do
+for h in perpdot/perpdot.hpp core/world/step_context.hpp collide/pair_set.hpp simd/simd.hpp; do
     check found core "$core" $h
 done
-for h in perpdot/crosscheck.hpp crosscheck/stepper.hpp; do
+# scene: the engine through its public headers.
+for h in perpdot/crosscheck.hpp crosscheck/stepper.hpp core/world/world_impl.hpp collide/collision.hpp; do
     check missing scene "$scene" $h
 done
 for h in perpdot/scene.hpp perpdot/feature_scenes.hpp perpdot/world.hpp scene/scene_script.hpp; do
     check found scene "$scene" $h
 done
-for h in perpdot/crosscheck.hpp perpdot/scene.hpp crosscheck/stepper.hpp scene/build_world.hpp; do
+# crosscheck: the engine's public headers, scene's, and of collide only its Box2D shape adapters.
+for h in core/world/world_impl.hpp collide/collision.hpp collide/pair_set.hpp simd/simd.hpp; do
+    check missing crosscheck "$crosscheck" $h
+done
+for h in perpdot/crosscheck.hpp perpdot/scene.hpp crosscheck/stepper.hpp scene/build_world.hpp collide/polygon_b2.hpp collide/chain_b2.hpp; do
     check found crosscheck "$crosscheck" $h
 done
-[ $failed = 0 ] && echo "layering: core sees neither scene nor crosscheck headers, scene does not see crosscheck's"
+[ $failed = 0 ] && echo "layering: collide sees only the math and shape headers; core sees neither scene nor crosscheck; scene sees no engine internals; crosscheck sees of collide only its Box2D adapters"
 exit $failed

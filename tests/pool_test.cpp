@@ -5,7 +5,7 @@
 #include <random>
 #include <vector>
 
-#include "core/pool.hpp"
+#include "core/base/pool.hpp"
 
 namespace perpdot {
 namespace {

@@ -1,4 +1,4 @@
-// The radix sort of (key, value) pairs (src/core/radix_sort.hpp) against std::stable_sort: keys
+// The radix sort of (key, value) pairs (src/core/base/radix_sort.hpp) against std::stable_sort: keys
 // spread over all four bytes, keys that differ in one byte only (the other passes skipped),
 // many equal keys (their values keep their order), and the empty list.
 #include <gtest/gtest.h>
@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/radix_sort.hpp"
+#include "core/base/radix_sort.hpp"
 
 namespace perpdot {
 namespace {

@@ -27,8 +27,8 @@
 
 #include <gtest/gtest.h>
 
-#include "core/joint_revolute.hpp"
-#include "core/snapshot_fields.hpp"
+#include "core/joints/joint_revolute.hpp"
+#include "core/snapshot/snapshot_fields.hpp"
 #include "joint_zoo.hpp"
 #include "perpdot/error.hpp"
 #include "perpdot/state_hash.hpp"

@@ -14,7 +14,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/contact_groups.hpp"
+#include "core/solver/contact_groups.hpp"
 #include "perpdot/world.hpp"
 #include "physics_scenes.hpp"
 

@@ -9,7 +9,7 @@
 #include <thread>
 #include <vector>
 
-#include "core/workers.hpp"
+#include "core/threads/workers.hpp"
 #include "perpdot/feature_scenes.hpp"
 #include "perpdot/perpdot.hpp"
 #include "perpdot/scene.hpp"

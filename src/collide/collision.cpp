@@ -4,9 +4,10 @@
 
 #include "collide/b2_convert.hpp"
 #include "collide/capsule_b2.hpp"
+#include "collide/chain_b2.hpp"
 #include "collide/polygon_b2.hpp"
 #include "collide/tree_rebuild.hpp"
-#include "core/simd.hpp"
+#include "simd/simd.hpp"
 
 #include <box2d/b2_circle_shape.h>
 #include <box2d/b2_collision.h>
@@ -281,22 +282,6 @@ void CollisionSystem::setGeometry(int shape, const Polygon& polygon) { impl_->se
 void CollisionSystem::setGeometry(int shape, const Segment& segment) { impl_->setGeometry(shape, toB2(segment)); }
 void CollisionSystem::setGeometry(int shape, const Capsule& capsule) { impl_->setGeometry(shape, capsuleToB2(capsule)); }
 
-ChainPath box2dChainPath(const Chain& chain) {
-    ChainPath path{chain.vertices, {}, {}};
-    // Box2D's one-sided edges collide on the right of v1→v2 (solid left): a chain solid on the
-    // right runs the other way, its ghosts swapped.
-    const bool reversed = chain.solid == ChainSide::Right;
-    if (reversed) std::reverse(path.vertices.begin(), path.vertices.end());
-    const std::optional<Vec2>& prev = reversed ? chain.nextVertex : chain.prevVertex;
-    const std::optional<Vec2>& next = reversed ? chain.prevVertex : chain.nextVertex;
-    const std::vector<Vec2>& v = path.vertices;
-    const size_t n = v.size();
-    if (!chain.loop) {  // ghosts not given: the end segments continued straight on
-        path.prev = prev ? *prev : v[0] + (v[0] - v[1]);
-        path.next = next ? *next : v[n - 1] + (v[n - 1] - v[n - 2]);
-    }
-    return path;
-}
 
 void CollisionSystem::setGeometry(int shape, const Chain& chain) {
     const ChainPath path = box2dChainPath(chain);

@@ -13,16 +13,6 @@
 
 namespace perpdot::collide {
 
-// A chain as Box2D's one-sided edges see it: its vertices in the order that puts the solid side on
-// the left (Box2D collides on the right of v1→v2), and for an open chain its ghost vertices
-// (given, or the end segments continued straight on). The collision system and the Box2D
-// cross-check both build their edges from it.
-struct ChainPath {
-    std::vector<Vec2> vertices;
-    Vec2 prev, next;  // open chains: before vertices[0], after the last
-};
-ChainPath box2dChainPath(const Chain& chain);
-
 // Box2D's tolerances, kept so perpdot and Box2D rest bodies at the same separations.
 inline constexpr float linearSlop = 0.005f;
 inline constexpr float polygonRadius = 2.0f * linearSlop;  // Box2D 2.4's collision skin of polygons and segments

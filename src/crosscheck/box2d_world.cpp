@@ -7,7 +7,7 @@
 
 #include "collide/b2_convert.hpp"
 #include "collide/capsule_b2.hpp"
-#include "collide/collision.hpp"
+#include "collide/chain_b2.hpp"
 #include "collide/polygon_b2.hpp"
 #include "crosscheck/stepper.hpp"
 #include "perpdot/error.hpp"

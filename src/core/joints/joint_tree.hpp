@@ -1,0 +1,46 @@
+// Revolute trees, solved directly. Sequential passes converge slowly along a chain whose masses
+// differ: 20 links ending in a body of 100 times a link's mass opened 12 % of a link at their
+// hinges at 4 substeps (`perpdot stress stress_chain`). A tree of at least two revolute joints
+// without motor or limit, hanging from at most one body that cannot move, is solved instead as one
+// linear system per pass — the block form of the point rows' soft step (joint_rows.hpp):
+//   λ ← λ − massScale·K⁻¹(v_rel + biasRate·C) − impulseScale·λ,   K = J M⁻¹ Jᵀ,
+// where K's 2x2 diagonal blocks are each joint's Hecker denominator and an off-diagonal block
+// couples two joints through the body they share. K is factored by Cholesky, in double precision.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/world/step_context.hpp"
+#include "perpdot/world.hpp"
+
+namespace perpdot {
+
+struct JointKey;
+struct PreparedJoint;
+
+struct RevoluteTrees {
+    static constexpr int maxJoints = 32;  // K is 2n x 2n: about (2n)³/6 multiply-adds a pass
+    std::vector<int> joints;    // indices into JointStore::prepared, tree by tree, in prepared order
+    std::vector<int> start;     // tree t is joints[start[t] .. start[t + 1])
+    std::vector<uint8_t> inTree;  // by prepared index: 1 if the joint is in a tree
+    // Scratch, kept to reuse its memory: union-find by solver slot, and each joint's tree root.
+    std::vector<int> root, jointCount, fixedAnchors, treeOf;
+    std::vector<uint8_t> cyclic;
+    std::vector<double> K, x;
+    std::vector<Vec2> rA, rB;
+};
+
+// The trees among this step's prepared joints, by their keys; `slots` is the solver's body count.
+void findRevoluteTrees(RevoluteTrees& trees, const std::vector<JointKey>& keys, int slots);
+
+// Warm start (each joint's accumulated impulse) and one pass (with soft bias, or the relax pass
+// without) of every tree. A tree whose K does not factor is solved joint by joint instead.
+void warmStartRevoluteTrees(World::Impl& world, RevoluteTrees& trees, std::vector<PreparedJoint>& prepared);
+void solveRevoluteTrees(World::Impl& world, RevoluteTrees& trees, std::vector<PreparedJoint>& prepared,
+                        const StepContext& ctx, bool useBias);
+// After the substeps: one Newton step on each tree's positions, K P = −C, so the anchors a step
+// ends with meet (the velocity passes leave the drift of rotating arms).
+void projectRevoluteTrees(World::Impl& world, RevoluteTrees& trees, const std::vector<PreparedJoint>& prepared);
+
+}  // namespace perpdot

@@ -1,0 +1,347 @@
+#include "core/solver/contact_groups.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <numeric>
+
+#include "core/solver/cholesky.hpp"
+#include "core/solver/contact_prepare.hpp"
+#include "core/base/union_find.hpp"
+#include "core/world/world_impl.hpp"
+
+namespace perpdot {
+namespace {
+
+enum SlotKind : uint8_t { Fixed, Free, Jointed };
+
+// Principal pivots of a pass at most (solveComplementarity); a pass that needs more is solved
+// row by row instead.
+constexpr int maxPivots = 8;
+// K's diagonal is raised by this fraction: more rows than the bodies have freedoms (a box on two
+// tiles: four rows, three freedoms) make K singular, and rows pushing against each other would
+// take any impulse. The rest state gains compliance·F K_ii / ω², a thousandth of the sequential sink.
+constexpr double compliance = 1e-3;
+// A dropped row approaching faster than its target by less than this (m/s) counts as separating.
+constexpr double separationTolerance = 1e-6;
+
+// One side of a normal row: J's entries for the body in solver slot `slot` (lin·v + ang·ω), with
+// the body's inverse mass and inertia. A body that cannot move has zero inverse mass and inertia.
+struct RowSide {
+    int slot;
+    Vec2 lin;
+    float ang, invMass, invInertia;
+};
+
+// −n, −perpDot(rA, n) for A; n, perpDot(rB, n) for B.
+std::array<RowSide, 2> sidesOf(const World::Impl& w, const ContactConstraint& c, const ContactRows<float>& rows,
+                               const ContactPointRows<float>& cp) {
+    const Vec2 n = rows.normal;
+    const RowMasses m = rowMasses(w.scratch, c.indexA, c.indexB);
+    return {RowSide{c.indexA, -n, -perpDot(cp.anchorA, n), m.invMassA, m.invIA},
+            RowSide{c.indexB, n, perpDot(cp.anchorB, n), m.invMassB, m.invIB}};
+}
+
+// K_rs = Σ over the bodies rows r and s share: lin_r·lin_s / m + ang_r ang_s / I.
+double coupling(const std::array<RowSide, 2>& r, const std::array<RowSide, 2>& s) {
+    double k = 0.0;
+    for (const RowSide& p : r)
+        for (const RowSide& q : s)
+            if (p.slot == q.slot && p.slot != 0)
+                k += static_cast<double>(p.invMass) * dot(p.lin, q.lin) + static_cast<double>(p.invInertia) * p.ang * q.ang;
+    return k;
+}
+
+// Rows of group `group` assembled into K and factored into L; false if K is singular.
+bool assemble(World::Impl& w, ContactGroups& g, int group) {
+    const int first = g.rowStart[group], n = g.rowStart[group + 1] - first;
+    double* K = &g.K[g.matrixStart[group]];
+    double* L = &g.L[g.matrixStart[group]];
+    auto sides = [&](int row) {
+        const auto [k, i] = g.rows[first + row];
+        const ContactRows<float>& rows = w.scratch.constraintRows[k];
+        return sidesOf(w, w.scratch.constraints[k], rows, rows.points[i]);
+    };
+    for (int r = 0; r < n; ++r) {
+        const std::array<RowSide, 2> sr = sides(r);
+        for (int s = 0; s <= r; ++s) K[r * n + s] = K[s * n + r] = coupling(sr, sides(s));
+        K[r * n + r] *= 1.0 + compliance;
+    }
+    std::copy(K, K + static_cast<size_t>(n) * n, L);
+    return choleskyFactor(L, n);
+}
+
+// Whether this step's constraints join the same slots with the same point counts, and the slots
+// have the same kinds, as when remember last ran.
+bool sameAsLastStep(const StepScratch& s, const ContactGroups& g) {
+    auto same = [](const auto& a, const auto& b) {  // one memcmp, not one per element
+        return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])) == 0);
+    };
+    if (!same(s.constraintSlots, g.lastSlots) || !same(g.kind, g.lastKind)) return false;
+    for (size_t k = 0; k < s.constraints.size(); ++k)
+        if (s.constraints[k].pointCount != g.lastPointCounts[k]) return false;
+    return true;
+}
+
+void remember(const StepScratch& s, ContactGroups& g, bool noneSmall) {
+    g.lastSlots = s.constraintSlots;
+    g.lastKind = g.kind;
+    g.lastPointCounts.resize(s.constraints.size());
+    for (size_t k = 0; k < s.constraints.size(); ++k) g.lastPointCounts[k] = s.constraints[k].pointCount;
+    g.noneSmall = noneSmall;
+}
+
+}  // namespace
+
+void findContactGroups(World::Impl& w, const StepContext& ctx) {
+    ContactGroups& g = w.scratch.contactGroups;
+    const int slots = static_cast<int>(w.scratch.states.size());
+    const int count = static_cast<int>(w.scratch.constraints.size());
+    g.direct.assign(static_cast<size_t>(count), 0);
+    g.constraints.clear();
+    g.start.assign(1, 0);
+    g.rows.clear();
+    g.rowStart.assign(1, 0);
+    g.matrixStart.assign(1, 0);
+    // Loads are measured in g: λn K_ii / hs ≥ loadTrigger·g, i.e. λn ≥ loadTrigger·g·hs·normalMass.
+    const float loadImpulse = ContactGroups::loadTrigger * length(w.def.gravity) * ctx.hs;
+    // From the contact: the rows are prepared once the groups are known (contact_prepare.hpp).
+    auto loaded = [&](const ContactConstraint& c) {
+        const Contact& contact = w.contactCache.contacts[c.contact];
+        const RowMasses m = rowMasses(w.scratch, c.indexA, c.indexB);
+        for (int i = 0; i < c.pointCount; ++i) {
+            const ContactPointState& p = contact.points[i];
+            const float normalMass = effectiveMass<float>(m, p.anchorA, p.anchorB, contact.normal);
+            if (warmStartImpulse(ctx, p.normalImpulse) >= loadImpulse * normalMass && normalMass > 0.0f) return true;
+        }
+        return false;
+    };
+    if (!(loadImpulse > 0.0f) || std::none_of(w.scratch.constraints.begin(), w.scratch.constraints.end(), loaded)) return;
+
+    // Each solver slot's kind: Fixed (the static slot, kinematic bodies: they join nothing),
+    // Free (dynamic), Jointed (dynamic with joints: its joint rows stay sequential between the
+    // group's passes, so its group is not solved directly).
+    g.kind.resize(static_cast<size_t>(slots));
+    g.kind[0] = Fixed;
+    for (int k = 1; k < slots; ++k) {
+        const Body& b = w.bodies[w.scratch.awakeBodies[k - 1]];
+        g.kind[k] = b.type != BodyType::Dynamic ? Fixed : b.jointCount > 0 ? Jointed : Free;
+    }
+    // A settled pile keeps its constraints from step to step: with last step's slots, point counts
+    // and kinds, the groups are last step's, and if none was small enough then, none is now.
+    if (g.noneSmall && sameAsLastStep(w.scratch, g)) return;
+
+    // Join the slots the constraints couple, and count each constraint's rows at its slot (its
+    // dynamic one; a slot that moves nothing stays its own root), 2 in `loaded` if it is jointed.
+    g.root.resize(static_cast<size_t>(slots));
+    std::iota(g.root.begin(), g.root.end(), 0);
+    g.rowCount.assign(static_cast<size_t>(slots), 0);
+    g.loaded.assign(static_cast<size_t>(slots), 0);
+    auto slotOf = [&](int k) {
+        const auto [a, b] = w.scratch.constraintSlots[k];
+        return g.kind[a] != Fixed ? a : b;
+    };
+    for (int k = 0; k < count; ++k) {
+        const auto [a, b] = w.scratch.constraintSlots[k];
+        if (g.kind[a] != Fixed && g.kind[b] != Fixed) unite(g.root, a, b);
+        const int slot = slotOf(k);
+        g.rowCount[slot] += w.scratch.constraints[k].pointCount;
+        if (g.kind[a] == Jointed || g.kind[b] == Jointed) g.loaded[slot] = 2;
+    }
+    // unite keeps the smaller slot as the root, so every parent precedes its child: one sweep in
+    // slot order points every slot at its root and sums the rows there, jointed if any slot is.
+    for (int k = 0; k < slots; ++k) {
+        const int root = g.root[k] = g.root[g.root[k]];
+        if (root == k) continue;
+        g.rowCount[root] += g.rowCount[k];
+        g.loaded[root] = std::max(g.loaded[root], g.loaded[k]);
+    }
+    bool small = false;  // a group, not jointed, with no more rows than a group may have
+    for (int k = 0; k < slots; ++k)
+        small = small || (g.root[k] == k && g.loaded[k] == 0 && g.rowCount[k] > 0 && g.rowCount[k] <= ContactGroups::maxRows);
+    remember(w.scratch, g, !small);
+    if (!small) return;  // a settled pile: one group, too large
+    // Per small root: whether one of its rows is loaded (1); larger groups are never direct.
+    for (int k = 0; k < count; ++k) {
+        const int root = g.root[slotOf(k)];
+        if (g.loaded[root] == 0 && g.rowCount[root] <= ContactGroups::maxRows && loaded(w.scratch.constraints[k])) g.loaded[root] = 1;
+    }
+
+    // Groups in the order of their first constraint while the step's rows last; the constraints of
+    // each in constraint order. Storage for the most rows is taken once, then reused.
+    g.groupOf.assign(static_cast<size_t>(slots), -1);
+    int groups = 0, rowsLeft = ContactGroups::maxTotalRows;
+    for (int k = 0; k < count; ++k) {
+        const int root = g.root[slotOf(k)], n = g.rowCount[root];
+        if (g.loaded[root] != 1 || n > std::min(ContactGroups::maxRows, rowsLeft) || g.groupOf[root] >= 0) continue;
+        g.groupOf[root] = groups++;
+        rowsLeft -= n;
+    }
+    if (groups == 0) return;
+    for (std::vector<int>* v : {&g.constraints, &g.start, &g.rowStart}) v->reserve(ContactGroups::maxTotalRows + 1);
+    g.matrixStart.reserve(ContactGroups::maxTotalRows + 1);
+    g.rows.reserve(ContactGroups::maxTotalRows);
+    for (std::vector<double>* v : {&g.K, &g.L}) v->reserve(static_cast<size_t>(ContactGroups::maxRows) * ContactGroups::maxTotalRows);
+    g.start.assign(static_cast<size_t>(groups) + 1, 0);
+    auto groupOf = [&](int k) { return g.groupOf[g.root[slotOf(k)]]; };
+    for (int k = 0; k < count; ++k)
+        if (groupOf(k) >= 0) ++g.start[groupOf(k) + 1];
+    std::partial_sum(g.start.begin(), g.start.end(), g.start.begin());
+    g.constraints.resize(static_cast<size_t>(g.start.back()));
+    g.rowCount.assign(static_cast<size_t>(groups), 0);  // now: constraints placed per group
+    for (int k = 0; k < count; ++k)
+        if (const int group = groupOf(k); group >= 0) g.constraints[g.start[group] + g.rowCount[group]++] = k;
+
+    // Each group's rows, K and factor; a group whose K does not factor stays with the sequential rows.
+    for (int k : g.constraints) prepareContactRows(w, ctx, w.scratch.constraints[k], w.scratch.constraintRows[k]);
+    int kept = 0;
+    for (int group = 0; group < groups; ++group) {
+        const int rowsBefore = static_cast<int>(g.rows.size());
+        for (int s = g.start[group]; s < g.start[group + 1]; ++s)
+            for (int i = 0; i < w.scratch.constraints[g.constraints[s]].pointCount; ++i) g.rows.push_back({g.constraints[s], i});
+        const int n = static_cast<int>(g.rows.size()) - rowsBefore;
+        g.rowStart.push_back(static_cast<int>(g.rows.size()));
+        g.matrixStart.push_back(g.matrixStart.back() + static_cast<size_t>(n) * n);
+        g.K.resize(g.matrixStart.back());
+        g.L.resize(g.matrixStart.back());
+        if (!assemble(w, g, kept)) {
+            g.rows.resize(static_cast<size_t>(rowsBefore));
+            g.rowStart.pop_back();
+            g.matrixStart.pop_back();
+            continue;
+        }
+        // Keep the group: its constraints move down to follow the groups kept before it.
+        const int size = g.start[group + 1] - g.start[group];
+        std::copy(g.constraints.begin() + g.start[group], g.constraints.begin() + g.start[group + 1],
+                  g.constraints.begin() + g.start[kept]);
+        g.start[kept + 1] = g.start[kept] + size;
+        for (int s = g.start[kept]; s < g.start[kept + 1]; ++s) g.direct[g.constraints[s]] = 1;
+        ++kept;
+    }
+    g.start.resize(static_cast<size_t>(kept) + 1);
+    g.constraints.resize(static_cast<size_t>(g.start.back()));
+    for (std::vector<double>* v : {&g.lambda, &g.y, &g.x, &g.rhs}) v->resize(ContactGroups::maxRows);
+    g.activeK.resize(static_cast<size_t>(ContactGroups::maxRows) * ContactGroups::maxRows);
+    g.active.resize(ContactGroups::maxRows);
+}
+
+namespace {
+
+// x = Δλ, the solution of the linear complementarity problem of the normal rows: K Δλ − y = w
+// with λ + Δλ ≥ 0, w ≥ 0 and (λ + Δλ)·w = 0 (a row either pushes or is left separating faster
+// than its target). Block principal pivoting (Júdice and Pires): start with every row pushing,
+// solve K_AA Δλ_A = y_A + K_AI λ_I for the pushing rows A (the others drop to λ = 0), then flip
+// every row that breaks its condition and solve again.
+bool solveComplementarity(ContactGroups& g, int n, const double* K, const double* L) {
+    std::copy(g.y.begin(), g.y.begin() + n, g.x.begin());
+    choleskySolve(L, n, g.x.data());
+    std::fill(g.active.begin(), g.active.begin() + n, 1);
+    for (int pivot = 0; pivot < maxPivots; ++pivot) {
+        bool flipped = false;
+        for (int r = 0; r < n; ++r) {
+            if (g.active[r]) {
+                if (g.lambda[r] + g.x[r] < 0.0) g.active[r] = 0, flipped = true;
+                continue;
+            }
+            double w = -g.y[r];
+            for (int s = 0; s < n; ++s) w += K[r * n + s] * g.x[s];
+            if (w < -separationTolerance) g.active[r] = 1, flipped = true;
+        }
+        if (!flipped) return true;
+        int m = 0;
+        for (int r = 0; r < n; ++r) {
+            if (!g.active[r]) continue;
+            g.rhs[m] = g.y[r];
+            int column = 0;
+            for (int s = 0; s < n; ++s) {
+                if (g.active[s])
+                    g.activeK[m * n + column++] = K[r * n + s];
+                else
+                    g.rhs[m] += K[r * n + s] * g.lambda[s];
+            }
+            ++m;
+        }
+        // activeK holds the m x m system at stride n: packed to stride m for the factor.
+        if (m < n)
+            for (int r = 1; r < m; ++r) std::copy_n(&g.activeK[r * n], m, &g.activeK[r * m]);
+        if (!choleskyFactor(g.activeK.data(), m)) return false;
+        choleskySolve(g.activeK.data(), m, g.rhs.data());
+        for (int r = 0, i = 0; r < n; ++r) g.x[r] = g.active[r] ? g.rhs[i++] : -g.lambda[r];
+    }
+    return false;
+}
+
+// One pass of a group's normal rows as one system, the targets from the velocities before any
+// impulse of the pass: v_rel·n → −s/hs for a speculative row (rigid, it may close the gap); with
+// bias, the soft step K Δλ = −massScale·(v + biasRate·C) − impulseScale·K λ; without, v → 0.
+// False, and nothing applied, when its complementarity problem did not settle.
+bool solveGroupNormals(World::Impl& w, ContactGroups& g, int group, const StepContext& ctx, bool useBias) {
+    const int first = g.rowStart[group], n = g.rowStart[group + 1] - first;
+    const double* K = &g.K[g.matrixStart[group]];
+    const double* L = &g.L[g.matrixStart[group]];
+    const Softness& soft = ctx.contactSoftness;  // one softness for all rows: the rest state C = K F / ω²
+    for (int r = 0; r < n; ++r) g.lambda[r] = w.scratch.constraintRows[g.rows[first + r][0]].points[g.rows[first + r][1]].normalImpulse;
+    for (int r = 0; r < n; ++r) {
+        const auto [k, i] = g.rows[first + r];
+        const ContactConstraint& c = w.scratch.constraints[k];
+        const ContactRows<float>& rows = w.scratch.constraintRows[k];
+        const ContactPointRows<float>& cp = rows.points[i];
+        const BodyState &a = w.scratch.states[c.indexA], &b = w.scratch.states[c.indexB];
+        const float s = currentSeparation(rows, cp, a, b);
+        const float vn = dot(relativeVelocity(a, b, cp.anchorA, cp.anchorB), rows.normal);
+        if (s > 0.0f) {
+            g.y[r] = -(vn + s * ctx.invHs);
+        } else if (useBias) {
+            double kLambda = 0.0;  // (K λ)_r, λ from before the pass
+            for (int q = 0; q < n; ++q) kLambda += K[r * n + q] * g.lambda[q];
+            const float push = std::max(soft.biasRate * std::min(s + ctx.pushSlop, 0.0f), -ctx.maxBiasVelocity);
+            g.y[r] = -soft.massScale * (vn + push) - soft.impulseScale * kLambda;
+        } else {
+            g.y[r] = -vn;
+        }
+    }
+    if (!solveComplementarity(g, n, K, L)) return false;
+    for (int r = 0; r < n; ++r) {
+        const auto [k, i] = g.rows[first + r];
+        const ContactConstraint& c = w.scratch.constraints[k];
+        ContactRows<float>& rows = w.scratch.constraintRows[k];
+        ContactPointRows<float>& cp = rows.points[i];
+        const float newImpulse = std::max(cp.normalImpulse + static_cast<float>(g.x[r]), 0.0f);
+        const float impulse = newImpulse - cp.normalImpulse;
+        cp.normalImpulse = newImpulse;
+        recordPush(rows, i, impulse, ctx);
+        applyImpulse(rows, w.scratch.states[c.indexA], w.scratch.states[c.indexB], cp.anchorA, cp.anchorB, impulse * rows.normal);
+    }
+    return true;
+}
+
+}  // namespace
+
+void contactGroupRows(World::Impl& w, const StepContext& ctx, RowPass pass) {
+    ContactGroups& g = w.scratch.contactGroups;
+    if (pass == RowPass::Restitution) {  // the bounce is row by row, as for every constraint
+        const std::vector<SubstepForces>& forces = w.scratch.substepForces;
+        for (int index : g.constraints) {
+            const ContactConstraint& c = w.scratch.constraints[index];
+            restituteContact(w.scratch.constraintRows[index], w.scratch.states[c.indexA], w.scratch.states[c.indexB], substepVelocityChange(forces, c.indexA),
+                             substepVelocityChange(forces, c.indexB), ctx);
+        }
+        return;
+    }
+    for (int group = 0; group + 1 < static_cast<int>(g.start.size()); ++group) {
+        const bool useBias = pass == RowPass::Solve;
+        const bool solved = pass != RowPass::WarmStart && solveGroupNormals(w, g, group, ctx, useBias);
+        for (int s = g.start[group]; s < g.start[group + 1]; ++s) {
+            const ContactConstraint& c = w.scratch.constraints[g.constraints[s]];
+            ContactRows<float>& rows = w.scratch.constraintRows[g.constraints[s]];
+            BodyState &a = w.scratch.states[c.indexA], &b = w.scratch.states[c.indexB];
+            if (pass == RowPass::WarmStart) warmStartContact(rows, a, b);
+            else if (solved && useBias) solveContact<true, false>(rows, a, b, ctx);  // its tangent rows
+            else if (solved) solveContact<false, false>(rows, a, b, ctx);
+            else if (useBias) solveContact<true>(rows, a, b, ctx);
+            else solveContact<false>(rows, a, b, ctx);
+        }
+    }
+}
+
+}  // namespace perpdot

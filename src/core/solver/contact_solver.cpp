@@ -1,0 +1,193 @@
+// Contact constraints of a step, built from the contact cache: masses, softness, anchors, effective
+// masses and the approach speeds restitution reads. Their rows (the substeps' passes and, after them,
+// restitution) are in contact_solver_wide.{hpp,cpp}.
+#include <cstddef>
+#include <cstring>
+
+#include "core/solver/contact_prepare.hpp"
+#include "core/solver/impact_propagation.hpp"
+#include "core/world/world_impl.hpp"
+
+namespace perpdot {
+
+namespace {
+
+// The velocity a body would end the step with if nothing touched it: its state plus the substeps'
+// forces still to come. Restitution reverses the approach speed at the end of the step, forces
+// included: in the discrete fall a ball hits the ground with that speed, and an e = 1 bounce then
+// climbs exactly as many steps as it fell (docs/stress.md). Only v and ω are set.
+BodyState velocityWithoutContact(const World::Impl& w, const StepContext& ctx, int slot) {
+    const BodyState& now = w.scratch.states[slot];
+    const SubstepForces& f = w.scratch.substepForces[slot];
+    BodyState s;
+    s.v = now.v + static_cast<float>(ctx.substeps) * f.dv;
+    s.w = now.w + static_cast<float>(ctx.substeps) * f.dw;
+    s.invMass = now.invMass;
+    return s;
+}
+
+// A contact's two runs of floats the rows take (contactRunFields, pointRunFields): a block reads
+// them four or eight contacts at a time (the point count and the largest push come along unused)
+// and turns them into lanes.
+static_assert(offsetof(Contact, restitution) == offsetof(Contact, friction) + 4 && offsetof(Contact, rollingResistance) == offsetof(Contact, friction) + 8 &&
+                  offsetof(Contact, tangentSpeed) == offsetof(Contact, friction) + 12 && offsetof(Contact, rollingImpulse) == offsetof(Contact, friction) + 16 &&
+                  offsetof(Contact, normal) == offsetof(Contact, friction) + 20 && offsetof(Contact, pointCount) == offsetof(Contact, friction) + 28,
+              "friction, restitution, rolling resistance, tangent speed | rolling impulse, normal, point count");
+static_assert(offsetof(ContactPointState, anchorB) == 8 && offsetof(ContactPointState, separation) == 16 &&
+                  offsetof(ContactPointState, normalImpulse) == 20 && offsetof(ContactPointState, tangentImpulse) == 24,
+              "anchors | separation, normal and tangent impulses, largest push");
+
+// What a contact does not hold as floats in a row: the bodies' 1/I, whether its anchors turn.
+template <std::size_t lanes>
+void gatherOtherFields(const World::Impl& w, const ContactConstraint* const (&constraints)[lanes], const Contact* const (&contacts)[lanes],
+                       int used, float* rows) {
+    using Rows = ContactRows<float>;
+    for (int lane = 0; lane < used; ++lane) {
+        const ContactConstraint& c = *constraints[lane];
+        const RowLane<lanes> at{rows + lane};
+        at.set(offsetof(Rows, invIA), w.scratch.inverseInertias[c.indexA]);
+        at.set(offsetof(Rows, invIB), w.scratch.inverseInertias[c.indexB]);
+        at.set(offsetof(Rows, turnsA), contacts[lane]->turnsA ? 1.0f : 0.0f);
+        at.set(offsetof(Rows, turnsB), contacts[lane]->turnsB ? 1.0f : 0.0f);
+    }
+}
+
+// One constraint's rows from its contact, as deriveContactRows (contact_solver_wide.hpp) takes
+// them: the fields of its two runs of floats where a block's gather puts them (contactRunFields,
+// pointRunFields: the separation in baseSeparation, last step's impulses as they were, zeros for
+// no manifold point), and the others (gatherOtherFields). With deriveContactRows every field is
+// written: a reused slot keeps nothing old.
+void gatherRows(const World::Impl& w, const ContactConstraint& c, ContactRows<float>& out) {
+    using Rows = ContactRows<float>;
+    using PointRows = ContactPointRows<float>;
+    float* rows = floatsOf(out);
+    const Contact& contact = w.contactCache.contacts[c.contact];
+    const auto* bytes = reinterpret_cast<const char*>(&contact);
+    float run[8];
+    std::memcpy(run, bytes + offsetof(Contact, friction), sizeof run);
+    for (std::size_t f = 0; f < 7; ++f) rows[contactRunFields[f] / sizeof(float)] = run[f];
+    for (std::size_t i = 0; i < 2; ++i) {
+        std::memcpy(run, bytes + offsetof(Contact, points) + i * sizeof(ContactPointState), sizeof run);
+        const bool point = static_cast<int>(i) < contact.pointCount;
+        for (std::size_t f = 0; f < 7; ++f) rows[(offsetof(Rows, points) + i * sizeof(PointRows) + pointRunFields[f]) / sizeof(float)] = point ? run[f] : 0.0f;
+    }
+    const ContactConstraint* const constraints[1] = {&c};
+    const Contact* const contacts[1] = {&contact};
+    gatherOtherFields(w, constraints, contacts, 1, rows);
+}
+
+}  // namespace
+
+void prepareContactRows(const World::Impl& w, const StepContext& ctx, const ContactConstraint& c, ContactRows<float>& rows) {
+    gatherRows(w, c, rows);
+    const float present[2] = {c.pointCount > 0 ? 1.0f : 0.0f, c.pointCount > 1 ? 1.0f : 0.0f};
+    deriveContactRows(rows, w.scratch.freeVelocities[c.indexA], w.scratch.freeVelocities[c.indexB], present, ctx);
+}
+
+namespace {
+
+// A block's four lanes from four contacts (an empty lane's: a contact of zeros), given whether
+// each lane's points are manifold points.
+void gatherContactQuad(const Contact* const (&contacts)[4], float* rows, const float (&present)[2][4]) {
+    using Rows = ContactRows<float>;
+    using PointRows = ContactPointRows<float>;
+    using simd::Float4;
+    auto store = [&](std::size_t offset, Float4 value) { value.store(rows + offset / sizeof(float) * 4); };
+    Float4 head[4], tail[4];
+    for (int k = 0; k < 4; ++k) {
+        head[k] = Float4::loadBytes(&contacts[k]->friction);
+        tail[k] = Float4::loadBytes(&contacts[k]->rollingImpulse);
+    }
+    simd::transpose(head);
+    simd::transpose(tail);
+    for (std::size_t f = 0; f < 7; ++f) store(contactRunFields[f], f < 4 ? head[f] : tail[f - 4]);
+    for (std::size_t i = 0; i < 2; ++i) {
+        Float4 anchors[4], values[4];
+        for (int k = 0; k < 4; ++k) {
+            anchors[k] = Float4::loadBytes(&contacts[k]->points[i].anchorA);
+            values[k] = Float4::loadBytes(&contacts[k]->points[i].separation);
+        }
+        simd::transpose(anchors);
+        simd::transpose(values);
+        // No manifold point: zeros, as gatherRows writes them.
+        const auto point = Float4::load(present[i]) > Float4(0.0f);
+        for (std::size_t f = 0; f < 7; ++f)
+            store(offsetof(Rows, points) + i * sizeof(PointRows) + pointRunFields[f], simd::select(point, f < 4 ? anchors[f] : values[f - 4], Float4(0.0f)));
+    }
+}
+
+// The lanes' contacts, or for an empty lane a contact of zeros.
+template <std::size_t lanes>
+void laneContacts(const World::Impl& w, const ContactConstraint* const (&constraints)[lanes], int used, const Contact* (&contacts)[lanes]) {
+    static const Contact none{};
+    for (std::size_t lane = 0; lane < lanes; ++lane)
+        contacts[lane] = static_cast<int>(lane) < used ? &w.contactCache.contacts[constraints[lane]->contact] : &none;
+}
+
+}  // namespace
+
+void gatherContactLanes(const World::Impl& w, const ContactConstraint* const (&constraints)[4], int used, ContactBlock& block,
+                        const float (&present)[2][4]) {
+    const Contact* contacts[4];
+    laneContacts(w, constraints, used, contacts);
+    gatherContactQuad(contacts, block.rowData(), present);
+    gatherOtherFields(w, constraints, contacts, used, block.rowData());
+}
+
+#ifdef PERPDOT_AVX2
+void gatherContactLanes(const World::Impl& w, const ContactConstraint* const (&constraints)[8], int used, ContactBlock8& block,
+                        const float (&present)[2][8]) {
+    const Contact* contacts[8];
+    laneContacts(w, constraints, used, contacts);
+    const float* head[8];
+    const float* points[2][8];
+    for (int lane = 0; lane < 8; ++lane) {
+        head[lane] = &contacts[lane]->friction;
+        for (int i = 0; i < 2; ++i) points[i][lane] = &contacts[lane]->points[i].anchorA.x;
+    }
+    gatherContactRows8(block, head, points, present);
+    gatherOtherFields(w, constraints, contacts, used, block.rowData());
+}
+#endif
+
+// The touching contacts with an awake body, in pool order, selected by the workers: their
+// contacts and bodies' solver slots. Their rows are prepared once their place is known: in a block
+// (prepareContactBlocks), with the overflow or in a contact group.
+void prepareContacts(World::Impl& w, const StepContext& ctx) {
+    StepScratch& s = w.scratch;
+    // A body is awake this step where it has a solver slot (a static one never is).
+    // Contacts are not read: updateContacts left their points and bodies in dense arrays.
+    const std::vector<int>& slotOf = s.bodySlots;
+    const ContactCache& cache = w.contactCache;
+    // Without a branch on whether a contact touches, which pool order mixes: every slot's bodies
+    // are looked up (a free slot's are bodies its last contact had, still in the pool's range).
+    auto constrains = [&](int index) {
+        const auto [bodyA, bodyB] = cache.bodiesOf[index];
+        return cache.touchingPoints[index] * (slotOf[bodyA] | slotOf[bodyB]) != 0;  // points, and a body in the solver
+    };
+    w.workers.parallelSelect(
+        w.contactCache.contacts.capacity(), constrains,
+        [&](int total) {
+            s.constraints.resize(total);
+            s.constraintRows.resize(total);
+            s.constraintSlots.resize(total);
+        },
+        [&](int k, int index) {
+            const auto [bodyA, bodyB] = cache.bodiesOf[index];
+            ContactConstraint& c = s.constraints[k];
+            c.contact = index;
+            c.indexA = slotOf[bodyA];
+            c.indexB = slotOf[bodyB];
+            c.pointCount = cache.touchingPoints[index];
+            s.constraintSlots[k] = {c.indexA, c.indexB};
+        });
+    s.freeVelocities.resize(s.states.size());
+    w.workers.parallelFor(static_cast<int>(s.states.size()), 256, [&](int begin, int end, int) {
+        for (int slot = begin; slot < end; ++slot) s.freeVelocities[slot] = velocityWithoutContact(w, ctx, slot);
+    });
+    propagateImpacts(w, ctx);  // simultaneous impacts, pair by pair, before the substeps
+    findContactGroups(w, ctx);
+    prepareContactBlocks(w, ctx);
+}
+
+}  // namespace perpdot

@@ -1,0 +1,299 @@
+// The contact rows solved four (SSE2) or eight (AVX2, contact_solver_avx2.cpp) at a time.
+// Constraints are graph-coloured (graph_color.hpp) so that the lanes of a block never share a
+// dynamic body; each block gathers its bodies' state into lanes, runs the rows of
+// contact_solver_wide.hpp once for all of them, and scatters the velocities back. Constraints no
+// colour could take (a body touching more than 16 others) are solved one by one with the same rows
+// at F = float, after the blocks.
+#include <algorithm>
+#include <cstddef>
+#include <cstdlib>
+#include <cstring>
+#include <type_traits>
+
+#include "core/solver/contact_prepare.hpp"
+#include "core/world/world_impl.hpp"
+
+namespace perpdot {
+
+using simd::Float4;
+
+bool contactLanes8Available() {
+#ifdef PERPDOT_AVX2
+    return __builtin_cpu_supports("avx2");
+#else
+    return false;
+#endif
+}
+
+// Eight lanes where the CPU has AVX2, unless PERPDOT_CONTACT_LANES=4 asks for four (to compare
+// the two: the results are the same bits).
+int chooseContactLanes() {
+    const char* asked = std::getenv("PERPDOT_CONTACT_LANES");
+    if (asked != nullptr && std::strcmp(asked, "4") == 0) return 4;
+    return contactLanes8Available() ? 8 : 4;
+}
+
+namespace {
+
+// fn(blocks) on the step's contact blocks: of eight lanes (contactLanes = 8) or of four.
+template <class Scratch, class Fn>
+decltype(auto) onContactBlocks(Scratch& s, Fn fn) {
+#ifdef PERPDOT_AVX2
+    if (s.contactLanes == 8) return fn(s.contactBlocks8);
+#endif
+    return fn(s.contactBlocks);
+}
+
+// `rows(blockRows, a, b, slotsA, slotsB, uses)` on the blocks of [begin, end) that `needs` (all by
+// default; the bodies of those ahead asked for, prefetchBodies), or `rows(constraint, a, b, slotA,
+// slotB, RowUses{})` on every overflow constraint when overflow is set.
+template <class Rows, class Needs = bool (*)(const ContactBlock&)>
+void forContacts(World::Impl& w, int begin, int end, bool overflow, Rows rows,
+                 Needs needs = [](const ContactBlock&) { return true; }) {
+    std::vector<BodyState>& states = w.scratch.states;
+    for (int k = begin; k < end; ++k) {
+        ContactBlock& block = w.scratch.contactBlocks[k];
+        if (!needs(block)) continue;
+        if (k + bodiesAhead < end && needs(w.scratch.contactBlocks[k + bodiesAhead]))
+            prefetchBodies(states.data(), w.scratch.contactBlocks[k + bodiesAhead].bodyA, w.scratch.contactBlocks[k + bodiesAhead].bodyB);
+        BodyLanes<Float4> a = gatherBodies(states, block.bodyA);
+        BodyLanes<Float4> b = gatherBodies(states, block.bodyB);
+        rows(block.rows, a, b, block.bodyA, block.bodyB, block.uses);
+        scatterVelocities(states, block.bodyA, a);
+        scatterVelocities(states, block.bodyB, b);
+    }
+    if (!overflow) return;
+    for (int index : w.scratch.overflowConstraints) {
+        const ContactConstraint& c = w.scratch.constraints[index];
+        rows(w.scratch.constraintRows[index], states[c.indexA], states[c.indexB], c.indexA, c.indexB, RowUses{});
+    }
+}
+
+void passContacts(World::Impl& w, const StepContext& ctx, RowPass pass, int begin, int end, bool overflow) {
+    if (pass == RowPass::WarmStart)
+        forContacts(w, begin, end, overflow,
+                    [](auto& c, auto& a, auto& b, const auto&, const auto&, RowUses uses) { warmStartContact(c, a, b, uses); });
+    else if (pass == RowPass::Solve)
+        forContacts(w, begin, end, overflow,
+                    [&](auto& c, auto& a, auto& b, const auto&, const auto&, RowUses uses) { solveContact<true>(c, a, b, ctx, uses); });
+    else if (pass == RowPass::Relax)
+        forContacts(w, begin, end, overflow,
+                    [&](auto& c, auto& a, auto& b, const auto&, const auto&, RowUses uses) { solveContact<false>(c, a, b, ctx, uses); });
+    else
+        forContacts(
+            w, begin, end, overflow,
+            [&](auto& c, auto& a, auto& b, const auto& slotsA, const auto& slotsB, RowUses) {
+                const std::vector<SubstepForces>& forces = w.scratch.substepForces;
+                restituteContact(c, a, b, substepVelocityChange(forces, slotsA), substepVelocityChange(forces, slotsB), ctx);
+            },
+            [](const ContactBlock& block) { return block.uses.elastic; });
+}
+
+}  // namespace
+
+namespace {
+
+// deriveContactRows on a block's lanes: four here, eight in the AVX2 file.
+void deriveBlock(World::Impl& w, const StepContext& ctx, ContactBlock& block, const float (&present)[2][4]) {
+    const BodyLanes<Float4> a = gatherBodies(w.scratch.freeVelocities, block.bodyA);
+    const BodyLanes<Float4> b = gatherBodies(w.scratch.freeVelocities, block.bodyB);
+    const Float4 points[2] = {Float4::load(present[0]), Float4::load(present[1])};
+    deriveContactRows(block.rows, a, b, points, ctx);
+}
+
+#ifdef PERPDOT_AVX2
+void deriveBlock(World::Impl& w, const StepContext& ctx, ContactBlock8& block, const float (&present)[2][8]) {
+    deriveContactRows8(block, w.scratch.freeVelocities.data(), present, ctx);
+}
+#endif
+
+// Blocks of Block::lanes constraints of one colour, in colour order (the last block of a colour
+// may have empty lanes): block b of colour c holds the constraints contactOrder[start[c] + lanes
+// (b − blockStart[c]) ...]. Sized here, laid out by the solver's first stages (layOutBlocks).
+template <class Block>
+void sizeBlocks(StepScratch& s, std::vector<Block>& blocks) {
+    constexpr int overflow = GraphColoring::overflow;
+    constexpr int width = Block::lanes;
+    const ColorStarts& start = s.contactStart;
+    ColorStarts& blockStart = s.contactBlockStart;
+    blockStart[0] = 0;
+    for (int color = 0; color <= overflow; ++color)
+        blockStart[color + 1] = blockStart[color] + (color < overflow ? (start[color + 1] - start[color] + width - 1) / width : 0);
+    blocks.resize(static_cast<size_t>(blockStart[overflow]));  // reused memory: every field is rewritten
+}
+
+// Blocks [begin, end) of colour `color`: the lanes' contact values gathered into them four or eight
+// at a time (gatherContactLanes), then the block's rows derived lanes at once (contact_prepare.hpp).
+template <class Block>
+void layOutBlocks(World::Impl& w, const StepContext& ctx, std::vector<Block>& blocks, int color, int begin, int end) {
+    constexpr int width = Block::lanes;
+    StepScratch& s = w.scratch;
+    const int colorStart = s.contactStart[color], colorEnd = s.contactStart[color + 1];
+    for (int b = begin; b < end; ++b) {
+        Block& block = blocks[s.contactBlockStart[color] + b];
+        const int position = colorStart + width * b;  // of the lanes' constraints in contactOrder
+        const int lanes = std::min(width, colorEnd - position);
+        alignas(32) float present[2][width];  // 1 where a lane's point is a manifold point
+        const ContactConstraint* constraints[width];
+        const int* order = &s.contactOrder[position];
+        // The lanes' contacts lie anywhere in the pool: the next block's (the constraints right
+        // after these in contactOrder) load while this block gathers, and this block's own were
+        // asked for by the block before (the first of a range asks for them here).
+        const int fetchEnd = std::min(position + lanes + width, colorEnd);
+        for (int p = b == begin ? position : position + lanes; p < fetchEnd; ++p)
+            prefetchSolverFields<0>(w.contactCache.contacts[s.constraints[s.contactOrder[p]].contact]);
+        for (int lane = 0; lane < width; ++lane) {
+            const bool used = lane < lanes;
+            const ContactConstraint* c = used ? &s.constraints[order[lane]] : nullptr;
+            block.contact[lane] = used ? c->contact : -1;
+            block.bodyA[lane] = used ? c->indexA : 0;  // an empty lane: the static slot
+            block.bodyB[lane] = used ? c->indexB : 0;
+            for (int i = 0; i < 2; ++i) present[i][lane] = used && i < c->pointCount ? 1.0f : 0.0f;
+            constraints[lane] = c;
+        }
+        gatherContactLanes(w, constraints, lanes, block, present);
+        deriveBlock(w, ctx, block, present);
+        block.uses = rowUses(block.rowData(), width, lanes);
+        // An empty lane: no mass, no impulse, nothing at all.
+        for (int lane = lanes; lane < width; ++lane)
+            for (std::size_t field = 0; field < rowFloats; ++field) block.rowData()[field * width + static_cast<std::size_t>(lane)] = 0.0f;
+    }
+}
+
+}  // namespace
+
+// Colour the constraints in order, in the colouring the joints began (colorJoints: one graph, so
+// a colour's joints and contacts share no moving body either), then size their blocks colour by
+// colour (Box2D v3's solve order: it keeps stacks as stiff as the plain constraint order does),
+// four or eight to a block, laid out by the solver's first stages; overflow last, prepared here
+// into their own rows. The lane width changes no result:
+// a colour's constraints share no moving body. The constraints of contact groups solved directly
+// (contact_groups.hpp) take no colour: their groups prepared them.
+void prepareContactBlocks(World::Impl& w, const StepContext& ctx) {
+    StepScratch& s = w.scratch;
+    constexpr int overflow = GraphColoring::overflow;
+    const int count = static_cast<int>(s.constraints.size());
+    s.contactColors.resize(s.constraints.size());
+    const std::vector<uint8_t>& direct = s.contactGroups.direct;  // solved by their groups instead
+    const int slots = static_cast<int>(s.states.size());
+    for (int index = 0; index < count; ++index) {
+        const auto [slotA, slotB] = s.constraintSlots[index];
+        const int color = direct[index] ? overflow : s.coloring.assign(slotA, slotB);
+        // The overflow's constraints are solved one after another: in constraint order.
+        s.contactColors[index] = color * slotBuckets + (color == overflow ? 0 : slotBucket(slotA, slotB, slots));
+    }
+    const ColorStarts& start = s.contactStart = sortByColor(s.contactColors, s.contactOrder);
+    onContactBlocks(s, [&](auto& blocks) { sizeBlocks(s, blocks); });
+    s.overflowConstraints.clear();
+    for (int position = start[overflow]; position < count; ++position) {
+        const int index = s.contactOrder[position];
+        if (direct[index]) continue;
+        s.overflowConstraints.push_back(index);
+        prepareContactRows(w, ctx, s.constraints[index], s.constraintRows[index]);
+    }
+}
+
+// Where each constraint's rows are: lane slot % lanes of block slot / lanes, or -1 for its own
+// rows. Layout leaves this implicit in the colour order: writing it into the constraints there,
+// scattered, had the workers share the constraints' cache lines.
+void locateContactRows(World::Impl& w) {
+    StepScratch& s = w.scratch;
+    s.contactRowSlot.assign(s.constraints.size(), -1);
+    for (int color = 0; color < GraphColoring::overflow; ++color)
+        for (int p = s.contactStart[color]; p < s.contactStart[color + 1]; ++p)
+            s.contactRowSlot[s.contactOrder[p]] = s.contactBlockStart[color] * s.contactLanes + (p - s.contactStart[color]);
+}
+
+// Field `field` (a float index, pointField) of constraint k's rows, in its lane or its own rows.
+float contactRowField(const World::Impl& w, int k, std::size_t field) {
+    const int slot = w.scratch.contactRowSlot[k];
+    if (slot < 0) return floatsOf(w.scratch.constraintRows[k])[field];
+    return onContactBlocks(w.scratch, [&](const auto& blocks) {
+        constexpr std::size_t lanes = std::remove_cvref_t<decltype(blocks[0])>::lanes;
+        const auto place = static_cast<std::size_t>(slot);
+        return blocks[place / lanes].rowData()[field * lanes + place % lanes];
+    });
+}
+
+void layOutContactBlocks(World::Impl& w, const StepContext& ctx, int color, int begin, int end) {
+    onContactBlocks(w.scratch, [&](auto& blocks) { layOutBlocks(w, ctx, blocks, color, begin, end); });
+}
+
+int contactBlockCount(const World::Impl& w, int color) {
+    return w.scratch.contactBlockStart[color + 1] - w.scratch.contactBlockStart[color];
+}
+
+void contactRows(World::Impl& w, const StepContext& ctx, RowPass pass, int color, int begin, int end) {
+    const int first = w.scratch.contactBlockStart[color];
+#ifdef PERPDOT_AVX2
+    if (w.scratch.contactLanes == 8)
+        return contactRows8(w.scratch.contactBlocks8.data(), first + begin, first + end, w.scratch.states.data(),
+                            w.scratch.substepForces.data(), ctx, pass);
+#endif
+    passContacts(w, ctx, pass, first + begin, first + end, false);
+}
+
+void serialContactRows(World::Impl& w, const StepContext& ctx, RowPass pass) { passContacts(w, ctx, pass, 0, 0, true); }
+
+namespace {
+
+// Where the rolling impulse and point i's largest push are, in floats (as pointField, contact_solver_wide.hpp).
+constexpr std::size_t rollingField = offsetof(ContactRows<float>, rollingImpulse) / sizeof(float);
+constexpr std::size_t maxNormalField(int i) { return offsetof(ContactRows<float>, maxNormalImpulse) / sizeof(float) + static_cast<std::size_t>(i); }
+
+// A block's accumulated impulses straight from its lanes into its contacts.
+template <class Block>
+void storeBlockImpulses(World::Impl& w, const Block& block) {
+    const float* rows = block.rowData();
+    for (int lane = 0; lane < Block::lanes; ++lane) {
+        if (block.contact[lane] < 0) continue;
+        auto field = [&](std::size_t index) { return rows[index * Block::lanes + static_cast<std::size_t>(lane)]; };
+        Contact& contact = w.contactCache.contacts[block.contact[lane]];
+        contact.rollingImpulse = field(rollingField);
+        for (int i = 0; i < contact.pointCount; ++i) {
+            ContactPointState& stored = contact.points[i];
+            stored.normalImpulse = field(pointField(i, offsetof(ContactPointRows<float>, normalImpulse)));
+            stored.tangentImpulse = field(pointField(i, offsetof(ContactPointRows<float>, tangentImpulse)));
+            stored.maxNormalImpulse = field(maxNormalField(i));
+        }
+    }
+}
+
+template <class Block>
+void storeBlocks(World::Impl& w, const std::vector<Block>& blocks, int begin, int end) {
+    for (int k = begin; k < end; ++k) {
+        if (k + 1 < end)  // the next block's contacts load while this one's are written
+            for (int contact : blocks[k + 1].contact)
+                if (contact >= 0) prefetchSolverFields<1>(w.contactCache.contacts[contact]);
+        storeBlockImpulses(w, blocks[k]);
+    }
+}
+
+}  // namespace
+
+// The impulses for the next step's warm start (a contact has one constraint: the workers write
+// apart). A colour's blocks from their lanes, as the solver's last stages (SolverStages) ...
+void storeContactBlocks(World::Impl& w, int color, int begin, int end) {
+    const int first = w.scratch.contactBlockStart[color];
+    onContactBlocks(w.scratch, [&](const auto& blocks) { storeBlocks(w, blocks, first + begin, first + end); });
+}
+
+// ... then those of the overflow constraints and of the contact groups solved directly, from their rows.
+void storeContactImpulses(World::Impl& w) {
+    StepScratch& s = w.scratch;
+    auto storeRows = [&](int index) {
+        const ContactConstraint& c = s.constraints[index];
+        const ContactRows<float>& rows = s.constraintRows[index];
+        Contact& contact = w.contactCache.contacts[c.contact];
+        contact.rollingImpulse = rows.rollingImpulse;
+        for (int i = 0; i < c.pointCount; ++i) {
+            contact.points[i].normalImpulse = rows.points[i].normalImpulse;
+            contact.points[i].tangentImpulse = rows.points[i].tangentImpulse;
+            contact.points[i].maxNormalImpulse = rows.maxNormalImpulse[i];
+        }
+    };
+    for (int index : s.overflowConstraints) storeRows(index);
+    for (int index : s.contactGroups.constraints) storeRows(index);
+}
+
+}  // namespace perpdot

@@ -1,0 +1,368 @@
+// The contact rows, written once over a lane type F: float solves one constraint (the overflow
+// colour, contact_solver.cpp, and the contact groups), simd::Float4 and the AVX2 Float8 solve four
+// or eight constraints of one graph colour at once (contact_solver_wide.cpp). Each row is Hecker's collision impulse
+//   j = -(v_rel·n + bias) / (1/mA + 1/mB + perpDot(rA,n)²/IA + perpDot(rB,n)²/IB)
+// accumulated and clamped (λn ≥ 0, |λt| ≤ μ λn), softened by the substep's Softness.
+//
+// A lane that is not a real manifold point (a one-point manifold's second point, an empty lane of
+// a block) has zero masses and zero impulses: its rows compute like the others and apply zero.
+#pragma once
+
+#include <cstddef>
+#include <type_traits>
+#include <vector>
+
+#include "collide/collision.hpp"
+#include "core/solver/body_lanes.hpp"
+#include "core/solver/row_lanes.hpp"
+
+namespace perpdot {
+
+template <class F>
+struct ContactPointRows {
+    Vec2T<F> anchorA, anchorB;  // fixed for the step: rA, rB
+    F baseSeparation{};         // separation minus (rB - rA)·n, so s = base + (ΔpB + rB' - ΔpA - rA')·n
+    F normalImpulse{}, tangentImpulse{};
+    F normalMass{}, tangentMass{};  // effectiveMass = 1/K of each row; 0 for no manifold point
+};
+
+// The fields every pass reads come first, up to the points; the others only where a lane of the
+// block uses them (RowUses). With the block's solver slots before them (ContactBlock8), a pass over
+// blocks of flat, plain contacts streams 13 of a block's 19 cache lines.
+template <class F>
+struct ContactRows {
+    F invIA{}, invIB{};  // 1/I of the bodies (their 1/m is in their states: BodyLanes::invMass)
+    Vec2T<F> normal;
+    F friction{};
+    ContactPointRows<F> points[2];
+    // 1 where a body's surface is flat: its anchor is a point of the body and turns with it. 0 for a
+    // round surface, whose contact point stays under its centre as it rolls.
+    F turnsA{}, turnsB{};
+    F tangentSpeed{};
+    F rollingResistance{}, rollingMass{}, rollingImpulse{};  // angular row: 1/(1/IA + 1/IB), accumulated λ
+    F restitution{};
+    F maxNormalImpulse[2]{};  // the largest push of each point this step, where recorded (recordPush)
+    F relativeVelocity[2]{};  // v_rel·n at each point before solving, for restitution
+};
+
+// Which of the rows' fields after the points a block's lanes use, found once it is laid out
+// (rowUses), so that its passes leave the lines of the others unread. One constraint's own rows
+// take RowUses{}, all of them: a general path gives a lane that does not use a field the bits the
+// path without it gives.
+struct RowUses {
+    bool roundSurface = true;  // an anchor that does not turn with its body (turnsA or turnsB 0)
+    bool conveyor = true;      // a tangent speed
+    bool rolling = true;       // rolling resistance: the rolling row
+    bool elastic = true;       // restitution: the restitution pass, which reads each point's largest push
+};
+
+// Apply impulse P at the anchors: vA -= P/mA, ωA -= perpDot(rA,P)/IA, and + for B.
+template <class F>
+inline void applyImpulse(const ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, Vec2T<F> rA, Vec2T<F> rB, Vec2T<F> P) {
+    a.v = a.v - a.invMass * P;
+    a.w = a.w - c.invIA * perpDot(rA, P);
+    b.v = b.v + b.invMass * P;
+    b.w = b.w + c.invIB * perpDot(rB, P);
+}
+
+// Rolling impulse λ on ωB − ωA where a lane has rolling resistance: ωA -= λ/IA, ωB += λ/IB.
+template <class F>
+inline void applyRollingImpulse(const ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, F impulse) {
+    const simd::MaskOf<F> rolls = c.rollingResistance > F(0.0f);
+    a.w = simd::select(rolls, a.w - c.invIA * impulse, a.w);
+    b.w = simd::select(rolls, b.w + c.invIB * impulse, b.w);
+}
+
+// v_rel = v_B + ωB perp(rB) − (v_A + ωA perp(rA)).
+template <class F>
+inline Vec2T<F> relativeVelocity(const BodyLanes<F>& a, const BodyLanes<F>& b, Vec2T<F> rA, Vec2T<F> rB) {
+    return pointVelocity(b.v, b.w, rB) - pointVelocity(a.v, a.w, rA);
+}
+
+// Last step's accumulated impulse, the warm start of this step's (0 without warm starting).
+template <class F>
+F warmStartImpulse(const StepContext& ctx, F impulse) {
+    return F(ctx.enableWarmStarting ? 1.0f : 0.0f) * impulse;
+}
+
+// The inverse masses and inertias of a contact's bodies, for one constraint (F = float: RowMasses)
+// or a block's lanes.
+template <class F>
+struct RowMassLanes {
+    F invMassA{}, invIA{}, invMassB{}, invIB{};
+};
+
+// 1 / (1/mA + 1/mB + perpDot(rA,d)²/IA + perpDot(rB,d)²/IB): the effective mass along d, 0 if
+// nothing can move.
+template <class F>
+F effectiveMass(const RowMassLanes<F>& m, Vec2T<F> rA, Vec2T<F> rB, Vec2T<F> d) {
+    const F rnA = perpDot(rA, d), rnB = perpDot(rB, d);
+    const F k = m.invMassA + m.invMassB + m.invIA * rnA * rnA + m.invIB * rnB * rnB;
+    return simd::select(k > F(0.0f), F(1.0f) / k, F(0.0f));
+}
+
+// The rows' fields computed from the others, for one constraint (F = float) or a block's lanes at
+// once, after the contact's values were gathered into them (prepareContactRows, contact_prepare.hpp):
+// each point's separation in baseSeparation and its last accumulated impulses, zeros for no point.
+// a, b: the bodies' velocities without contacts (v, ω); present[i]: 1 where point i is a manifold
+// point, else 0. Warm start, rolling mass, and per point base separation, approach speed and
+// effective masses.
+template <class F>
+void deriveContactRows(ContactRows<F>& c, const BodyLanes<F>& a, const BodyLanes<F>& b, const F (&present)[2], const StepContext& ctx) {
+    using simd::select;
+    if (!ctx.enableWarmStarting) c.rollingImpulse = F(0.0f);
+    c.rollingImpulse = select(c.rollingResistance > F(0.0f), c.rollingImpulse, F(0.0f));  // no rolling row: none ever
+    const F kRolling = c.invIA + c.invIB;
+    c.rollingMass = select(c.rollingResistance > F(0.0f), select(kRolling > F(0.0f), F(1.0f) / kRolling, F(0.0f)), F(0.0f));
+    const Vec2T<F> n = c.normal, t = perp(n);
+    const RowMassLanes<F> m{a.invMass, c.invIA, b.invMass, c.invIB};
+    for (int i = 0; i < 2; ++i) {
+        ContactPointRows<F>& cp = c.points[i];
+        const simd::MaskOf<F> point = present[i] > F(0.0f);
+        const Vec2T<F> rA = cp.anchorA, rB = cp.anchorB;
+        cp.baseSeparation = select(point, cp.baseSeparation - dot(rB - rA, n), F(0.0f));
+        c.relativeVelocity[i] = select(point, dot(relativeVelocity(a, b, rA, rB), n), F(0.0f));
+        cp.normalImpulse = warmStartImpulse(ctx, cp.normalImpulse);
+        cp.tangentImpulse = warmStartImpulse(ctx, cp.tangentImpulse);
+        c.maxNormalImpulse[i] = F(0.0f);
+        cp.normalMass = select(point, effectiveMass<F>(m, rA, rB, n), F(0.0f));
+        cp.tangentMass = select(point, effectiveMass<F>(m, rA, rB, t), F(0.0f));
+    }
+}
+
+// The uses of a block's `used` lanes, from its rows (rowData(), `lanes` wide).
+inline RowUses rowUses(const float* rows, int lanes, int used) {
+    auto any = [&](std::size_t offset, auto test) {
+        const float* field = rows + offset / sizeof(float) * static_cast<std::size_t>(lanes);
+        for (int lane = 0; lane < used; ++lane)
+            if (test(field[lane])) return true;
+        return false;
+    };
+    auto zero = [](float value) { return value == 0.0f; };
+    auto nonzero = [](float value) { return value != 0.0f; };
+    return {.roundSurface = any(offsetof(ContactRows<float>, turnsA), zero) || any(offsetof(ContactRows<float>, turnsB), zero),
+            .conveyor = any(offsetof(ContactRows<float>, tangentSpeed), nonzero),
+            .rolling = any(offsetof(ContactRows<float>, rollingResistance), [](float value) { return value > 0.0f; }),
+            .elastic = any(offsetof(ContactRows<float>, restitution), nonzero)};
+}
+
+// Re-apply last step's accumulated impulses: λn n + λt perp(n) at each point, λr on the angle.
+template <class F>
+void warmStartContact(const ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, RowUses uses = {}) {
+    const Vec2T<F> n = c.normal, t = perp(n);
+    for (const ContactPointRows<F>& cp : c.points)
+        applyImpulse(c, a, b, cp.anchorA, cp.anchorB, cp.normalImpulse * n + cp.tangentImpulse * t);
+    if (uses.rolling) applyRollingImpulse(c, a, b, c.rollingImpulse);
+}
+
+// Anchor r turned with its body by Δq where its surface is flat (turns ≠ 0), else r.
+template <class F>
+Vec2T<F> turnedAnchor(RotT<F> dq, Vec2T<F> r, F turns, bool roundSurface) {
+    const Vec2T<F> turned = rotate(dq, r);
+    if (!roundSurface) return turned;
+    const simd::MaskOf<F> flat = turns != F(0.0f);
+    return {simd::select(flat, turned.x, r.x), simd::select(flat, turned.y, r.y)};
+}
+
+// Current separation of a point without a new narrowphase: s = base + (ΔpB + rB' − ΔpA − rA')·n,
+// with r' the anchor turned with its body where the surface is flat.
+template <class F>
+F currentSeparation(const ContactRows<F>& c, const ContactPointRows<F>& cp, const BodyLanes<F>& a, const BodyLanes<F>& b,
+                    RowUses uses = {}) {
+    const Vec2T<F> turnedA = turnedAnchor(a.dq, cp.anchorA, c.turnsA, uses.roundSurface);
+    const Vec2T<F> turnedB = turnedAnchor(b.dq, cp.anchorB, c.turnsB, uses.roundSurface);
+    return cp.baseSeparation + dot(b.dp - a.dp + turnedB - turnedA, c.normal);
+}
+
+// Point i's largest push this step, λn,max, recorded where it is read: every lane when some shape
+// reports hits (StepContext::hitEvents), else the elastic lanes (restituteContact); the others keep 0.
+template <class F>
+void recordPush(ContactRows<F>& c, int i, F impulse, const StepContext& ctx) {
+    const F larger = simd::max(c.maxNormalImpulse[i], impulse);
+    c.maxNormalImpulse[i] = ctx.hitEvents ? larger : simd::select(c.restitution != F(0.0f), larger, c.maxNormalImpulse[i]);
+}
+
+// One pass over a constraint's rows: non-penetration (λn ≥ 0) unless `normalRows` is false (a
+// contact group solved them, contact_groups.hpp), then Coulomb friction along t = perp(n),
+// |λt| ≤ μ λn, then rolling resistance, |λr| ≤ rollingResistance·Σλn. useBias: the solve pass
+// (soft push-out), else the relax pass; template arguments, so that each pass compiles to its own
+// loop with only the values it uses.
+template <bool useBias, bool normalRows = true, class F>
+void solveContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, const StepContext& ctx, RowUses uses = {}) {
+    using simd::max;
+    using simd::select;
+    const Vec2T<F> n = c.normal;
+    // The rows' Softness (softness.hpp): stiffer against a body that cannot move, the static one.
+    // Chosen here from the masses rather than kept in the rows: three fields less to stream through
+    // every pass.
+    [[maybe_unused]] SoftnessT<F> soft;
+    if constexpr (useBias && normalRows) {
+        auto pick = [&](float contactValue, float staticValue) {
+            return select(a.invMass != F(0.0f), select(b.invMass != F(0.0f), F(contactValue), F(staticValue)), F(staticValue));
+        };
+        soft = {pick(ctx.contactSoftness.biasRate, ctx.staticSoftness.biasRate),
+                pick(ctx.contactSoftness.massScale, ctx.staticSoftness.massScale),
+                pick(ctx.contactSoftness.impulseScale, ctx.staticSoftness.impulseScale)};
+    }
+    F totalNormalImpulse = 0.0f;
+    for (int i = 0; i < 2; ++i) {
+        ContactPointRows<F>& cp = c.points[i];
+        if constexpr (normalRows) {
+            const Vec2T<F> rA = cp.anchorA, rB = cp.anchorB;
+            const F s = currentSeparation(c, cp, a, b, uses);
+            // Speculative (s > 0): bias = s/hs, a rigid row that may close the gap this substep, no more.
+            const simd::MaskOf<F> speculative = s > F(0.0f);
+            F bias = select(speculative, s * F(ctx.invHs), F(0.0f));
+            F massScale = 1.0f, impulseScale = 0.0f;
+            if constexpr (useBias) {
+                // Soft push-out of the overlap, at most maxBiasVelocity.
+                const F push = max(soft.biasRate * simd::min(s + F(ctx.pushSlop), F(0.0f)), F(-ctx.maxBiasVelocity));
+                bias = select(speculative, bias, push);
+                massScale = select(speculative, massScale, soft.massScale);
+                impulseScale = select(speculative, impulseScale, soft.impulseScale);
+            }
+            const F vn = dot(relativeVelocity(a, b, rA, rB), n);
+            F impulse = -cp.normalMass * massScale * (vn + bias) - impulseScale * cp.normalImpulse;
+            const F newImpulse = max(cp.normalImpulse + impulse, F(0.0f));
+            impulse = newImpulse - cp.normalImpulse;
+            cp.normalImpulse = newImpulse;
+            if (ctx.hitEvents || uses.elastic) recordPush(c, i, impulse, ctx);
+            totalNormalImpulse += newImpulse;
+            applyImpulse(c, a, b, rA, rB, impulse * n);
+        } else {
+            totalNormalImpulse += cp.normalImpulse;
+        }
+    }
+
+    // A conveyor's surfaces move clockwise around their shapes, which is −tangentSpeed along
+    // perp(n): the friction row drives v_rel·t to it.
+    const Vec2T<F> t = perp(n);
+    for (ContactPointRows<F>& cp : c.points) {
+        const Vec2T<F> rA = cp.anchorA, rB = cp.anchorB;
+        F vt = dot(relativeVelocity(a, b, rA, rB), t);
+        if (uses.conveyor) vt = select(c.tangentSpeed != F(0.0f), vt + c.tangentSpeed, vt);
+        const F maxFriction = c.friction * cp.normalImpulse;
+        const F newImpulse = simd::clamp(cp.tangentImpulse - cp.tangentMass * vt, -maxFriction, maxFriction);
+        const F impulse = newImpulse - cp.tangentImpulse;
+        cp.tangentImpulse = newImpulse;
+        applyImpulse(c, a, b, rA, rB, impulse * t);
+    }
+    if (!uses.rolling) return;
+    const F maxLambda = c.rollingResistance * totalNormalImpulse;
+    const F lambda = c.rollingImpulse;
+    c.rollingImpulse = simd::clamp(lambda - c.rollingMass * (b.w - a.w), -maxLambda, maxLambda);
+    applyRollingImpulse(c, a, b, c.rollingImpulse - lambda);
+}
+
+// The rebound speed of an approach at speed V: Hecker's e V, corrected so that the climb it starts
+// reaches e² of the height the fall took in the discrete integrator. Under a steady deceleration a
+// along n (gravity: a = g), a symplectic-Euler climb from speed v rises v²/2a − h v/2 and the fall
+// that ended at V took V²/2a − h V/2; equal to e² times: v = (a h + √(a²h² + 4e²(V² − a h V)))/2,
+// which is V for e = 1 (docs/stress.md). Without such a deceleration (a h ≥ V or a ≤ 0): e V.
+template <class F>
+F reboundSpeed(F e, F V, F a, float h) {
+    using simd::select;
+    const F ah = a * F(h);
+    const F climb = F(0.5f) * (ah + simd::sqrt(ah * ah + F(4.0f) * e * e * (V * V - ah * V)));
+    return select(ah > F(0.0f), select(V > ah, climb, e * V), e * V);
+}
+
+// Hecker's bounce, once per step after the substeps: λn += -(v_rel·n − rebound) / K, λn ≥ 0, at
+// each point whose approach (v_rel·n before solving) was faster than the restitution threshold and
+// that pushed this step (λn,max > 0), for constraints with restitution; the other lanes apply
+// nothing. dvA, dvB: each body's velocity change per substep from its forces, whose pull along n
+// is the deceleration of the rebound.
+template <class F>
+void restituteContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, Vec2T<F> dvA, Vec2T<F> dvB, const StepContext& ctx) {
+    using simd::max;
+    using simd::select;
+    const simd::MaskOf<F> elastic = c.restitution != F(0.0f);
+    const F deceleration = F(-static_cast<float>(ctx.substeps)) * dot(dvB - dvA, c.normal) * F(ctx.invH);
+    for (int i = 0; i < 2; ++i) {
+        ContactPointRows<F>& cp = c.points[i];
+        const simd::MaskOf<F> slow = c.relativeVelocity[i] > F(-ctx.restitutionThreshold);
+        const simd::MaskOf<F> pushed = c.maxNormalImpulse[i] != F(0.0f);
+        const auto ifBouncing = [&](F value, F otherwise) {
+            return select(slow, otherwise, select(pushed, select(elastic, value, otherwise), otherwise));
+        };
+        const Vec2T<F> rA = cp.anchorA, rB = cp.anchorB;
+        const F vn = dot(relativeVelocity(a, b, rA, rB), c.normal);
+        const F rebound = reboundSpeed(c.restitution, -c.relativeVelocity[i], deceleration, ctx.h);
+        const F newImpulse = max(cp.normalImpulse + -cp.normalMass * (vn - rebound), F(0.0f));
+        const F impulse = ifBouncing(newImpulse - cp.normalImpulse, F(0.0f));
+        cp.normalImpulse = ifBouncing(newImpulse, cp.normalImpulse);
+        c.maxNormalImpulse[i] = ifBouncing(max(c.maxNormalImpulse[i], impulse), c.maxNormalImpulse[i]);
+        applyImpulse(c, a, b, rA, rB, impulse * c.normal);
+    }
+}
+
+// ContactRows<float> is nothing but floats, and ContactRows<F> of an N-lane F is the same fields as
+// N floats each, in the same order: field i of lane l is float i·N + l of the rows (row_lanes.hpp).
+constexpr std::size_t rowFloats = rowFloatsOf<ContactRows>();
+
+// Where a point's field of ContactRows<float> is, in floats (memberOffset: its offsetof in
+// ContactPointRows<float>): in a block of N lanes, lane l of it is float (that index)·N + l.
+constexpr std::size_t pointField(int point, std::size_t memberOffset) {
+    return (offsetof(ContactRows<float>, points) + static_cast<std::size_t>(point) * sizeof(ContactPointRows<float>) + memberOffset) /
+           sizeof(float);
+}
+
+// Where a block's gather (gatherContactLanes, contact_prepare.hpp) puts the runs of floats it
+// reads from each contact, field by field (an offset in ContactRows<float>): the seven of the run
+// from its friction (friction, restitution, rolling resistance, tangent speed, rolling impulse,
+// normal), and the seven of the run from a point's anchor A (anchors A and B, separation, normal
+// and tangent impulses), zero where the point is not a manifold point.
+inline constexpr std::size_t contactRunFields[7] = {
+    offsetof(ContactRows<float>, friction),      offsetof(ContactRows<float>, restitution),    offsetof(ContactRows<float>, rollingResistance),
+    offsetof(ContactRows<float>, tangentSpeed),  offsetof(ContactRows<float>, rollingImpulse), offsetof(ContactRows<float>, normal),
+    offsetof(ContactRows<float>, normal) + sizeof(float)};
+inline constexpr std::size_t pointRunFields[7] = {
+    offsetof(ContactPointRows<float>, anchorA),        offsetof(ContactPointRows<float>, anchorA) + sizeof(float),
+    offsetof(ContactPointRows<float>, anchorB),        offsetof(ContactPointRows<float>, anchorB) + sizeof(float),
+    offsetof(ContactPointRows<float>, baseSeparation), offsetof(ContactPointRows<float>, normalImpulse),
+    offsetof(ContactPointRows<float>, tangentImpulse)};
+
+// Four constraints of one graph colour (no two share a dynamic body) as the lanes of one row set.
+struct ContactBlock {
+    static constexpr int lanes = 4;
+    ContactRows<simd::Float4> rows;
+    int contact[4] = {-1, -1, -1, -1};     // index in World::Impl::contacts; -1: an empty lane
+    int bodyA[4] = {}, bodyB[4] = {};      // solver slots; an empty lane uses the static slot 0
+    RowUses uses;                          // of its lanes (rowUses): the fields after the points they read
+    const float* rowData() const { return floatsOf(rows); }
+    float* rowData() { return floatsOf(rows); }
+};
+
+// Eight constraints of one colour, for CPUs with AVX2 (contact_solver_avx2.cpp): the rows are
+// ContactRows<Float8>, kept as floats here because only that file may name AVX2 types.
+struct alignas(64) ContactBlock8 {
+    static constexpr int lanes = 8;
+    int bodyA[8] = {}, bodyB[8] = {};
+    RowUses uses;
+    alignas(32) float rows[rowFloats * 8];
+    int contact[8] = {-1, -1, -1, -1, -1, -1, -1, -1};  // read by layout and store only
+    const float* rowData() const { return rows; }
+    float* rowData() { return rows; }
+};
+// What a pass over blocks of flat, plain contacts reads: whole cache lines, 13 of them.
+static_assert(offsetof(ContactBlock8, rows) + offsetof(ContactRows<float>, turnsA) * 8 == 13 * 64);
+
+// The lane width of a new world's contact blocks: 8 where contactLanes8Available() (this build
+// has the AVX2 rows and the CPU runs AVX2), else 4; the environment's PERPDOT_CONTACT_LANES=4 picks 4.
+bool contactLanes8Available();
+int chooseContactLanes();
+
+// The eight-lane rows (src/core/solver/avx2/contact_solver_avx2.cpp, built where PERPDOT_AVX2 is defined):
+// contactRows8 is one pass over blocks [begin, end), as contactRows is over four-lane blocks;
+// deriveContactRows8 is deriveContactRows on a block's lanes, its bodies' velocities without contacts
+// in freeVelocities (by solver slot); gatherContactRows8 writes a block's contact values, each
+// lane's from two runs of eight floats of its contact: `head` (friction, restitution, rolling
+// resistance, tangent speed, rolling impulse, normal, and the point count, unused) and `points[i]`
+// (anchor A, anchor B, separation, normal and tangent impulses, and the largest push, unused), the
+// point's fields zero where present[i] is 0 (contact_solver.cpp lays a contact out so).
+void deriveContactRows8(ContactBlock8& block, const BodyState* freeVelocities, const float (&present)[2][8], const StepContext& ctx);
+void gatherContactRows8(ContactBlock8& block, const float* const (&head)[8], const float* const (&points)[2][8], const float (&present)[2][8]);
+void contactRows8(ContactBlock8* blocks, int begin, int end, BodyState* states, const SubstepForces* forces, const StepContext& ctx,
+                  RowPass pass);
+
+}  // namespace perpdot

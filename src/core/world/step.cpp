@@ -1,0 +1,83 @@
+// World::step, stage by stage (stages.hpp). The soft step of Box2D v3: the rows run `substeps`
+// times per step — forces, warm start, solve with soft bias, x += hs v, relax without bias — then
+// one restitution pass, and the impulses are kept for the next step's warm start.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/world/stages.hpp"
+
+namespace perpdot {
+
+StepContext makeStepContext(const World::Impl& w, float h) {
+    const WorldDef& def = w.def;
+    StepContext ctx;
+    ctx.h = h;
+    ctx.invH = 1.0f / h;
+    ctx.substeps = def.substeps;
+    ctx.hs = h / static_cast<float>(def.substeps);
+    ctx.invHs = 1.0f / ctx.hs;
+    // Contact stiffness is capped at a quarter of the substep rate; static contacts are twice as stiff.
+    const float contactHertz = std::min(def.contactHertz, 0.25f * ctx.invHs);
+    ctx.contactSoftness = makeSoftness(contactHertz, def.contactDampingRatio, ctx.hs);
+    ctx.staticSoftness = makeSoftness(2.0f * contactHertz, def.contactDampingRatio, ctx.hs);
+    ctx.jointSoftness = makeSoftness(std::min(def.jointHertz, 0.25f * ctx.invHs), def.jointDampingRatio, ctx.hs);
+    ctx.restitutionThreshold = def.restitutionThreshold;
+    ctx.hitEvents = w.shapes.anyHitEvents;
+    ctx.maxBiasVelocity = def.contactPushMaxVelocity;
+    ctx.pushSlop = def.box2dSkin ? collide::linearSlop : 0.0f;
+    ctx.enableWarmStarting = def.enableWarmStarting;
+    return ctx;
+}
+
+void World::step(float timeStep) {
+    Impl& w = *impl_;
+    if (w.locked) throw Error("World::step: called during step() (from a callback); step after it returns");
+    if (!(timeStep >= 0.0f) || !std::isfinite(timeStep))
+        throw Error("World::step: the time step must be finite and >= 0, not " + std::to_string(timeStep));
+    // Unlocks however step() ends: an exception thrown by the user's pre-solve callback leaves
+    // the step unfinished but the world usable.
+    struct Lock {
+        bool& locked;
+        explicit Lock(bool& l) : locked(l) { locked = true; }
+        ~Lock() { locked = false; }
+    } lock(w.locked);
+    // Waits for the tree's re-fits however step() ends (finishTreeRefit is the usual wait).
+    struct RefitWait {
+        World::Impl& w;
+        ~RefitWait() { finishTreeRefit(w); }
+    } refitWait{w};
+    w.events.beginStep();
+
+    updatePairs(w);     // pairs: proxies that left their fat AABB meet new partners
+    updateContacts(w);  // narrowphase: each contact keeps its manifold or takes a new one
+    if (timeStep == 0.0f) {  // Box2D 2.4's Step(0): the contacts and their events, no motion
+        releaseApartContacts(w);
+        w.events.endStep();
+        return;
+    }
+
+    StepContext ctx = makeStepContext(w, timeStep);
+    integrateVelocities(w, ctx);
+    prepareJoints(w, ctx);   // prepare: effective masses, anchors, warm-start impulses
+    startTreeRefit(w, ctx);  // the broadphase follows the predicted poses on a worker of its own,
+    colorJoints(w);          // beside the joints' serial colouring
+    prepareContacts(w, ctx);
+    // Per substep: its forces, warm start, solve with soft bias, x += hs v, relax without bias;
+    // then restitution, Hecker's bounce, once (solver_stages.hpp: the rows colour by colour, on
+    // the workers).
+    w.scratch.solverStages.build(w);
+    w.scratch.solverStages.run(w, ctx);
+    projectJoints(w);         // project: the anchors of revolute trees meet again
+    storeContactImpulses(w);  // store: impulses for the next step's warm start (the lanes' stored by the solver)
+    storeJointImpulses(w, ctx);
+    reportHitEvents(w);
+    finishTreeRefit(w);
+    finalizeBodies(w, ctx);  // positions back into the bodies; continuous collision
+    breakJoints(w, ctx);     // joints whose reaction over the step passed their break limits
+
+    updateSleep(w, timeStep);  // sleep: islands at rest
+    w.events.endStep();
+}
+
+}  // namespace perpdot
