@@ -5,6 +5,8 @@
 // sequence of two-body impacts does; the substeps then find those contacts parting.
 #pragma once
 
+#include <vector>
+
 #include "collide/collision.hpp"
 #include "perpdot/world.hpp"
 
@@ -20,10 +22,13 @@ struct ImpactPoint {
     Vec2 rA, rB, normal;  // anchors from the centres of mass, normal from A to B
     float separation = 0;
     float restitution = 0, friction = 0;
-    float invIA = 0, invIB = 0;
-    float normalMass = 0;   // 1 / (1/mA + 1/mB + perpDot(rA,n)²/IA + perpDot(rB,n)²/IB)
-    float tangentMass = 0;  // the same along t = perp(n)
     float impactSpeed = 0;  // the fastest approach an impact here took this step (hit events); 0: none
+};
+
+// What propagateImpacts keeps between its sweeps (and reportHitEvents reads after the step).
+struct Impacts {
+    std::vector<ImpactPoint> points;  // in constraint order
+    std::vector<int> lastKick;        // by solver slot: the last sweep that changed its velocity
 };
 
 // The impacts of this step (after the contact constraints are selected and their bodies' free

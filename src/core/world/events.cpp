@@ -40,7 +40,7 @@ void World::Impl::reportTouch(const Contact& c, bool begin) {
 void reportHitEvents(World::Impl& w) {
     if (!w.shapes.anyHitEvents) return;
     locateContactRows(w);
-    const std::vector<ImpactPoint>& impacts = w.scratch.impactPoints;  // in constraint order
+    const std::vector<ImpactPoint>& impacts = w.scratch.impacts.points;  // in constraint order
     size_t impact = 0;
     for (int k = 0; k < static_cast<int>(w.scratch.constraints.size()); ++k) {
         while (impact < impacts.size() && impacts[impact].constraint < k) ++impact;

@@ -92,7 +92,7 @@ struct StepScratch {
     std::vector<float> inverseInertias;        // 1/I of states[i] (slot 0: 0), dense for gathering rows (1/m is in the states)
     std::vector<BodyState> freeVelocities;     // of states[i]: v and ω at the step's end without contacts (contact_solver.cpp)
     std::vector<ContactConstraint> constraints;
-    std::vector<ImpactPoint> impactPoints;     // propagateImpacts scratch: the elastic points between moving bodies
+    Impacts impacts;                           // propagateImpacts scratch: the elastic points between moving bodies
     std::vector<ContactRows<float>> constraintRows;  // by constraint: the rows of those outside the blocks
     std::vector<std::array<int, 2>> constraintSlots;  // by constraint: its bodies' solver slots, for colouring
     GraphColoring coloring;  // one constraint graph: the colours of joints, then of `constraints` (graph_color.hpp)
