@@ -28,6 +28,7 @@ struct RevoluteTrees {
     std::vector<int> root, jointCount, fixedAnchors, treeOf;
     std::vector<uint8_t> cyclic;
     std::vector<double> K, x;
+    std::vector<float> stiffness;  // by solver slot: Σ|r·λ| (joint_tree_stiffness.hpp)
     std::vector<Vec2> rA, rB;
 };
 
