@@ -1,6 +1,7 @@
 // Geometric stiffness of revolute trees (src/core/joints/joint_tree_stiffness.hpp): chains and
 // trees whose ends outweigh a link 1000 and 10,000 times keep their hinges closed through the
-// motion, and the added inertia takes energy out, never in.
+// motion, and the added inertia takes energy out, never in; so do closed loops of hinges carrying
+// 1000 times a link's mass, solved directly since K's diagonal is raised (joint_tree.hpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -82,6 +83,49 @@ TEST(RevoluteTree, BranchedTreeWithHeavyHandsKeepsItsHingesClosed) {
     for (BodyId b : bodies)
         for (ShapeId s : world.shapes(b)) world.setFilter(s, Filter{.group = -1});
     const Motion m = run(world, bodies, joints, 180);
+    EXPECT_LT(m.worstGap, 0.01f * 0.5f);
+    EXPECT_LT(m.energyRise, 1e-3f * m.energyScale);
+}
+
+// Closed loops, solved directly like trees. A swing: a 5 m deck 1000 times a rope link's mass
+// hangs from two posts by two ropes of 10 links, and is pushed sideways at 3 m/s.
+TEST(RevoluteLoop, HeavySwingKeepsItsHingesClosed) {
+    World world(WorldDef{.gravity = {0.0f, -g}});
+    const BodyId deck = box(world, {0.0f, 5.0f}, 2.5f, 0.05f, 100.0f);  // 10 links' area, 100 times the density
+    std::vector<BodyId> bodies{deck};
+    std::vector<JointId> joints;
+    for (const float x : {-2.5f, 2.5f}) {
+        BodyId previous = staticBody(world, {x, 10.0f});
+        for (int i = 0; i < 10; ++i) {
+            bodies.push_back(box(world, {x, 10.0f - 0.5f * static_cast<float>(i) - 0.25f}, 0.05f, 0.25f));
+            joints.push_back(world.createJoint(hinge(world, previous, bodies.back(), {x, 10.0f - 0.5f * static_cast<float>(i)})));
+            previous = bodies.back();
+        }
+        joints.push_back(world.createJoint(hinge(world, previous, deck, {x, 5.0f})));
+    }
+    for (BodyId b : bodies)
+        for (ShapeId s : world.shapes(b)) world.setFilter(s, Filter{.group = -1});
+    world.setLinearVelocity(deck, {3.0f, 0.0f});
+    const Motion m = run(world, bodies, joints, 180);
+    EXPECT_LT(m.worstGap, 0.01f * 0.5f);
+    EXPECT_LT(m.energyRise, 1e-3f * m.energyScale);
+}
+
+// A bridge of 20 planks pulled straight between two posts, its middle plank 1000 times the
+// others' mass: a closed loop whose K is singular (a tension along it moves nothing).
+TEST(RevoluteLoop, StraightBridgeCarriesAHeavyPlank) {
+    World world(WorldDef{.gravity = {0.0f, -g}});
+    BodyId previous = staticBody(world, {-5.0f, 10.0f});
+    std::vector<BodyId> planks;
+    std::vector<JointId> joints;
+    for (int i = 0; i < 20; ++i) {
+        const float x = -5.0f + 0.5f * static_cast<float>(i);
+        planks.push_back(box(world, {x + 0.25f, 10.0f}, 0.25f, 0.05f, i == 10 ? 1000.0f : 1.0f));
+        joints.push_back(world.createJoint(hinge(world, previous, planks.back(), {x, 10.0f})));
+        previous = planks.back();
+    }
+    joints.push_back(world.createJoint(hinge(world, previous, staticBody(world, {5.0f, 10.0f}), {5.0f, 10.0f})));
+    const Motion m = run(world, planks, joints, 180);
     EXPECT_LT(m.worstGap, 0.01f * 0.5f);
     EXPECT_LT(m.energyRise, 1e-3f * m.energyScale);
 }
