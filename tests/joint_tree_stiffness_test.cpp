@@ -60,6 +60,28 @@ TEST_P(HeavyEndedChain, KeepsEveryHingeWithinOnePercentOfALinkForThreeSeconds) {
 
 INSTANTIATE_TEST_SUITE_P(RevoluteTree, HeavyEndedChain, ::testing::Values(1000.0f, 10000.0f));
 
+// The same chains with a motor at every hinge (1 N·m toward 0.5 rad/s): a tree solves each motor
+// row one by one, then the point rows as one system. Solved row by row, such chains (0.01 and
+// 100 N·m) opened 2.6 and 2.7 m at 1000 : 1, 34 and 32 m at 10,000 : 1.
+TEST_P(HeavyEndedChain, WithMotorsKeepsEveryHingeWithinOnePercentOfALink) {
+    World world(WorldDef{.gravity = {0.0f, -g}});
+    const Vec2 pin{0.0f, 20.0f};
+    BodyId previous = staticBody(world, pin);
+    std::vector<BodyId> links;
+    std::vector<JointId> joints;
+    for (int i = 0; i < 20; ++i) {
+        links.push_back(box(world, pin + Vec2{(static_cast<float>(i) + 0.5f) * 0.5f, 0.0f}, 0.25f, 0.05f, i == 19 ? GetParam() : 1.0f));
+        RevoluteJointDef def = hinge(world, previous, links.back(), pin + Vec2{static_cast<float>(i) * 0.5f, 0.0f});
+        def.enableMotor = true;
+        def.motorSpeed = 0.5f;
+        def.maxMotorTorque = 1.0f;
+        joints.push_back(world.createJoint(def));
+        previous = links.back();
+    }
+    const Motion m = run(world, links, joints, 180);
+    EXPECT_LT(m.worstGap, 0.01f * 0.5f);
+}
+
 // A pinned hub with two 5-link arms, each ending in a hand 10,000 times a link's mass, released
 // from the horizontal: a branched tree whose hands swing and pull its arms taut. Its bodies share
 // a collision group, as a ragdoll's do: the hands meeting under the hub would be contacts, which

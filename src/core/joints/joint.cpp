@@ -131,7 +131,7 @@ JointKey keyOf(const PreparedJoint& j) {
             j.type,
             j.mass.mA != 0.0f || j.mass.iA != 0.0f,
             j.mass.mB != 0.0f || j.mass.iB != 0.0f,
-            pointRowsOnly(j) && !j.breakable,
+            j.type == JointType::Revolute && !j.data.as<RevoluteJoint>().enableLimit && !j.breakable,
             lanes != nullptr && lanes->optionalRows(j)};
 }
 

@@ -52,7 +52,7 @@ void findRevoluteTrees(RevoluteTrees& t, const std::vector<JointKey>& keys, int 
     t.jointCount.assign(slots, 0);
     // A side that cannot move (static, asleep, kinematic) couples nothing: it anchors the tree.
     for (const JointKey& j : keys) {
-        if (!j.pointRowsOnly) continue;
+        if (!j.hinge) continue;
         const bool a = j.movesA, b = j.movesB;
         if (a && b) {
             int ra = findRoot(t.root, j.indexA), rb = findRoot(t.root, j.indexB);
@@ -75,7 +75,7 @@ void findRevoluteTrees(RevoluteTrees& t, const std::vector<JointKey>& keys, int 
     int inTrees = 0;
     for (int k = 0; k < count; ++k) {
         const JointKey& j = keys[k];
-        if (!j.pointRowsOnly || (!j.movesA && !j.movesB)) continue;
+        if (!j.hinge || (!j.movesA && !j.movesB)) continue;
         const int r = findRoot(t.root, j.movesA ? j.indexA : j.indexB);
         if (!isTree(r)) continue;
         t.treeOf[k] = r;
@@ -169,14 +169,23 @@ void solveRevoluteTrees(World::Impl& w, RevoluteTrees& t, std::vector<PreparedJo
     const Softness soft = rigidSoftness(ctx, useBias);
     for (size_t tree = 0; tree + 1 < t.start.size(); ++tree) {
         const int first = t.start[tree], joints = t.start[tree + 1] - first;
+        // A joint's motor and limits first, one by one, as its own solve orders them (joint_revolute.cpp):
+        // the point rows, solved last, win.
+        for (int i = 0; i < joints; ++i) {
+            PreparedJoint& j = prepared[t.joints[first + i]];
+            if (pointRowsOnly(j)) continue;
+            JointPair p = pairOf(w.scratch.states, w.scratch.stepRotation, j);
+            solveRevoluteAngleRows(j, p, ctx, useBias);
+        }
         const int n = assemble(w, t, prepared, tree, [&](const JointPair& p, const JointFrame& f) {
             return relativeVelocity(p, f.rA, f.rB) + soft.biasRate * f.d;  // v_rel + biasRate·C
         });
-        if (!choleskyFactor(t.K.data(), n)) {
+        if (!choleskyFactor(t.K.data(), n)) {  // the point rows joint by joint
             for (int i = 0; i < joints; ++i) {
                 PreparedJoint& j = prepared[t.joints[first + i]];
                 JointPair p = pairOf(w.scratch.states, w.scratch.stepRotation, j);
-                solveRevolute(j, p, ctx, useBias);
+                const JointFrame f = currentFrame(j, p);
+                solvePointRows(p, f.rA, f.rB, f.d, soft, j.data.as<RevoluteJoint>().linearImpulse);
             }
             continue;
         }

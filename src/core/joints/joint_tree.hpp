@@ -1,8 +1,9 @@
 // Revolute trees, solved directly. Sequential passes converge slowly along a chain whose masses
 // differ: 20 links ending in a body of 100 times a link's mass opened 12 % of a link at their
 // hinges at 4 substeps (`perpdot stress stress_chain`). A group of 2 to 32 revolute joints without
-// motor or limit, linked through moving bodies — a tree, or a closed loop such as a bridge between
-// two posts (the name stays "tree") — is solved instead as one linear system per pass — the block form of the point rows' soft step (joint_rows.hpp):
+// limit, linked through moving bodies — a tree, or a closed loop such as a bridge between two posts
+// (the name stays "tree") — has its point rows solved instead as one linear system per pass (a
+// joint's motor row first, one by one) — the block form of the point rows' soft step (joint_rows.hpp):
 //   λ ← λ − massScale·K⁻¹(v_rel + biasRate·C) − impulseScale·λ,   K = J M⁻¹ Jᵀ,
 // where K's 2x2 diagonal blocks are each joint's Hecker denominator and an off-diagonal block
 // couples two joints through the body they share. K is factored by Cholesky, in double precision.
@@ -42,7 +43,7 @@ struct RevoluteTrees {
 void findRevoluteTrees(RevoluteTrees& trees, const std::vector<JointKey>& keys, int slots);
 
 // Warm start (each joint's accumulated impulse) and one pass (with soft bias, or the relax pass
-// without) of every tree. A tree whose K does not factor is solved joint by joint instead.
+// without) of every tree. A tree whose K does not factor has its point rows solved joint by joint.
 void warmStartRevoluteTrees(World::Impl& world, RevoluteTrees& trees, std::vector<PreparedJoint>& prepared);
 void solveRevoluteTrees(World::Impl& world, RevoluteTrees& trees, std::vector<PreparedJoint>& prepared,
                         const StepContext& ctx, bool useBias);

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/joints/joint_revolute.hpp"
+#include "core/joints/joint_rows.hpp"
 #include "core/joints/joint_store.hpp"
 
 namespace perpdot {
@@ -22,6 +23,9 @@ void stiffenRevoluteTrees(RevoluteTrees& t, std::vector<PreparedJoint>& prepared
         PreparedJoint& j = prepared[k];
         j.mass.iA /= 1.0f + j.mass.iA * hs * t.stiffness[j.indexA];
         j.mass.iB /= 1.0f + j.mass.iB * hs * t.stiffness[j.indexB];
+        // The angle rows' effective mass 1/(1/ĨA + 1/ĨB) (joint_revolute.cpp's prepare, on Ĩ).
+        RevoluteJoint& r = j.data.as<RevoluteJoint>();
+        r.axialMass = effectiveMass(j.mass, angularRow);
     }
 }
 
