@@ -7,6 +7,7 @@
 
 #include "core/joints/joint_revolute.hpp"
 #include "core/joints/joint_solver_wide.hpp"
+#include "core/joints/joint_tree_stiffness.hpp"
 #include "core/world/world_impl.hpp"
 
 namespace perpdot {
@@ -130,7 +131,7 @@ JointKey keyOf(const PreparedJoint& j) {
             j.type,
             j.mass.mA != 0.0f || j.mass.iA != 0.0f,
             j.mass.mB != 0.0f || j.mass.iB != 0.0f,
-            pointRowsOnly(j) && !j.breakable,
+            j.type == JointType::Revolute && !j.data.as<RevoluteJoint>().enableLimit && !j.breakable,
             lanes != nullptr && lanes->optionalRows(j)};
 }
 
@@ -236,7 +237,7 @@ void prepareJoints(World::Impl& w, const StepContext& ctx) {
 // type can share SIMD lanes), the revolute trees leave the colours, and each joint is sent to the
 // next lane of its colour and type or to its colour's next scalar slot (within a colour the order
 // is free); the workers pack the blocks' lanes.
-void colorJoints(World::Impl& w) {
+void colorJoints(World::Impl& w, const StepContext& ctx) {
     constexpr int overflow = GraphColoring::overflow;
     JointScratch& d = jointScratch(w);
     const int count = static_cast<int>(d.keys.size());
@@ -248,6 +249,7 @@ void colorJoints(World::Impl& w) {
     coloring.reset(static_cast<int>(w.scratch.states.size()));
     // Joints of revolute trees take no colour: they are solved directly (joint_tree.hpp).
     findRevoluteTrees(d.trees, d.keys, static_cast<int>(w.scratch.states.size()));
+    stiffenRevoluteTrees(d.trees, d.prepared, ctx.hs, static_cast<int>(w.scratch.states.size()));
     // Lanes by colour and type: those of joints with the type's rows alone, and of joints with
     // optional rows (a motor, a limit).
     constexpr int types = jointTypeCount;

@@ -26,9 +26,9 @@ JointScratchPtr makeJointScratch();
 
 // Solver stages, run by World::step (step.cpp, solver_stages.cpp) like the contact stages.
 // prepareJoints: the awake joints, each prepared (anchors, effective masses) on the workers;
-// colorJoints: then coloured, the revolute trees found, and laid out in blocks and slots.
+// colorJoints: then coloured, the revolute trees found (and stiffened), and laid out in blocks and slots.
 void prepareJoints(World::Impl& world, const StepContext& ctx);
-void colorJoints(World::Impl& world);
+void colorJoints(World::Impl& world, const StepContext& ctx);
 // The work of colour `color` (below GraphColoring::overflow) in a pass: units that share no
 // moving body, to be run in any order or side by side.
 int jointUnitCount(const World::Impl& world, int color);

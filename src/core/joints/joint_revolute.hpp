@@ -35,8 +35,8 @@ constexpr auto fields(const RevoluteJoint*) {
                       field("upperImpulse", &J::upperImpulse).anyBits()};
 }
 
-// A revolute joint without motor or limit: its point rows alone, what revolute trees are made of
-// (joint_tree.hpp).
+// A revolute joint without motor or limit: its point rows alone (a revolute tree solves the motor
+// row of the others first, joint_tree.hpp).
 inline bool pointRowsOnly(const PreparedJoint& j) {
     if (j.type != JointType::Revolute) return false;
     const RevoluteJoint& r = j.data.as<RevoluteJoint>();

@@ -118,7 +118,7 @@ struct JointKey {
     int indexA = 0, indexB = 0;  // solver slots
     JointType type = JointType::Revolute;
     bool movesA = false, movesB = false;  // the side has mass or inertia (static, asleep or kinematic: not)
-    bool pointRowsOnly = false;           // a revolute joint without motor or limit (joint_tree.hpp)
+    bool hinge = false;                   // an unbreakable revolute joint without limit: a tree may take it (joint_tree.hpp)
     bool optionalRows = false;            // in lanes, rows others of its type lack (JointLaneStages)
 };
 
@@ -216,8 +216,9 @@ constexpr int jointTypeCount = static_cast<int>(JointType::Friction) + 1;
 const JointKind* kindOf(JointType type);
 const JointStages& stagesOf(JointType type);  // of a type that exists
 
-// The revolute joint's rows one at a time, also for revolute trees that do not factor.
+// For revolute trees (joint_tree.cpp): a revolute joint's warm start, and its motor and limit rows
+// alone, solved before the tree's point rows.
 void warmStartRevolute(PreparedJoint& joint, JointPair& pair);
-void solveRevolute(PreparedJoint& joint, JointPair& pair, const StepContext& ctx, bool useBias);
+void solveRevoluteAngleRows(PreparedJoint& joint, JointPair& pair, const StepContext& ctx, bool useBias);
 
 }  // namespace perpdot

@@ -38,10 +38,9 @@ void couple(std::vector<double>& K, int n, int i, int l, const Side& a, const Si
 
 }  // namespace
 
-// Union-find over the moving bodies the joints link, keeping each group's joint count, fixed
-// anchors and whether it closes a cycle (K would be singular). A second fixed anchor could pull a
-// chain straight between two points (singular again), so such groups stay with the sequential
-// passes, as do groups too large for a dense K.
+// Union-find over the moving bodies the joints link, keeping each group's joint count; groups too
+// large for a dense K stay with the sequential passes. A group may close a loop or hang between
+// two fixed anchors (assemble: K's raised diagonal).
 void findRevoluteTrees(RevoluteTrees& t, const std::vector<JointKey>& keys, int slots) {
     const int count = static_cast<int>(keys.size());
     t.joints.clear();
@@ -51,33 +50,23 @@ void findRevoluteTrees(RevoluteTrees& t, const std::vector<JointKey>& keys, int 
     t.root.resize(slots);
     std::iota(t.root.begin(), t.root.end(), 0);
     t.jointCount.assign(slots, 0);
-    t.fixedAnchors.assign(slots, 0);
-    t.cyclic.assign(slots, 0);
     // A side that cannot move (static, asleep, kinematic) couples nothing: it anchors the tree.
     for (const JointKey& j : keys) {
-        if (!j.pointRowsOnly) continue;
+        if (!j.hinge) continue;
         const bool a = j.movesA, b = j.movesB;
         if (a && b) {
             int ra = findRoot(t.root, j.indexA), rb = findRoot(t.root, j.indexB);
-            if (ra == rb) {
-                t.cyclic[ra] = 1;
-            } else {
+            if (ra != rb) {
                 if (t.jointCount[ra] < t.jointCount[rb]) std::swap(ra, rb);  // the larger group stays the root
                 t.root[rb] = ra;
                 t.jointCount[ra] += t.jointCount[rb];
-                t.fixedAnchors[ra] += t.fixedAnchors[rb];
-                t.cyclic[ra] |= t.cyclic[rb];
             }
             ++t.jointCount[ra];
         } else if (a || b) {
-            const int r = findRoot(t.root, a ? j.indexA : j.indexB);
-            ++t.jointCount[r];
-            ++t.fixedAnchors[r];
+            ++t.jointCount[findRoot(t.root, a ? j.indexA : j.indexB)];
         }
     }
-    const auto isTree = [&](int r) {
-        return !t.cyclic[r] && t.fixedAnchors[r] <= 1 && t.jointCount[r] >= 2 && t.jointCount[r] <= RevoluteTrees::maxJoints;
-    };
+    const auto isTree = [&](int r) { return t.jointCount[r] >= 2 && t.jointCount[r] <= RevoluteTrees::maxJoints; };
     bool any = false;
     for (int r = 1; r < slots && !any; ++r) any = t.root[r] == r && isTree(r);
     if (!any) return;
@@ -86,7 +75,7 @@ void findRevoluteTrees(RevoluteTrees& t, const std::vector<JointKey>& keys, int 
     int inTrees = 0;
     for (int k = 0; k < count; ++k) {
         const JointKey& j = keys[k];
-        if (!j.pointRowsOnly || (!j.movesA && !j.movesB)) continue;
+        if (!j.hinge || (!j.movesA && !j.movesB)) continue;
         const int r = findRoot(t.root, j.movesA ? j.indexA : j.indexB);
         if (!isTree(r)) continue;
         t.treeOf[k] = r;
@@ -94,8 +83,8 @@ void findRevoluteTrees(RevoluteTrees& t, const std::vector<JointKey>& keys, int 
     }
     if (inTrees == 0) return;
     // Trees in order of their first joint; a counting sort keeps each tree's joints in prepared order.
-    std::vector<int>& treeIndex = t.fixedAnchors;  // reused, by root: the tree's index, then its next free place
-    std::fill(treeIndex.begin(), treeIndex.end(), -1);
+    std::vector<int>& treeIndex = t.treeIndex;  // by root: the tree's index
+    treeIndex.assign(slots, -1);
     int trees = 0;
     for (int k = 0; k < count; ++k)
         if (const int r = t.treeOf[k]; r >= 0 && treeIndex[r] < 0) treeIndex[r] = trees++;
@@ -142,10 +131,10 @@ int assemble(World::Impl& w, RevoluteTrees& t, const std::vector<PreparedJoint>&
         t.x[2 * i] = b.x;
         t.x[2 * i + 1] = b.y;
         const Mat22T<float> Kii = pointMass(j.mass, f.rA, f.rB);
-        t.K[(2 * i) * n + 2 * i] = Kii.cx.x;
+        t.K[(2 * i) * n + 2 * i] = (1.0 + RevoluteTrees::diagonalRaise) * Kii.cx.x;
         t.K[(2 * i + 1) * n + 2 * i] = Kii.cx.y;
         t.K[(2 * i) * n + 2 * i + 1] = Kii.cy.x;
-        t.K[(2 * i + 1) * n + 2 * i + 1] = Kii.cy.y;
+        t.K[(2 * i + 1) * n + 2 * i + 1] = (1.0 + RevoluteTrees::diagonalRaise) * Kii.cy.y;
     }
     for (int i = 0; i < joints; ++i) {
         const PreparedJoint& ji = prepared[t.joints[first + i]];
@@ -180,14 +169,23 @@ void solveRevoluteTrees(World::Impl& w, RevoluteTrees& t, std::vector<PreparedJo
     const Softness soft = rigidSoftness(ctx, useBias);
     for (size_t tree = 0; tree + 1 < t.start.size(); ++tree) {
         const int first = t.start[tree], joints = t.start[tree + 1] - first;
+        // A joint's motor and limits first, one by one, as its own solve orders them (joint_revolute.cpp):
+        // the point rows, solved last, win.
+        for (int i = 0; i < joints; ++i) {
+            PreparedJoint& j = prepared[t.joints[first + i]];
+            if (pointRowsOnly(j)) continue;
+            JointPair p = pairOf(w.scratch.states, w.scratch.stepRotation, j);
+            solveRevoluteAngleRows(j, p, ctx, useBias);
+        }
         const int n = assemble(w, t, prepared, tree, [&](const JointPair& p, const JointFrame& f) {
             return relativeVelocity(p, f.rA, f.rB) + soft.biasRate * f.d;  // v_rel + biasRate·C
         });
-        if (!choleskyFactor(t.K.data(), n)) {
+        if (!choleskyFactor(t.K.data(), n)) {  // the point rows joint by joint
             for (int i = 0; i < joints; ++i) {
                 PreparedJoint& j = prepared[t.joints[first + i]];
                 JointPair p = pairOf(w.scratch.states, w.scratch.stepRotation, j);
-                solveRevolute(j, p, ctx, useBias);
+                const JointFrame f = currentFrame(j, p);
+                solvePointRows(p, f.rA, f.rB, f.d, soft, j.data.as<RevoluteJoint>().linearImpulse);
             }
             continue;
         }

@@ -61,7 +61,7 @@ void World::step(float timeStep) {
     integrateVelocities(w, ctx);
     prepareJoints(w, ctx);   // prepare: effective masses, anchors, warm-start impulses
     startTreeRefit(w, ctx);  // the broadphase follows the predicted poses on a worker of its own,
-    colorJoints(w);          // beside the joints' serial colouring
+    colorJoints(w, ctx);     // beside the joints' serial colouring
     prepareContacts(w, ctx);
     // Per substep: its forces, warm start, solve with soft bias, x += hs v, relax without bias;
     // then restitution, Hecker's bounce, once (solver_stages.hpp: the rows colour by colour, on
