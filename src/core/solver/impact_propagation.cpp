@@ -12,11 +12,14 @@ namespace perpdot {
 namespace {
 
 // A point meets this step when it approaches faster than the restitution threshold (v_rel·n <
-// −threshold, v_rel of the free velocities, as restitution reads it) and closes its gap within
-// the step (s ≤ −v_rel·n h). Returns v_rel·n, or 0 when the point does not meet.
+// −threshold, v_rel of the free velocities, as restitution reads it), would rebound faster than
+// it too (−e v_rel·n > threshold: a slower rebound is a plastic impact, which the substeps solve
+// for a whole pile at once), and closes its gap within the step (s ≤ −v_rel·n h). Returns
+// v_rel·n, or 0 when the point does not meet.
 float meetingSpeed(const ImpactPoint& p, const BodyState& a, const BodyState& b, const StepContext& ctx) {
     const float vn = dot(relativeVelocity(a, b, p.rA, p.rB), p.normal);
-    return vn < -ctx.restitutionThreshold && p.separation <= -vn * ctx.h ? vn : 0.0f;
+    const bool bounces = vn < -ctx.restitutionThreshold && -p.restitution * vn > ctx.restitutionThreshold;
+    return bounces && p.separation <= -vn * ctx.h ? vn : 0.0f;
 }
 
 // Impulse P at anchor r of a body: v += P/m, ω += perpDot(r, P)/I.
