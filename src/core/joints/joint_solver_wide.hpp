@@ -141,22 +141,21 @@ void gather(JointBlock& block, const std::array<const PreparedJoint*, 4>& lanes)
     for (int lane = 0; lane < 4; ++lane) RowSet::gather(*lanes[lane], RowLane<4>{block.rows + lane}, block.optionalRows);
 }
 
-// `rows(rows, pair, block)` on each block, its bodies gathered into lanes and their velocities
-// written back.
+// `rows(rows, pair, block)` on each block (forBlocks, body_lanes.hpp), its bodies in lanes.
 template <class RowSet, class Rows>
-void forBlocks(JointBlock* blocks, int count, std::vector<BodyState>& states, Rows rows) {
-    for (JointBlock* block = blocks; block != blocks + count; ++block) {
-        BodyLanes<simd::Float4> a = gatherBodies(states, block->bodyA), b = gatherBodies(states, block->bodyB);
-        JointPairT<simd::Float4> p{a, b, block->mass};
-        rows(block->rowsAs<WideRows<RowSet>>(), p, *block);
-        scatterVelocities(states, block->bodyA, a);
-        scatterVelocities(states, block->bodyB, b);
-    }
+void forJointBlocks(JointBlock* blocks, int count, std::vector<BodyState>& states, Rows rows) {
+    forBlocks<simd::Float4, 0>(
+        blocks, 0, count, states.data(),
+        [&](JointBlock& block, BodyLanes<simd::Float4>& a, BodyLanes<simd::Float4>& b) {
+            JointPairT<simd::Float4> p{a, b, block.mass};
+            rows(block.rowsAs<WideRows<RowSet>>(), p, block);
+        },
+        EveryBlock{});
 }
 
 template <class RowSet>
 void warmStart(JointBlock* blocks, int count, std::vector<BodyState>& states) {
-    forBlocks<RowSet>(blocks, count, states, [](const WideRows<RowSet>& rows, JointPairT<simd::Float4>& p, const JointBlock&) {
+    forJointBlocks<RowSet>(blocks, count, states, [](const WideRows<RowSet>& rows, JointPairT<simd::Float4>& p, const JointBlock&) {
         RowSet::warmStart(rows, p);
     });
 }
@@ -164,7 +163,7 @@ void warmStart(JointBlock* blocks, int count, std::vector<BodyState>& states) {
 template <class RowSet>
 void solve(JointBlock* blocks, int count, std::vector<BodyState>& states, const std::vector<float>& stepRotation,
            const StepContext& ctx, bool useBias) {
-    forBlocks<RowSet>(blocks, count, states, [&](WideRows<RowSet>& rows, JointPairT<simd::Float4>& p, const JointBlock& block) {
+    forJointBlocks<RowSet>(blocks, count, states, [&](WideRows<RowSet>& rows, JointPairT<simd::Float4>& p, const JointBlock& block) {
         if (RowSet::usesRotation(block.optionalRows)) p.rotation = laneRotation(block, stepRotation);
         RowSet::solve(rows, p, ctx, useBias, block.optionalRows);
     });

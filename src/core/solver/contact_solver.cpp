@@ -126,7 +126,7 @@ void laneContacts(const World::Impl& w, const ContactConstraint* const (&constra
 
 }  // namespace
 
-void gatherContactLanes(const World::Impl& w, const ContactConstraint* const (&constraints)[4], int used, ContactBlock& block,
+void gatherContactLanes(const World::Impl& w, const ContactConstraint* const (&constraints)[4], int used, ContactBlock<4>& block,
                         const float (&present)[2][4]) {
     const Contact* contacts[4];
     laneContacts(w, constraints, used, contacts);
@@ -135,7 +135,7 @@ void gatherContactLanes(const World::Impl& w, const ContactConstraint* const (&c
 }
 
 #ifdef PERPDOT_AVX2
-void gatherContactLanes(const World::Impl& w, const ContactConstraint* const (&constraints)[8], int used, ContactBlock8& block,
+void gatherContactLanes(const World::Impl& w, const ContactConstraint* const (&constraints)[8], int used, ContactBlock<8>& block,
                         const float (&present)[2][8]) {
     const Contact* contacts[8];
     laneContacts(w, constraints, used, contacts);

@@ -44,65 +44,16 @@ decltype(auto) onContactBlocks(Scratch& s, Fn fn) {
     return fn(s.contactBlocks);
 }
 
-// `rows(blockRows, a, b, slotsA, slotsB, uses)` on the blocks of [begin, end) that `needs` (all by
-// default; the bodies of those ahead asked for, prefetchBodies), or `rows(constraint, a, b, slotA,
-// slotB, RowUses{})` on every overflow constraint when overflow is set.
-template <class Rows, class Needs = bool (*)(const ContactBlock&)>
-void forContacts(World::Impl& w, int begin, int end, bool overflow, Rows rows,
-                 Needs needs = [](const ContactBlock&) { return true; }) {
-    std::vector<BodyState>& states = w.scratch.states;
-    for (int k = begin; k < end; ++k) {
-        ContactBlock& block = w.scratch.contactBlocks[k];
-        if (!needs(block)) continue;
-        if (k + bodiesAhead < end && needs(w.scratch.contactBlocks[k + bodiesAhead]))
-            prefetchBodies(states.data(), w.scratch.contactBlocks[k + bodiesAhead].bodyA, w.scratch.contactBlocks[k + bodiesAhead].bodyB);
-        BodyLanes<Float4> a = gatherBodies(states, block.bodyA);
-        BodyLanes<Float4> b = gatherBodies(states, block.bodyB);
-        rows(block.rows, a, b, block.bodyA, block.bodyB, block.uses);
-        scatterVelocities(states, block.bodyA, a);
-        scatterVelocities(states, block.bodyB, b);
-    }
-    if (!overflow) return;
-    for (int index : w.scratch.overflowConstraints) {
-        const ContactConstraint& c = w.scratch.constraints[index];
-        rows(w.scratch.constraintRows[index], states[c.indexA], states[c.indexB], c.indexA, c.indexB, RowUses{});
-    }
-}
-
-void passContacts(World::Impl& w, const StepContext& ctx, RowPass pass, int begin, int end, bool overflow) {
-    if (pass == RowPass::WarmStart)
-        forContacts(w, begin, end, overflow,
-                    [](auto& c, auto& a, auto& b, const auto&, const auto&, RowUses uses) { warmStartContact(c, a, b, uses); });
-    else if (pass == RowPass::Solve)
-        forContacts(w, begin, end, overflow,
-                    [&](auto& c, auto& a, auto& b, const auto&, const auto&, RowUses uses) { solveContact<true>(c, a, b, ctx, uses); });
-    else if (pass == RowPass::Relax)
-        forContacts(w, begin, end, overflow,
-                    [&](auto& c, auto& a, auto& b, const auto&, const auto&, RowUses uses) { solveContact<false>(c, a, b, ctx, uses); });
-    else
-        forContacts(
-            w, begin, end, overflow,
-            [&](auto& c, auto& a, auto& b, const auto& slotsA, const auto& slotsB, RowUses) {
-                const std::vector<SubstepForces>& forces = w.scratch.substepForces;
-                restituteContact(c, a, b, substepVelocityChange(forces, slotsA), substepVelocityChange(forces, slotsB), ctx);
-            },
-            [](const ContactBlock& block) { return block.uses.elastic; });
-}
-
-}  // namespace
-
-namespace {
-
 // deriveContactRows on a block's lanes: four here, eight in the AVX2 file.
-void deriveBlock(World::Impl& w, const StepContext& ctx, ContactBlock& block, const float (&present)[2][4]) {
-    const BodyLanes<Float4> a = gatherBodies(w.scratch.freeVelocities, block.bodyA);
-    const BodyLanes<Float4> b = gatherBodies(w.scratch.freeVelocities, block.bodyB);
+void deriveBlock(World::Impl& w, const StepContext& ctx, ContactBlock<4>& block, const float (&present)[2][4]) {
+    const BodyLanes<Float4> a = gatherBodies(w.scratch.freeVelocities.data(), block.bodyA);
+    const BodyLanes<Float4> b = gatherBodies(w.scratch.freeVelocities.data(), block.bodyB);
     const Float4 points[2] = {Float4::load(present[0]), Float4::load(present[1])};
-    deriveContactRows(block.rows, a, b, points, ctx);
+    deriveContactRows(block.rowsAs<Float4>(), a, b, points, ctx);
 }
 
 #ifdef PERPDOT_AVX2
-void deriveBlock(World::Impl& w, const StepContext& ctx, ContactBlock8& block, const float (&present)[2][8]) {
+void deriveBlock(World::Impl& w, const StepContext& ctx, ContactBlock<8>& block, const float (&present)[2][8]) {
     deriveContactRows8(block, w.scratch.freeVelocities.data(), present, ctx);
 }
 #endif
@@ -224,16 +175,25 @@ int contactBlockCount(const World::Impl& w, int color) {
 }
 
 void contactRows(World::Impl& w, const StepContext& ctx, RowPass pass, int color, int begin, int end) {
-    const int first = w.scratch.contactBlockStart[color];
+    StepScratch& s = w.scratch;
+    const int first = s.contactBlockStart[color];
 #ifdef PERPDOT_AVX2
-    if (w.scratch.contactLanes == 8)
-        return contactRows8(w.scratch.contactBlocks8.data(), first + begin, first + end, w.scratch.states.data(),
-                            w.scratch.substepForces.data(), ctx, pass);
+    if (s.contactLanes == 8)
+        return contactRows8(s.contactBlocks8.data(), first + begin, first + end, s.states.data(), s.substepForces.data(), ctx, pass);
 #endif
-    passContacts(w, ctx, pass, first + begin, first + end, false);
+    contactBlockRows<Float4>(s.contactBlocks.data(), first + begin, first + end, s.states.data(), s.substepForces.data(), ctx, pass);
 }
 
-void serialContactRows(World::Impl& w, const StepContext& ctx, RowPass pass) { passContacts(w, ctx, pass, 0, 0, true); }
+// The overflow constraints one by one, in their own rows.
+void serialContactRows(World::Impl& w, const StepContext& ctx, RowPass pass) {
+    StepScratch& s = w.scratch;
+    forPass<float>(pass, ctx, s.substepForces.data(), [&](auto rows, auto) {
+        for (int index : s.overflowConstraints) {
+            const ContactConstraint& c = s.constraints[index];
+            rows(s.constraintRows[index], s.states[c.indexA], s.states[c.indexB], c.indexA, c.indexB, RowUses{});
+        }
+    });
+}
 
 namespace {
 

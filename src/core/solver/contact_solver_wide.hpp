@@ -27,7 +27,7 @@ struct ContactPointRows {
 };
 
 // The fields every pass reads come first, up to the points; the others only where a lane of the
-// block uses them (RowUses). With the block's solver slots before them (ContactBlock8), a pass over
+// block uses them (RowUses). With the block's solver slots before them (ContactBlock<8>), a pass over
 // blocks of flat, plain contacts streams 13 of a block's 19 cache lines.
 template <class F>
 struct ContactRows {
@@ -322,30 +322,68 @@ inline constexpr std::size_t pointRunFields[7] = {
     offsetof(ContactPointRows<float>, baseSeparation), offsetof(ContactPointRows<float>, normalImpulse),
     offsetof(ContactPointRows<float>, tangentImpulse)};
 
-// Four constraints of one graph colour (no two share a dynamic body) as the lanes of one row set.
-struct ContactBlock {
-    static constexpr int lanes = 4;
-    ContactRows<simd::Float4> rows;
-    int contact[4] = {-1, -1, -1, -1};     // index in World::Impl::contacts; -1: an empty lane
-    int bodyA[4] = {}, bodyB[4] = {};      // solver slots; an empty lane uses the static slot 0
-    RowUses uses;                          // of its lanes (rowUses): the fields after the points they read
-    const float* rowData() const { return floatsOf(rows); }
-    float* rowData() { return floatsOf(rows); }
-};
-
-// Eight constraints of one colour, for CPUs with AVX2 (contact_solver_avx2.cpp): the rows are
-// ContactRows<Float8>, kept as floats here because only that file may name AVX2 types.
-struct alignas(64) ContactBlock8 {
-    static constexpr int lanes = 8;
-    int bodyA[8] = {}, bodyB[8] = {};
-    RowUses uses;
-    alignas(32) float rows[rowFloats * 8];
-    int contact[8] = {-1, -1, -1, -1, -1, -1, -1, -1};  // read by layout and store only
+// N constraints of one graph colour (no two share a dynamic body) as the lanes of one row set:
+// N = 4 (simd::Float4) or, for CPUs with AVX2, 8 (Float8, contact_solver_avx2.cpp). The rows are
+// ContactRows<F> of an N-lane F, kept as floats because only the AVX2 file may name Float8.
+template <std::size_t N>
+struct alignas(64) ContactBlock {
+    static constexpr int lanes = static_cast<int>(N);
+    int bodyA[N] = {}, bodyB[N] = {};  // solver slots; an empty lane uses the static slot 0
+    RowUses uses;                      // of its lanes (rowUses): the fields after the points they read
+    alignas(32) float rows[rowFloats * N];
+    int contact[N] = {};  // index in World::Impl::contacts, -1 for an empty lane (layOutBlocks); read by layout and store only
     const float* rowData() const { return rows; }
     float* rowData() { return rows; }
+    template <class F>
+    ContactRows<F>& rowsAs() {
+        static_assert(sizeof(ContactRows<F>) == sizeof rows, "F must be N lanes wide");
+        return *reinterpret_cast<ContactRows<F>*>(rows);
+    }
 };
 // What a pass over blocks of flat, plain contacts reads: whole cache lines, 13 of them.
-static_assert(offsetof(ContactBlock8, rows) + offsetof(ContactRows<float>, turnsA) * 8 == 13 * 64);
+static_assert(offsetof(ContactBlock<8>, rows) + offsetof(ContactRows<float>, turnsA) * 8 == 13 * 64);
+
+// One pass (RowPass) of the rows on lanes of F, handed to `loop(rows, elasticOnly)`:
+// rows(c, a, b, slotsA, slotsB, uses) runs it on one row set whose bodies are in solver slots
+// slotsA, slotsB; elasticOnly (std::true_type for restitution) says only rows with an elastic lane
+// need it. The one switch of the passes, for blocks of every width and for single constraints.
+template <class F, class Loop>
+void forPass(RowPass pass, const StepContext& ctx, const SubstepForces* forces, Loop loop) {
+    using Lanes = BodyLanes<F>;
+    switch (pass) {
+        case RowPass::WarmStart:
+            return loop([](ContactRows<F>& c, Lanes& a, Lanes& b, const auto&, const auto&, RowUses uses) { warmStartContact(c, a, b, uses); },
+                        std::false_type{});
+        case RowPass::Solve:
+            return loop([&ctx](ContactRows<F>& c, Lanes& a, Lanes& b, const auto&, const auto&,
+                               RowUses uses) { solveContact<true>(c, a, b, ctx, uses); },
+                        std::false_type{});
+        case RowPass::Relax:
+            return loop([&ctx](ContactRows<F>& c, Lanes& a, Lanes& b, const auto&, const auto&,
+                               RowUses uses) { solveContact<false>(c, a, b, ctx, uses); },
+                        std::false_type{});
+        case RowPass::Restitution:
+            return loop(
+                [&ctx, forces](ContactRows<F>& c, Lanes& a, Lanes& b, const auto& slotsA, const auto& slotsB, RowUses) {
+                    restituteContact(c, a, b, LaneBodies<F>::velocityChange(forces, slotsA), LaneBodies<F>::velocityChange(forces, slotsB), ctx);
+                },
+                std::true_type{});
+    }
+}
+
+// One pass over the blocks [begin, end) of N lanes of F (forBlocks, body_lanes.hpp).
+template <class F, std::size_t N>
+void contactBlockRows(ContactBlock<N>* blocks, int begin, int end, BodyState* states, const SubstepForces* forces, const StepContext& ctx,
+                      RowPass pass) {
+    forPass<F>(pass, ctx, forces, [&](auto rows, auto elasticOnly) {
+        forBlocks<F, bodiesAhead>(
+            blocks, begin, end, states,
+            [&](ContactBlock<N>& block, BodyLanes<F>& a, BodyLanes<F>& b) {
+                rows(block.template rowsAs<F>(), a, b, block.bodyA, block.bodyB, block.uses);
+            },
+            [](const ContactBlock<N>& block) { return !decltype(elasticOnly)::value || block.uses.elastic; });
+    });
+}
 
 // The lane width of a new world's contact blocks: 8 where contactLanes8Available() (this build
 // has the AVX2 rows and the CPU runs AVX2), else 4; the environment's PERPDOT_CONTACT_LANES=4 picks 4.
@@ -353,16 +391,16 @@ bool contactLanes8Available();
 int chooseContactLanes();
 
 // The eight-lane rows (src/core/solver/avx2/contact_solver_avx2.cpp, built where PERPDOT_AVX2 is defined):
-// contactRows8 is one pass over blocks [begin, end), as contactRows is over four-lane blocks;
+// contactRows8 is contactBlockRows on Float8 lanes;
 // deriveContactRows8 is deriveContactRows on a block's lanes, its bodies' velocities without contacts
 // in freeVelocities (by solver slot); gatherContactRows8 writes a block's contact values, each
 // lane's from two runs of eight floats of its contact: `head` (friction, restitution, rolling
 // resistance, tangent speed, rolling impulse, normal, and the point count, unused) and `points[i]`
 // (anchor A, anchor B, separation, normal and tangent impulses, and the largest push, unused), the
 // point's fields zero where present[i] is 0 (contact_solver.cpp lays a contact out so).
-void deriveContactRows8(ContactBlock8& block, const BodyState* freeVelocities, const float (&present)[2][8], const StepContext& ctx);
-void gatherContactRows8(ContactBlock8& block, const float* const (&head)[8], const float* const (&points)[2][8], const float (&present)[2][8]);
-void contactRows8(ContactBlock8* blocks, int begin, int end, BodyState* states, const SubstepForces* forces, const StepContext& ctx,
+void deriveContactRows8(ContactBlock<8>& block, const BodyState* freeVelocities, const float (&present)[2][8], const StepContext& ctx);
+void gatherContactRows8(ContactBlock<8>& block, const float* const (&head)[8], const float* const (&points)[2][8], const float (&present)[2][8]);
+void contactRows8(ContactBlock<8>* blocks, int begin, int end, BodyState* states, const SubstepForces* forces, const StepContext& ctx,
                   RowPass pass);
 
 }  // namespace perpdot

@@ -68,9 +68,27 @@ struct Transposed8 {
     }
 }
 
+// The velocity change per substep from its forces of eight slots' bodies, as lanes.
+Vec2T<Float8> substepVelocityChange8(const SubstepForces* forces, const int (&slots)[8]) {
+    alignas(32) float x[8], y[8];
+    for (int lane = 0; lane < 8; ++lane) {
+        x[lane] = forces[slots[lane]].dv.x;
+        y[lane] = forces[slots[lane]].dv.y;
+    }
+    return {Float8(_mm256_load_ps(x)), Float8(_mm256_load_ps(y))};
+}
+
 }  // namespace
 
-void gatherContactRows8(ContactBlock8& block, const float* const (&head)[8], const float* const (&points)[2][8], const float (&present)[2][8]) {
+template <>
+struct LaneBodies<Float8> {
+    using Slots = int[8];
+    static BodyLanes<Float8> gather(const BodyState* states, const Slots& slots) { return gatherBodies8(states, slots); }
+    static void scatter(BodyState* states, const Slots& slots, const BodyLanes<Float8>& lanes) { scatterVelocities8(states, slots, lanes); }
+    static Vec2T<Float8> velocityChange(const SubstepForces* forces, const Slots& slots) { return substepVelocityChange8(forces, slots); }
+};
+
+void gatherContactRows8(ContactBlock<8>& block, const float* const (&head)[8], const float* const (&points)[2][8], const float (&present)[2][8]) {
     using Rows = ContactRows<float>;
     using PointRows = ContactPointRows<float>;
     auto store = [&](std::size_t offset, Float8 value) { _mm256_store_ps(block.rows + offset / sizeof(float) * 8, value.v); };
@@ -87,65 +105,16 @@ void gatherContactRows8(ContactBlock8& block, const float* const (&head)[8], con
     }
 }
 
-void deriveContactRows8(ContactBlock8& block, const BodyState* freeVelocities, const float (&present)[2][8], const StepContext& ctx) {
+void deriveContactRows8(ContactBlock<8>& block, const BodyState* freeVelocities, const float (&present)[2][8], const StepContext& ctx) {
     const BodyLanes<Float8> a = gatherBodies8(freeVelocities, block.bodyA);
     const BodyLanes<Float8> b = gatherBodies8(freeVelocities, block.bodyB);
     const Float8 points[2] = {Float8(_mm256_loadu_ps(present[0])), Float8(_mm256_loadu_ps(present[1]))};
-    deriveContactRows(*reinterpret_cast<ContactRows<Float8>*>(block.rows), a, b, points, ctx);
+    deriveContactRows(block.rowsAs<Float8>(), a, b, points, ctx);
 }
 
-namespace {
-
-// `rows(blockRows, a, b, block)` on the blocks of [begin, end) that `needs` (all by default), the
-// bodies of those ahead asked for (prefetchBodies).
-template <class Rows, class Needs = bool (*)(const ContactBlock8&)>
-void forBlocks(ContactBlock8* blocks, int begin, int end, BodyState* states, Rows rows,
-               Needs needs = [](const ContactBlock8&) { return true; }) {
-    for (int k = begin; k < end; ++k) {
-        ContactBlock8& block = blocks[k];
-        if (!needs(block)) continue;
-        if (k + bodiesAhead < end && needs(blocks[k + bodiesAhead]))
-            prefetchBodies(states, blocks[k + bodiesAhead].bodyA, blocks[k + bodiesAhead].bodyB);
-        BodyLanes<Float8> a = gatherBodies8(states, block.bodyA);
-        BodyLanes<Float8> b = gatherBodies8(states, block.bodyB);
-        rows(*reinterpret_cast<ContactRows<Float8>*>(block.rows), a, b, block);
-        scatterVelocities8(states, block.bodyA, a);
-        scatterVelocities8(states, block.bodyB, b);
-    }
-}
-
-// The velocity change per substep from its forces of eight slots' bodies, as lanes.
-Vec2T<Float8> substepVelocityChange8(const SubstepForces* forces, const int (&slots)[8]) {
-    alignas(32) float x[8], y[8];
-    for (int lane = 0; lane < 8; ++lane) {
-        x[lane] = forces[slots[lane]].dv.x;
-        y[lane] = forces[slots[lane]].dv.y;
-    }
-    return {Float8(_mm256_load_ps(x)), Float8(_mm256_load_ps(y))};
-}
-
-}  // namespace
-
-void contactRows8(ContactBlock8* blocks, int begin, int end, BodyState* states, const SubstepForces* forces, const StepContext& ctx,
+void contactRows8(ContactBlock<8>* blocks, int begin, int end, BodyState* states, const SubstepForces* forces, const StepContext& ctx,
                   RowPass pass) {
-    using Lanes = BodyLanes<Float8>;
-    using Rows = ContactRows<Float8>;
-    if (pass == RowPass::WarmStart)
-        forBlocks(blocks, begin, end, states,
-                  [](Rows& c, Lanes& a, Lanes& b, const ContactBlock8& block) { warmStartContact(c, a, b, block.uses); });
-    else if (pass == RowPass::Solve)
-        forBlocks(blocks, begin, end, states,
-                  [&](Rows& c, Lanes& a, Lanes& b, const ContactBlock8& block) { solveContact<true>(c, a, b, ctx, block.uses); });
-    else if (pass == RowPass::Relax)
-        forBlocks(blocks, begin, end, states,
-                  [&](Rows& c, Lanes& a, Lanes& b, const ContactBlock8& block) { solveContact<false>(c, a, b, ctx, block.uses); });
-    else
-        forBlocks(
-            blocks, begin, end, states,
-            [&](Rows& c, Lanes& a, Lanes& b, const ContactBlock8& block) {
-                restituteContact(c, a, b, substepVelocityChange8(forces, block.bodyA), substepVelocityChange8(forces, block.bodyB), ctx);
-            },
-            [](const ContactBlock8& block) { return block.uses.elastic; });
+    contactBlockRows<Float8>(blocks, begin, end, states, forces, ctx, pass);
 }
 
 }  // namespace perpdot
