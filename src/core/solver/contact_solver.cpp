@@ -26,18 +26,7 @@ BodyState velocityWithoutContact(const World::Impl& w, const StepContext& ctx, i
     return s;
 }
 
-// A contact's two runs of floats the rows take (contactRunFields, pointRunFields): a block reads
-// them four or eight contacts at a time (the point count and the largest push come along unused)
-// and turns them into lanes.
-static_assert(offsetof(Contact, restitution) == offsetof(Contact, friction) + 4 && offsetof(Contact, rollingResistance) == offsetof(Contact, friction) + 8 &&
-                  offsetof(Contact, tangentSpeed) == offsetof(Contact, friction) + 12 && offsetof(Contact, rollingImpulse) == offsetof(Contact, friction) + 16 &&
-                  offsetof(Contact, normal) == offsetof(Contact, friction) + 20 && offsetof(Contact, pointCount) == offsetof(Contact, friction) + 28,
-              "friction, restitution, rolling resistance, tangent speed | rolling impulse, normal, point count");
-static_assert(offsetof(ContactPointState, anchorB) == 8 && offsetof(ContactPointState, separation) == 16 &&
-                  offsetof(ContactPointState, normalImpulse) == 20 && offsetof(ContactPointState, tangentImpulse) == 24,
-              "anchors | separation, normal and tangent impulses, largest push");
-
-// What a contact does not hold as floats in a row: the bodies' 1/I, whether its anchors turn.
+// The Solver fields of contactRowFields (contact_solver_wide.hpp): the bodies' 1/I, whether the anchors turn.
 template <std::size_t lanes>
 void gatherOtherFields(const World::Impl& w, const ContactConstraint* const (&constraints)[lanes], const Contact* const (&contacts)[lanes],
                        int used, float* rows) {
@@ -95,8 +84,9 @@ void gatherContactQuad(const Contact* const (&contacts)[4], float* rows, const f
     auto store = [&](std::size_t offset, Float4 value) { value.store(rows + offset / sizeof(float) * 4); };
     Float4 head[4], tail[4];
     for (int k = 0; k < 4; ++k) {
-        head[k] = Float4::loadBytes(&contacts[k]->friction);
-        tail[k] = Float4::loadBytes(&contacts[k]->rollingImpulse);
+        const auto* run = reinterpret_cast<const char*>(&contacts[k]->friction);  // the head run (contactRunFields), in halves
+        head[k] = Float4::loadBytes(run);
+        tail[k] = Float4::loadBytes(run + 4 * sizeof(float));
     }
     simd::transpose(head);
     simd::transpose(tail);
@@ -104,8 +94,9 @@ void gatherContactQuad(const Contact* const (&contacts)[4], float* rows, const f
     for (std::size_t i = 0; i < 2; ++i) {
         Float4 anchors[4], values[4];
         for (int k = 0; k < 4; ++k) {
-            anchors[k] = Float4::loadBytes(&contacts[k]->points[i].anchorA);
-            values[k] = Float4::loadBytes(&contacts[k]->points[i].separation);
+            const auto* run = reinterpret_cast<const char*>(&contacts[k]->points[i].anchorA);  // the point's run (pointRunFields)
+            anchors[k] = Float4::loadBytes(run);
+            values[k] = Float4::loadBytes(run + 4 * sizeof(float));
         }
         simd::transpose(anchors);
         simd::transpose(values);

@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <type_traits>
+#include <utility>
 
 #include "core/solver/contact_prepare.hpp"
 #include "core/world/world_impl.hpp"
@@ -197,26 +198,35 @@ void serialContactRows(World::Impl& w, const StepContext& ctx, RowPass pass) {
 
 namespace {
 
-// Where the rolling impulse and point i's largest push are, in floats (as pointField, contact_solver_wide.hpp).
-constexpr std::size_t rollingField = offsetof(ContactRows<float>, rollingImpulse) / sizeof(float);
-constexpr std::size_t maxNormalField(int i) { return offsetof(ContactRows<float>, maxNormalImpulse) / sizeof(float) + static_cast<std::size_t>(i); }
+// Stored field f of a constraint's rows (a line of storedRowFields), from its lane `rows`, into
+// its contact: a contact's field where point < 0, a point field into point `point`.
+template <ContactRowField f, std::size_t lanes>
+void storeRowField(RowLane<lanes, const float> rows, Contact& contact, int point) {
+    if constexpr (f.pointStride == 0) {
+        if (point < 0) *reinterpret_cast<float*>(reinterpret_cast<char*>(&contact) + f.contact) = rows[f.row];
+    } else if (point >= 0) {
+        *reinterpret_cast<float*>(reinterpret_cast<char*>(&contact.points[point]) + f.contact) =
+            rows[f.row + static_cast<std::size_t>(point) * f.pointStride];
+    }
+}
+
+// The stored fields of a constraint's rows (storedRowFields: the accumulated impulses and each
+// point's largest push), from its lane `rows`, into its contact.
+template <std::size_t lanes>
+void storeContactRows(RowLane<lanes, const float> rows, Contact& contact) {
+    [&]<std::size_t... k>(std::index_sequence<k...>) {
+        (storeRowField<storedRowFields[k]>(rows, contact, -1), ...);
+        for (int i = 0; i < 2; ++i)
+            if (i < contact.pointCount) (storeRowField<storedRowFields[k]>(rows, contact, i), ...);
+    }(std::make_index_sequence<storedRowFields.size()>());
+}
 
 // A block's accumulated impulses straight from its lanes into its contacts.
 template <class Block>
 void storeBlockImpulses(World::Impl& w, const Block& block) {
-    const float* rows = block.rowData();
-    for (int lane = 0; lane < Block::lanes; ++lane) {
-        if (block.contact[lane] < 0) continue;
-        auto field = [&](std::size_t index) { return rows[index * Block::lanes + static_cast<std::size_t>(lane)]; };
-        Contact& contact = w.contactCache.contacts[block.contact[lane]];
-        contact.rollingImpulse = field(rollingField);
-        for (int i = 0; i < contact.pointCount; ++i) {
-            ContactPointState& stored = contact.points[i];
-            stored.normalImpulse = field(pointField(i, offsetof(ContactPointRows<float>, normalImpulse)));
-            stored.tangentImpulse = field(pointField(i, offsetof(ContactPointRows<float>, tangentImpulse)));
-            stored.maxNormalImpulse = field(maxNormalField(i));
-        }
-    }
+    for (int lane = 0; lane < Block::lanes; ++lane)
+        if (block.contact[lane] >= 0)
+            storeContactRows(RowLane<Block::lanes, const float>{block.rowData() + lane}, w.contactCache.contacts[block.contact[lane]]);
 }
 
 template <class Block>
@@ -242,15 +252,7 @@ void storeContactBlocks(World::Impl& w, int color, int begin, int end) {
 void storeContactImpulses(World::Impl& w) {
     StepScratch& s = w.scratch;
     auto storeRows = [&](int index) {
-        const ContactConstraint& c = s.constraints[index];
-        const ContactRows<float>& rows = s.constraintRows[index];
-        Contact& contact = w.contactCache.contacts[c.contact];
-        contact.rollingImpulse = rows.rollingImpulse;
-        for (int i = 0; i < c.pointCount; ++i) {
-            contact.points[i].normalImpulse = rows.points[i].normalImpulse;
-            contact.points[i].tangentImpulse = rows.points[i].tangentImpulse;
-            contact.points[i].maxNormalImpulse = rows.maxNormalImpulse[i];
-        }
+        storeContactRows(RowLane<1, const float>{floatsOf(s.constraintRows[index])}, w.contactCache.contacts[s.constraints[index].contact]);
     };
     for (int index : s.overflowConstraints) storeRows(index);
     for (int index : s.contactGroups.constraints) storeRows(index);

@@ -8,11 +8,13 @@
 // a block) has zero masses and zero impulses: its rows compute like the others and apply zero.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <type_traits>
 #include <vector>
 
 #include "collide/collision.hpp"
+#include "core/contacts/contact_cache.hpp"
 #include "core/solver/body_lanes.hpp"
 #include "core/solver/row_lanes.hpp"
 
@@ -300,27 +302,116 @@ void restituteContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, Vec2T
 // N floats each, in the same order: field i of lane l is float i·N + l of the rows (row_lanes.hpp).
 constexpr std::size_t rowFloats = rowFloatsOf<ContactRows>();
 
-// Where a point's field of ContactRows<float> is, in floats (memberOffset: its offsetof in
-// ContactPointRows<float>): in a block of N lanes, lane l of it is float (that index)·N + l.
-constexpr std::size_t pointField(int point, std::size_t memberOffset) {
-    return (offsetof(ContactRows<float>, points) + static_cast<std::size_t>(point) * sizeof(ContactPointRows<float>) + memberOffset) /
-           sizeof(float);
-}
+// The one table of the contact rows' fields: where each float of ContactRows<float> comes from
+// and whether it goes back into the contact. The gathers read the runs it makes (contactRunFields,
+// pointRunFields) and the stores its stored fields (storeContactRows, contact_solver_wide.cpp);
+// everyRowFloatOnce checks at compile time that it names every float of the rows once.
+enum class RowSource : unsigned char {
+    Run,      // in one of the contact's runs of floats: from Contact::friction, or from a point's anchorA
+    Solver,   // from the solver's slots and the contact's flags (gatherOtherFields, contact_solver.cpp)
+    Derived,  // computed from the others (deriveContactRows)
+};
+struct ContactRowField {
+    std::size_t row;          // offsetof in ContactRows<float> (a point field: point 0's)
+    std::size_t floats;       // 1, or 2 for a Vec2
+    std::size_t pointStride;  // a point field: how far point 1's is from point 0's; 0 for the contact's
+    RowSource source;
+    std::size_t contact;  // offsetof in Contact (a point field: in ContactPointState) it is read from
+                          // (Run) or stored to; 0 for neither
+    bool stored;          // written back into the contact after the step (storeContactRows)
+};
 
-// Where a block's gather (gatherContactLanes, contact_prepare.hpp) puts the runs of floats it
-// reads from each contact, field by field (an offset in ContactRows<float>): the seven of the run
-// from its friction (friction, restitution, rolling resistance, tangent speed, rolling impulse,
-// normal), and the seven of the run from a point's anchor A (anchors A and B, separation, normal
-// and tangent impulses), zero where the point is not a manifold point.
-inline constexpr std::size_t contactRunFields[7] = {
-    offsetof(ContactRows<float>, friction),      offsetof(ContactRows<float>, restitution),    offsetof(ContactRows<float>, rollingResistance),
-    offsetof(ContactRows<float>, tangentSpeed),  offsetof(ContactRows<float>, rollingImpulse), offsetof(ContactRows<float>, normal),
-    offsetof(ContactRows<float>, normal) + sizeof(float)};
-inline constexpr std::size_t pointRunFields[7] = {
-    offsetof(ContactPointRows<float>, anchorA),        offsetof(ContactPointRows<float>, anchorA) + sizeof(float),
-    offsetof(ContactPointRows<float>, anchorB),        offsetof(ContactPointRows<float>, anchorB) + sizeof(float),
-    offsetof(ContactPointRows<float>, baseSeparation), offsetof(ContactPointRows<float>, normalImpulse),
-    offsetof(ContactPointRows<float>, tangentImpulse)};
+namespace contact_rows {
+using R = ContactRows<float>;
+using P = ContactPointRows<float>;
+using C = Contact;
+using S = ContactPointState;
+constexpr std::size_t point = sizeof(P), each = sizeof(float);  // the strides of points[i] and of R's arrays [2]
+}  // namespace contact_rows
+
+// clang-format off
+inline constexpr ContactRowField contactRowFields[] = {
+    {offsetof(contact_rows::R, invIA),             1, 0, RowSource::Solver,  0, false},
+    {offsetof(contact_rows::R, invIB),             1, 0, RowSource::Solver,  0, false},
+    {offsetof(contact_rows::R, normal),            2, 0, RowSource::Run,     offsetof(contact_rows::C, normal), false},
+    {offsetof(contact_rows::R, friction),          1, 0, RowSource::Run,     offsetof(contact_rows::C, friction), false},
+    {offsetof(contact_rows::R, points[0].anchorA), 2, contact_rows::point, RowSource::Run, offsetof(contact_rows::S, anchorA), false},
+    {offsetof(contact_rows::R, points[0].anchorB), 2, contact_rows::point, RowSource::Run, offsetof(contact_rows::S, anchorB), false},
+    {offsetof(contact_rows::R, points[0].baseSeparation), 1, contact_rows::point, RowSource::Run, offsetof(contact_rows::S, separation), false},
+    {offsetof(contact_rows::R, points[0].normalImpulse),  1, contact_rows::point, RowSource::Run, offsetof(contact_rows::S, normalImpulse), true},
+    {offsetof(contact_rows::R, points[0].tangentImpulse), 1, contact_rows::point, RowSource::Run, offsetof(contact_rows::S, tangentImpulse), true},
+    {offsetof(contact_rows::R, points[0].normalMass),     1, contact_rows::point, RowSource::Derived, 0, false},
+    {offsetof(contact_rows::R, points[0].tangentMass),    1, contact_rows::point, RowSource::Derived, 0, false},
+    {offsetof(contact_rows::R, turnsA),            1, 0, RowSource::Solver,  0, false},
+    {offsetof(contact_rows::R, turnsB),            1, 0, RowSource::Solver,  0, false},
+    {offsetof(contact_rows::R, tangentSpeed),      1, 0, RowSource::Run,     offsetof(contact_rows::C, tangentSpeed), false},
+    {offsetof(contact_rows::R, rollingResistance), 1, 0, RowSource::Run,     offsetof(contact_rows::C, rollingResistance), false},
+    {offsetof(contact_rows::R, rollingMass),       1, 0, RowSource::Derived, 0, false},
+    {offsetof(contact_rows::R, rollingImpulse),    1, 0, RowSource::Run,     offsetof(contact_rows::C, rollingImpulse), true},
+    {offsetof(contact_rows::R, restitution),       1, 0, RowSource::Run,     offsetof(contact_rows::C, restitution), false},
+    {offsetof(contact_rows::R, maxNormalImpulse),  1, contact_rows::each, RowSource::Derived, offsetof(contact_rows::S, maxNormalImpulse), true},
+    {offsetof(contact_rows::R, relativeVelocity),  1, contact_rows::each, RowSource::Derived, 0, false},
+};
+// clang-format on
+
+// Every float of ContactRows<float> in exactly one line of contactRowFields.
+constexpr bool everyRowFloatOnce() {
+    std::size_t named[rowFloats] = {};
+    for (const ContactRowField& f : contactRowFields)
+        for (std::size_t i = 0; i < (f.pointStride != 0 ? 2 : 1); ++i)
+            for (std::size_t k = 0; k < f.floats; ++k) {
+                const std::size_t index = (f.row + i * f.pointStride) / sizeof(float) + k;
+                if (index >= rowFloats) return false;
+                ++named[index];
+            }
+    for (std::size_t count : named)
+        if (count != 1) return false;
+    return true;
+}
+static_assert(everyRowFloatOnce(), "contactRowFields must name every field of ContactRows once: give a new field its line");
+
+// A contact's runs of floats, each read four or eight contacts at a time and turned into lanes:
+// the head (from Contact::friction) and each point's (from ContactPointState::anchorA), seven
+// floats each (the eighth, the point count or the largest push, comes along unused). Run float f
+// goes to the row field at byte offset (the run's array)[f]: in ContactRows<float> for the head,
+// in ContactPointRows<float> for a point's. Every float of a run must be a Run field of the table.
+template <bool points>
+constexpr std::array<std::size_t, 7> runFields() {
+    std::array<std::size_t, 7> fields{};
+    std::array<int, 7> named{};
+    const std::size_t start = points ? offsetof(Contact, points) + offsetof(ContactPointState, anchorA) : offsetof(Contact, friction);
+    if (start + 8 * sizeof(float) > (points ? offsetof(Contact, points) + sizeof(ContactPointState) : sizeof(Contact)))
+        throw "a run of eight floats must lie inside its contact or point";
+    for (const ContactRowField& f : contactRowFields) {
+        if (f.source != RowSource::Run || (f.pointStride != 0) != points) continue;
+        const std::size_t at = points ? offsetof(Contact, points) + f.contact : f.contact;
+        for (std::size_t k = 0; k < f.floats; ++k) {
+            const std::size_t run = (at - start) / sizeof(float) + k;
+            if (at < start || run >= 7) throw "a Run field outside its run of seven floats";
+            fields[run] = (points ? f.row - offsetof(ContactRows<float>, points) : f.row) + k * sizeof(float);
+            ++named[run];
+        }
+    }
+    for (int count : named)
+        if (count != 1) throw "every float of a run must be one Run field";
+    return fields;
+}
+inline constexpr std::array<std::size_t, 7> contactRunFields = runFields<false>();
+inline constexpr std::array<std::size_t, 7> pointRunFields = runFields<true>();
+
+// The fields stored back into the contact, in order of the table.
+constexpr std::size_t storedFieldCount() {
+    std::size_t count = 0;
+    for (const ContactRowField& f : contactRowFields) count += f.stored ? 1 : 0;
+    return count;
+}
+inline constexpr auto storedRowFields = [] {
+    std::array<ContactRowField, storedFieldCount()> stored{};
+    std::size_t n = 0;
+    for (const ContactRowField& f : contactRowFields)
+        if (f.stored) stored[n++] = f;
+    return stored;
+}();
 
 // N constraints of one graph colour (no two share a dynamic body) as the lanes of one row set:
 // N = 4 (simd::Float4) or, for CPUs with AVX2, 8 (Float8, contact_solver_avx2.cpp). The rows are
