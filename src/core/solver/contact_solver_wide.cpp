@@ -45,12 +45,9 @@ decltype(auto) onContactBlocks(Scratch& s, Fn fn) {
     return fn(s.contactBlocks);
 }
 
-// deriveContactRows on a block's lanes: four here, eight in the AVX2 file.
+// deriveContactBlock on a block's lanes: four here, eight in the AVX2 file.
 void deriveBlock(World::Impl& w, const StepContext& ctx, ContactBlock<4>& block, const float (&present)[2][4]) {
-    const BodyLanes<Float4> a = gatherBodies(w.scratch.freeVelocities.data(), block.bodyA);
-    const BodyLanes<Float4> b = gatherBodies(w.scratch.freeVelocities.data(), block.bodyB);
-    const Float4 points[2] = {Float4::load(present[0]), Float4::load(present[1])};
-    deriveContactRows(block.rowsAs<Float4>(), a, b, points, ctx);
+    deriveContactBlock<Float4>(block, w.scratch.freeVelocities.data(), present, ctx);
 }
 
 #ifdef PERPDOT_AVX2

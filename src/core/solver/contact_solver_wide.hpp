@@ -462,6 +462,16 @@ void forPass(RowPass pass, const StepContext& ctx, const SubstepForces* forces, 
     }
 }
 
+// deriveContactRows on a block's N lanes of F at once, its bodies' velocities without contacts in
+// freeVelocities (by solver slot); present[i]: 1 where a lane's point i is a manifold point.
+template <class F, std::size_t N>
+void deriveContactBlock(ContactBlock<N>& block, const BodyState* freeVelocities, const float (&present)[2][N], const StepContext& ctx) {
+    const BodyLanes<F> a = LaneBodies<F>::gather(freeVelocities, block.bodyA);
+    const BodyLanes<F> b = LaneBodies<F>::gather(freeVelocities, block.bodyB);
+    const F points[2] = {F::load(present[0]), F::load(present[1])};
+    deriveContactRows(block.template rowsAs<F>(), a, b, points, ctx);
+}
+
 // One pass over the blocks [begin, end) of N lanes of F (forBlocks, body_lanes.hpp).
 template <class F, std::size_t N>
 void contactBlockRows(ContactBlock<N>* blocks, int begin, int end, BodyState* states, const SubstepForces* forces, const StepContext& ctx,
@@ -483,8 +493,7 @@ int chooseContactLanes();
 
 // The eight-lane rows (src/core/solver/avx2/contact_solver_avx2.cpp, built where PERPDOT_AVX2 is defined):
 // contactRows8 is contactBlockRows on Float8 lanes;
-// deriveContactRows8 is deriveContactRows on a block's lanes, its bodies' velocities without contacts
-// in freeVelocities (by solver slot); gatherContactRows8 writes a block's contact values, each
+// deriveContactRows8 is deriveContactBlock on them; gatherContactRows8 writes a block's contact values, each
 // lane's from two runs of eight floats of its contact: `head` (friction, restitution, rolling
 // resistance, tangent speed, rolling impulse, normal, and the point count, unused) and `points[i]`
 // (anchor A, anchor B, separation, normal and tangent impulses, and the largest push, unused), the

@@ -106,10 +106,7 @@ void gatherContactRows8(ContactBlock<8>& block, const float* const (&head)[8], c
 }
 
 void deriveContactRows8(ContactBlock<8>& block, const BodyState* freeVelocities, const float (&present)[2][8], const StepContext& ctx) {
-    const BodyLanes<Float8> a = gatherBodies8(freeVelocities, block.bodyA);
-    const BodyLanes<Float8> b = gatherBodies8(freeVelocities, block.bodyB);
-    const Float8 points[2] = {Float8(_mm256_loadu_ps(present[0])), Float8(_mm256_loadu_ps(present[1]))};
-    deriveContactRows(block.rowsAs<Float8>(), a, b, points, ctx);
+    deriveContactBlock<Float8>(block, freeVelocities, present, ctx);
 }
 
 void contactRows8(ContactBlock<8>* blocks, int begin, int end, BodyState* states, const SubstepForces* forces, const StepContext& ctx,
