@@ -75,38 +75,6 @@ void prepareContactRows(const World::Impl& w, const StepContext& ctx, const Cont
 
 namespace {
 
-// A block's four lanes from four contacts (an empty lane's: a contact of zeros), given whether
-// each lane's points are manifold points.
-void gatherContactQuad(const Contact* const (&contacts)[4], float* rows, const float (&present)[2][4]) {
-    using Rows = ContactRows<float>;
-    using PointRows = ContactPointRows<float>;
-    using simd::Float4;
-    auto store = [&](std::size_t offset, Float4 value) { value.store(rows + offset / sizeof(float) * 4); };
-    Float4 head[4], tail[4];
-    for (int k = 0; k < 4; ++k) {
-        const auto* run = reinterpret_cast<const char*>(&contacts[k]->friction);  // the head run (contactRunFields), in halves
-        head[k] = Float4::loadBytes(run);
-        tail[k] = Float4::loadBytes(run + 4 * sizeof(float));
-    }
-    simd::transpose(head);
-    simd::transpose(tail);
-    for (std::size_t f = 0; f < 7; ++f) store(contactRunFields[f], f < 4 ? head[f] : tail[f - 4]);
-    for (std::size_t i = 0; i < 2; ++i) {
-        Float4 anchors[4], values[4];
-        for (int k = 0; k < 4; ++k) {
-            const auto* run = reinterpret_cast<const char*>(&contacts[k]->points[i].anchorA);  // the point's run (pointRunFields)
-            anchors[k] = Float4::loadBytes(run);
-            values[k] = Float4::loadBytes(run + 4 * sizeof(float));
-        }
-        simd::transpose(anchors);
-        simd::transpose(values);
-        // No manifold point: zeros, as gatherRows writes them.
-        const auto point = Float4::load(present[i]) > Float4(0.0f);
-        for (std::size_t f = 0; f < 7; ++f)
-            store(offsetof(Rows, points) + i * sizeof(PointRows) + pointRunFields[f], simd::select(point, f < 4 ? anchors[f] : values[f - 4], Float4(0.0f)));
-    }
-}
-
 // The lanes' contacts, or for an empty lane a contact of zeros.
 template <std::size_t lanes>
 void laneContacts(const World::Impl& w, const ContactConstraint* const (&constraints)[lanes], int used, const Contact* (&contacts)[lanes]) {
@@ -115,29 +83,42 @@ void laneContacts(const World::Impl& w, const ContactConstraint* const (&constra
         contacts[lane] = static_cast<int>(lane) < used ? &w.contactCache.contacts[constraints[lane]->contact] : &none;
 }
 
+// The runs of a block's contacts into its lanes: gatherContactRuns at four lanes, in the AVX2 file at eight.
+void gatherRuns(ContactBlock<4>& block, const float* const (&head)[4], const float* const (&points)[2][4], const float (&present)[2][4]) {
+    gatherContactRuns<simd::Float4>(block, head, points, present);
+}
+#ifdef PERPDOT_AVX2
+void gatherRuns(ContactBlock<8>& block, const float* const (&head)[8], const float* const (&points)[2][8], const float (&present)[2][8]) {
+    gatherContactRows8(block, head, points, present);
+}
+#endif
+
+template <std::size_t lanes>
+void gatherLanes(const World::Impl& w, const ContactConstraint* const (&constraints)[lanes], int used, ContactBlock<lanes>& block,
+                 const float (&present)[2][lanes]) {
+    const Contact* contacts[lanes];
+    laneContacts(w, constraints, used, contacts);
+    const float* head[lanes];
+    const float* points[2][lanes];
+    for (std::size_t lane = 0; lane < lanes; ++lane) {
+        head[lane] = &contacts[lane]->friction;
+        for (int i = 0; i < 2; ++i) points[i][lane] = &contacts[lane]->points[i].anchorA.x;
+    }
+    gatherRuns(block, head, points, present);
+    gatherOtherFields(w, constraints, contacts, used, block.rowData());
+}
+
 }  // namespace
 
 void gatherContactLanes(const World::Impl& w, const ContactConstraint* const (&constraints)[4], int used, ContactBlock<4>& block,
                         const float (&present)[2][4]) {
-    const Contact* contacts[4];
-    laneContacts(w, constraints, used, contacts);
-    gatherContactQuad(contacts, block.rowData(), present);
-    gatherOtherFields(w, constraints, contacts, used, block.rowData());
+    gatherLanes(w, constraints, used, block, present);
 }
 
 #ifdef PERPDOT_AVX2
 void gatherContactLanes(const World::Impl& w, const ContactConstraint* const (&constraints)[8], int used, ContactBlock<8>& block,
                         const float (&present)[2][8]) {
-    const Contact* contacts[8];
-    laneContacts(w, constraints, used, contacts);
-    const float* head[8];
-    const float* points[2][8];
-    for (int lane = 0; lane < 8; ++lane) {
-        head[lane] = &contacts[lane]->friction;
-        for (int i = 0; i < 2; ++i) points[i][lane] = &contacts[lane]->points[i].anchorA.x;
-    }
-    gatherContactRows8(block, head, points, present);
-    gatherOtherFields(w, constraints, contacts, used, block.rowData());
+    gatherLanes(w, constraints, used, block, present);
 }
 #endif
 

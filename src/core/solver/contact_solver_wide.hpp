@@ -434,6 +434,46 @@ struct alignas(64) ContactBlock {
 // What a pass over blocks of flat, plain contacts reads: whole cache lines, 13 of them.
 static_assert(offsetof(ContactBlock<8>, rows) + offsetof(ContactRows<float>, turnsA) * 8 == 13 * 64);
 
+// A run of seven floats of N contacts turned into lanes of F: transpose(runs, fields) sets
+// fields[f] to float f of each lane's run (runs[lane]). Float4's is here; Float8's is in the AVX2
+// file (contact_solver_avx2.cpp).
+template <class F>
+struct ContactRuns;
+
+template <>
+struct ContactRuns<simd::Float4> {
+    static void transpose(const float* const (&runs)[4], simd::Float4 (&fields)[7]) {
+        using simd::Float4;
+        Float4 head[4], tail[4];  // floats 0-3 and 4-7 of the runs
+        for (int k = 0; k < 4; ++k) {
+            head[k] = Float4::loadBytes(runs[k]);
+            tail[k] = Float4::loadBytes(reinterpret_cast<const char*>(runs[k]) + 4 * sizeof(float));
+        }
+        simd::transpose(head);
+        simd::transpose(tail);
+        for (int f = 0; f < 7; ++f) fields[f] = f < 4 ? head[f] : tail[f - 4];
+    }
+};
+
+// A block's contact values from its lanes' runs (contactRunFields, pointRunFields): head[l] is
+// lane l's contact from its friction, points[i][l] its point i from the anchor A; a point's fields
+// are zeros where present[i] is 0, as gatherRows writes them (contact_solver.cpp).
+template <class F, std::size_t N>
+[[gnu::always_inline]] inline void gatherContactRuns(ContactBlock<N>& block, const float* const (&head)[N], const float* const (&points)[2][N],
+                       const float (&present)[2][N]) {
+    auto store = [&](std::size_t offset, F value) { value.store(block.rows + offset / sizeof(float) * N); };
+    F fields[7];
+    ContactRuns<F>::transpose(head, fields);
+    for (std::size_t f = 0; f < 7; ++f) store(contactRunFields[f], fields[f]);
+    for (std::size_t i = 0; i < 2; ++i) {
+        ContactRuns<F>::transpose(points[i], fields);
+        const auto point = F::load(present[i]) > F(0.0f);
+        for (std::size_t f = 0; f < 7; ++f)
+            store(offsetof(ContactRows<float>, points) + i * sizeof(ContactPointRows<float>) + pointRunFields[f],
+                  simd::select(point, fields[f], F(0.0f)));
+    }
+}
+
 // One pass (RowPass) of the rows on lanes of F, handed to `loop(rows, elasticOnly)`:
 // rows(c, a, b, slotsA, slotsB, uses) runs it on one row set whose bodies are in solver slots
 // slotsA, slotsB; elasticOnly (std::true_type for restitution) says only rows with an elastic lane
@@ -493,11 +533,7 @@ int chooseContactLanes();
 
 // The eight-lane rows (src/core/solver/avx2/contact_solver_avx2.cpp, built where PERPDOT_AVX2 is defined):
 // contactRows8 is contactBlockRows on Float8 lanes;
-// deriveContactRows8 is deriveContactBlock on them; gatherContactRows8 writes a block's contact values, each
-// lane's from two runs of eight floats of its contact: `head` (friction, restitution, rolling
-// resistance, tangent speed, rolling impulse, normal, and the point count, unused) and `points[i]`
-// (anchor A, anchor B, separation, normal and tangent impulses, and the largest push, unused), the
-// point's fields zero where present[i] is 0 (contact_solver.cpp lays a contact out so).
+// deriveContactRows8 is deriveContactBlock on them; gatherContactRows8 is gatherContactRuns.
 void deriveContactRows8(ContactBlock<8>& block, const BodyState* freeVelocities, const float (&present)[2][8], const StepContext& ctx);
 void gatherContactRows8(ContactBlock<8>& block, const float* const (&head)[8], const float* const (&points)[2][8], const float (&present)[2][8]);
 void contactRows8(ContactBlock<8>* blocks, int begin, int end, BodyState* states, const SubstepForces* forces, const StepContext& ctx,

@@ -81,6 +81,16 @@ Vec2T<Float8> substepVelocityChange8(const SubstepForces* forces, const int (&sl
 }  // namespace
 
 template <>
+struct ContactRuns<Float8> {
+    static void transpose(const float* const (&runs)[8], Float8 (&fields)[7]) {
+        __m256 row[8];
+        for (int k = 0; k < 8; ++k) row[k] = _mm256_loadu_ps(runs[k]);
+        const Transposed8 t = transpose8(row);
+        for (int f = 0; f < 7; ++f) fields[f] = t.field(f);
+    }
+};
+
+template <>
 struct LaneBodies<Float8> {
     using Slots = int[8];
     static BodyLanes<Float8> gather(const BodyState* states, const Slots& slots) { return gatherBodies8(states, slots); }
@@ -89,20 +99,7 @@ struct LaneBodies<Float8> {
 };
 
 void gatherContactRows8(ContactBlock<8>& block, const float* const (&head)[8], const float* const (&points)[2][8], const float (&present)[2][8]) {
-    using Rows = ContactRows<float>;
-    using PointRows = ContactPointRows<float>;
-    auto store = [&](std::size_t offset, Float8 value) { _mm256_store_ps(block.rows + offset / sizeof(float) * 8, value.v); };
-    __m256 row[8];
-    for (int k = 0; k < 8; ++k) row[k] = _mm256_loadu_ps(head[k]);
-    const Transposed8 h = transpose8(row);
-    for (int f = 0; f < 7; ++f) store(contactRunFields[f], h.field(f));
-    for (std::size_t i = 0; i < 2; ++i) {
-        for (int k = 0; k < 8; ++k) row[k] = _mm256_loadu_ps(points[i][k]);
-        const Transposed8 p = transpose8(row);
-        const auto point = Float8(_mm256_loadu_ps(present[i])) > Float8(0.0f);
-        for (int f = 0; f < 7; ++f)
-            store(offsetof(Rows, points) + i * sizeof(PointRows) + pointRunFields[f], simd::select(point, p.field(f), Float8(0.0f)));
-    }
+    gatherContactRuns<Float8>(block, head, points, present);
 }
 
 void deriveContactRows8(ContactBlock<8>& block, const BodyState* freeVelocities, const float (&present)[2][8], const StepContext& ctx) {
