@@ -43,41 +43,6 @@ struct Transposed8 {
     return t;
 }
 
-// Each body's state (v.x, v.y, ω, Δp.x, Δp.y, Δq.c, Δq.s, 1/m: body_lanes.hpp) as an aligned row
-// of eight floats, turned into lanes.
-[[gnu::always_inline]] inline BodyLanes<Float8> gatherBodies8(const BodyState* states, const int (&slots)[8]) {
-    static_assert(sizeof(BodyState) == 8 * sizeof(float) && alignof(BodyState) == 32);
-    __m256 row[8];
-    for (int i = 0; i < 8; ++i) row[i] = _mm256_load_ps(reinterpret_cast<const float*>(&states[slots[i]]));
-    const Transposed8 t = transpose8(row);
-    auto field = [&](int f) { return t.field(f); };
-    return {{field(0), field(1)}, field(2), {field(3), field(4)}, {field(5), field(6)}, field(7)};
-}
-
-// The velocities back: the inverse transpose of (v.x, v.y, ω, Δp.x) into each body's first four
-// floats, Δp.x as gathered (the rows leave it alone). Slot 0, the shared static body, never moves.
-[[gnu::always_inline]] inline void scatterVelocities8(BodyState* states, const int (&slots)[8], const BodyLanes<Float8>& lanes) {
-    const __m256 vxvy01 = _mm256_unpacklo_ps(lanes.v.x.v, lanes.v.y.v), vxvy23 = _mm256_unpackhi_ps(lanes.v.x.v, lanes.v.y.v);
-    const __m256 wdp01 = _mm256_unpacklo_ps(lanes.w.v, lanes.dp.x.v), wdp23 = _mm256_unpackhi_ps(lanes.w.v, lanes.dp.x.v);
-    // Row i (i < 4) of bodies i and i + 4, in the low and high halves.
-    const __m256 rows[4] = {_mm256_shuffle_ps(vxvy01, wdp01, 0x44), _mm256_shuffle_ps(vxvy01, wdp01, 0xEE),
-                            _mm256_shuffle_ps(vxvy23, wdp23, 0x44), _mm256_shuffle_ps(vxvy23, wdp23, 0xEE)};
-    for (int i = 0; i < 4; ++i) {
-        if (slots[i] != 0) _mm_storeu_ps(reinterpret_cast<float*>(&states[slots[i]]), _mm256_castps256_ps128(rows[i]));
-        if (slots[i + 4] != 0) _mm_storeu_ps(reinterpret_cast<float*>(&states[slots[i + 4]]), _mm256_extractf128_ps(rows[i], 1));
-    }
-}
-
-// The velocity change per substep from its forces of eight slots' bodies, as lanes.
-Vec2T<Float8> substepVelocityChange8(const SubstepForces* forces, const int (&slots)[8]) {
-    alignas(32) float x[8], y[8];
-    for (int lane = 0; lane < 8; ++lane) {
-        x[lane] = forces[slots[lane]].dv.x;
-        y[lane] = forces[slots[lane]].dv.y;
-    }
-    return {Float8(_mm256_load_ps(x)), Float8(_mm256_load_ps(y))};
-}
-
 }  // namespace
 
 template <>
@@ -93,9 +58,41 @@ struct ContactRuns<Float8> {
 template <>
 struct LaneBodies<Float8> {
     using Slots = int[8];
-    static BodyLanes<Float8> gather(const BodyState* states, const Slots& slots) { return gatherBodies8(states, slots); }
-    static void scatter(BodyState* states, const Slots& slots, const BodyLanes<Float8>& lanes) { scatterVelocities8(states, slots, lanes); }
-    static Vec2T<Float8> velocityChange(const SubstepForces* forces, const Slots& slots) { return substepVelocityChange8(forces, slots); }
+
+    // Each body's state (v.x, v.y, ω, Δp.x, Δp.y, Δq.c, Δq.s, 1/m: body_lanes.hpp) as an aligned
+    // row of eight floats, turned into lanes.
+    [[gnu::always_inline]] static BodyLanes<Float8> gather(const BodyState* states, const Slots& slots) {
+        static_assert(sizeof(BodyState) == 8 * sizeof(float) && alignof(BodyState) == 32);
+        __m256 row[8];
+        for (int i = 0; i < 8; ++i) row[i] = _mm256_load_ps(reinterpret_cast<const float*>(&states[slots[i]]));
+        const Transposed8 t = transpose8(row);
+        auto field = [&](int f) { return t.field(f); };
+        return {{field(0), field(1)}, field(2), {field(3), field(4)}, {field(5), field(6)}, field(7)};
+    }
+
+    // The velocities back: the inverse transpose of (v.x, v.y, ω, Δp.x) into each body's first four
+    // floats, Δp.x as gathered (the rows leave it alone). Slot 0, the shared static body, never moves.
+    [[gnu::always_inline]] static void scatter(BodyState* states, const Slots& slots, const BodyLanes<Float8>& lanes) {
+        const __m256 vxvy01 = _mm256_unpacklo_ps(lanes.v.x.v, lanes.v.y.v), vxvy23 = _mm256_unpackhi_ps(lanes.v.x.v, lanes.v.y.v);
+        const __m256 wdp01 = _mm256_unpacklo_ps(lanes.w.v, lanes.dp.x.v), wdp23 = _mm256_unpackhi_ps(lanes.w.v, lanes.dp.x.v);
+        // Row i (i < 4) of bodies i and i + 4, in the low and high halves.
+        const __m256 rows[4] = {_mm256_shuffle_ps(vxvy01, wdp01, 0x44), _mm256_shuffle_ps(vxvy01, wdp01, 0xEE),
+                                _mm256_shuffle_ps(vxvy23, wdp23, 0x44), _mm256_shuffle_ps(vxvy23, wdp23, 0xEE)};
+        for (int i = 0; i < 4; ++i) {
+            if (slots[i] != 0) _mm_storeu_ps(reinterpret_cast<float*>(&states[slots[i]]), _mm256_castps256_ps128(rows[i]));
+            if (slots[i + 4] != 0) _mm_storeu_ps(reinterpret_cast<float*>(&states[slots[i + 4]]), _mm256_extractf128_ps(rows[i], 1));
+        }
+    }
+
+    // The velocity change per substep from its forces of eight slots' bodies, as lanes.
+    static Vec2T<Float8> velocityChange(const SubstepForces* forces, const Slots& slots) {
+        alignas(32) float x[8], y[8];
+        for (int lane = 0; lane < 8; ++lane) {
+            x[lane] = forces[slots[lane]].dv.x;
+            y[lane] = forces[slots[lane]].dv.y;
+        }
+        return {Float8(_mm256_load_ps(x)), Float8(_mm256_load_ps(y))};
+    }
 };
 
 void gatherContactRows8(ContactBlock<8>& block, const float* const (&head)[8], const float* const (&points)[2][8], const float (&present)[2][8]) {
