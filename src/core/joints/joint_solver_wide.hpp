@@ -46,12 +46,7 @@ struct JointBlock {
     bool optionalRows = false;  // whether a lane's joint has rows others of its type lack
     // The row set's Rows<Float4>, field i of lane l at float 4i + l; last, so that a block reads
     // only the fields its type gathered.
-    alignas(16) float rows[rowCapacity * 4];
-
-    template <class Rows>
-    Rows& rowsAs() {
-        return *reinterpret_cast<Rows*>(rows);
-    }
+    LaneRows<4, rowCapacity> rows;
 };
 
 // What the joint store calls for a type's blocks (JointStages::lanes; null for a scalar type).
@@ -138,7 +133,7 @@ using WideRows = typename RowSet::template Rows<simd::Float4>;
 template <class RowSet>
 void gather(JointBlock& block, const std::array<const PreparedJoint*, 4>& lanes) {
     static_assert(rowFloatsOf<RowSet::template Rows>() <= JointBlock::rowCapacity, "a row set must fit: raise JointBlock::rowCapacity");
-    for (int lane = 0; lane < 4; ++lane) RowSet::gather(*lanes[lane], RowLane<4>{block.rows + lane}, block.optionalRows);
+    for (int lane = 0; lane < 4; ++lane) RowSet::gather(*lanes[lane], RowLane<4>{block.rows.data + lane}, block.optionalRows);
 }
 
 // `rows(rows, pair, block)` on each block (forBlocks, body_lanes.hpp), its bodies in lanes.
@@ -148,7 +143,7 @@ void forJointBlocks(JointBlock* blocks, int count, std::vector<BodyState>& state
         blocks, 0, count, states.data(),
         [&](JointBlock& block, BodyLanes<simd::Float4>& a, BodyLanes<simd::Float4>& b) {
             JointPairT<simd::Float4> p{a, b, block.mass};
-            rows(block.rowsAs<WideRows<RowSet>>(), p, block);
+            rows(block.rows.as<WideRows<RowSet>>(), p, block);
         },
         EveryBlock{});
 }
@@ -173,7 +168,7 @@ template <class RowSet>
 void store(const JointBlock& block, std::span<Joint> joints) {
     for (int lane = 0; lane < 4; ++lane)
         if (block.joint[lane] >= 0)
-            RowSet::store(RowLane<4, const float>{block.rows + lane}, joints[block.joint[lane]].data, block.optionalRows);
+            RowSet::store(RowLane<4, const float>{block.rows.data + lane}, joints[block.joint[lane]].data, block.optionalRows);
 }
 
 }  // namespace joint_lanes

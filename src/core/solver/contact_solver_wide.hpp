@@ -415,20 +415,20 @@ inline constexpr auto storedRowFields = [] {
 
 // N constraints of one graph colour (no two share a dynamic body) as the lanes of one row set:
 // N = 4 (simd::Float4) or, for CPUs with AVX2, 8 (Float8, contact_solver_avx2.cpp). The rows are
-// ContactRows<F> of an N-lane F, kept as floats because only the AVX2 file may name Float8.
+// ContactRows<F> of an N-lane F (LaneRows, row_lanes.hpp).
 template <std::size_t N>
 struct alignas(64) ContactBlock {
     static constexpr int lanes = static_cast<int>(N);
     int bodyA[N] = {}, bodyB[N] = {};  // solver slots; an empty lane uses the static slot 0
     RowUses uses;                      // of its lanes (rowUses): the fields after the points they read
-    alignas(32) float rows[rowFloats * N];
+    LaneRows<N, rowFloats> rows;
     int contact[N] = {};  // index in World::Impl::contacts, -1 for an empty lane (layOutBlocks); read by layout and store only
-    const float* rowData() const { return rows; }
-    float* rowData() { return rows; }
+    const float* rowData() const { return rows.data; }
+    float* rowData() { return rows.data; }
     template <class F>
     ContactRows<F>& rowsAs() {
         static_assert(sizeof(ContactRows<F>) == sizeof rows, "F must be N lanes wide");
-        return *reinterpret_cast<ContactRows<F>*>(rows);
+        return rows.template as<ContactRows<F>>();
     }
 };
 // What a pass over blocks of flat, plain contacts reads: whole cache lines, 13 of them.
@@ -461,7 +461,7 @@ struct ContactRuns<simd::Float4> {
 template <class F, std::size_t N>
 [[gnu::always_inline]] inline void gatherContactRuns(ContactBlock<N>& block, const float* const (&head)[N], const float* const (&points)[2][N],
                        const float (&present)[2][N]) {
-    auto store = [&](std::size_t offset, F value) { value.store(block.rows + offset / sizeof(float) * N); };
+    auto store = [&](std::size_t offset, F value) { value.store(block.rows.data + offset / sizeof(float) * N); };
     F fields[7];
     ContactRuns<F>::transpose(head, fields);
     for (std::size_t f = 0; f < 7; ++f) store(contactRunFields[f], fields[f]);
