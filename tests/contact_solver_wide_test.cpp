@@ -95,8 +95,8 @@ TEST(ContactSolverWide, FourLanesEqualFourScalarSolves) {
         std::vector<SubstepForces> forces(9);
         for (int i = 1; i < 9; ++i) forces[i].dv = {r(-0.02f, 0.02f), r(-0.06f, 0.0f)};
         for (int lane = 0; lane < (emptyLast ? 3 : 4); ++lane)
-            restituteContact(scalarRows[lane], scalar[bodyA[lane]], scalar[bodyB[lane]], substepVelocityChange(forces, bodyA[lane]),
-                             substepVelocityChange(forces, bodyB[lane]), ctx);
+            restituteContact(scalarRows[lane], scalar[bodyA[lane]], scalar[bodyB[lane]], LaneBodies<float>::velocityChange(forces.data(), bodyA[lane]),
+                             LaneBodies<float>::velocityChange(forces.data(), bodyB[lane]), ctx);
 
         ContactRows<simd::Float4> wide = lanes_test::lanesOf<ContactRows>(rows);
         const RowUses uses = rowUses(floatsOf(wide), 4, emptyLast ? 3 : 4);
@@ -104,18 +104,18 @@ TEST(ContactSolverWide, FourLanesEqualFourScalarSolves) {
         EXPECT_EQ(uses.conveyor || uses.elastic, !kinds.flat) << round;
         EXPECT_EQ(uses.rolling, rolls) << round;
         for (const bool useBias : {true, false}) {
-            BodyLanes<simd::Float4> a = gatherBodies(states, bodyA), b = gatherBodies(states, bodyB);
+            BodyLanes<simd::Float4> a = LaneBodies<simd::Float4>::gather(states.data(), bodyA), b = LaneBodies<simd::Float4>::gather(states.data(), bodyB);
             warmStartContact(wide, a, b, uses);
             if (useBias) solveContact<true>(wide, a, b, ctx, uses);
             else solveContact<false>(wide, a, b, ctx, uses);
-            scatterVelocities(states, bodyA, a);
-            scatterVelocities(states, bodyB, b);
+            LaneBodies<simd::Float4>::scatter(states.data(), bodyA, a);
+            LaneBodies<simd::Float4>::scatter(states.data(), bodyB, b);
         }
         if (uses.elastic) {  // as the solver: blocks without restitution skip its pass
-            BodyLanes<simd::Float4> a = gatherBodies(states, bodyA), b = gatherBodies(states, bodyB);
-            restituteContact(wide, a, b, substepVelocityChange(forces, bodyA), substepVelocityChange(forces, bodyB), ctx);
-            scatterVelocities(states, bodyA, a);
-            scatterVelocities(states, bodyB, b);
+            BodyLanes<simd::Float4> a = LaneBodies<simd::Float4>::gather(states.data(), bodyA), b = LaneBodies<simd::Float4>::gather(states.data(), bodyB);
+            restituteContact(wide, a, b, LaneBodies<simd::Float4>::velocityChange(forces.data(), bodyA), LaneBodies<simd::Float4>::velocityChange(forces.data(), bodyB), ctx);
+            LaneBodies<simd::Float4>::scatter(states.data(), bodyA, a);
+            LaneBodies<simd::Float4>::scatter(states.data(), bodyB, b);
         }
 
         for (int i = 0; i < 9; ++i) {
@@ -173,7 +173,7 @@ TEST(ContactSolverWide, DerivedRowsInFourLanesEqualFourScalarDerivations) {
         for (int lane = 0; lane < 4; ++lane)
             for (int i = 0; i < 2; ++i) present[i][lane] = i < pointCounts[lane] ? 1.0f : 0.0f;
         const simd::Float4 points[2] = {simd::Float4::load(present[0]), simd::Float4::load(present[1])};
-        deriveContactRows(wide, gatherBodies(free, bodyA), gatherBodies(free, bodyB), points, ctx);
+        deriveContactRows(wide, LaneBodies<simd::Float4>::gather(free.data(), bodyA), LaneBodies<simd::Float4>::gather(free.data(), bodyB), points, ctx);
 
         for (int lane = 0; lane < 4; ++lane) {
             const float lanePresent[2] = {present[0][lane], present[1][lane]};

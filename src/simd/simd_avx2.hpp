@@ -24,6 +24,7 @@ struct Float8 {
     explicit Float8(__m256 m) : v(m) {}
     // Lanes 0–3 from `low`, 4–7 from `high`.
     static Float8 join(__m128 low, __m128 high) { return Float8(_mm256_set_m128(high, low)); }
+    static Float8 load(const float* p) { return Float8(_mm256_loadu_ps(p)); }
     void store(float* p) const { _mm256_storeu_ps(p, v); }
 
     friend Float8 operator+(Float8 a, Float8 b) { return Float8(_mm256_add_ps(a.v, b.v)); }

@@ -46,12 +46,7 @@ struct JointBlock {
     bool optionalRows = false;  // whether a lane's joint has rows others of its type lack
     // The row set's Rows<Float4>, field i of lane l at float 4i + l; last, so that a block reads
     // only the fields its type gathered.
-    alignas(16) float rows[rowCapacity * 4];
-
-    template <class Rows>
-    Rows& rowsAs() {
-        return *reinterpret_cast<Rows*>(rows);
-    }
+    LaneRows<4, rowCapacity> rows;
 };
 
 // What the joint store calls for a type's blocks (JointStages::lanes; null for a scalar type).
@@ -138,25 +133,24 @@ using WideRows = typename RowSet::template Rows<simd::Float4>;
 template <class RowSet>
 void gather(JointBlock& block, const std::array<const PreparedJoint*, 4>& lanes) {
     static_assert(rowFloatsOf<RowSet::template Rows>() <= JointBlock::rowCapacity, "a row set must fit: raise JointBlock::rowCapacity");
-    for (int lane = 0; lane < 4; ++lane) RowSet::gather(*lanes[lane], RowLane<4>{block.rows + lane}, block.optionalRows);
+    for (int lane = 0; lane < 4; ++lane) RowSet::gather(*lanes[lane], RowLane<4>{block.rows.data + lane}, block.optionalRows);
 }
 
-// `rows(rows, pair, block)` on each block, its bodies gathered into lanes and their velocities
-// written back.
+// `rows(rows, pair, block)` on each block (forBlocks, body_lanes.hpp), its bodies in lanes.
 template <class RowSet, class Rows>
-void forBlocks(JointBlock* blocks, int count, std::vector<BodyState>& states, Rows rows) {
-    for (JointBlock* block = blocks; block != blocks + count; ++block) {
-        BodyLanes<simd::Float4> a = gatherBodies(states, block->bodyA), b = gatherBodies(states, block->bodyB);
-        JointPairT<simd::Float4> p{a, b, block->mass};
-        rows(block->rowsAs<WideRows<RowSet>>(), p, *block);
-        scatterVelocities(states, block->bodyA, a);
-        scatterVelocities(states, block->bodyB, b);
-    }
+void forJointBlocks(JointBlock* blocks, int count, std::vector<BodyState>& states, Rows rows) {
+    forBlocks<simd::Float4, 0>(
+        blocks, 0, count, states.data(),
+        [&](JointBlock& block, BodyLanes<simd::Float4>& a, BodyLanes<simd::Float4>& b) {
+            JointPairT<simd::Float4> p{a, b, block.mass};
+            rows(block.rows.as<WideRows<RowSet>>(), p, block);
+        },
+        EveryBlock{});
 }
 
 template <class RowSet>
 void warmStart(JointBlock* blocks, int count, std::vector<BodyState>& states) {
-    forBlocks<RowSet>(blocks, count, states, [](const WideRows<RowSet>& rows, JointPairT<simd::Float4>& p, const JointBlock&) {
+    forJointBlocks<RowSet>(blocks, count, states, [](const WideRows<RowSet>& rows, JointPairT<simd::Float4>& p, const JointBlock&) {
         RowSet::warmStart(rows, p);
     });
 }
@@ -164,7 +158,7 @@ void warmStart(JointBlock* blocks, int count, std::vector<BodyState>& states) {
 template <class RowSet>
 void solve(JointBlock* blocks, int count, std::vector<BodyState>& states, const std::vector<float>& stepRotation,
            const StepContext& ctx, bool useBias) {
-    forBlocks<RowSet>(blocks, count, states, [&](WideRows<RowSet>& rows, JointPairT<simd::Float4>& p, const JointBlock& block) {
+    forJointBlocks<RowSet>(blocks, count, states, [&](WideRows<RowSet>& rows, JointPairT<simd::Float4>& p, const JointBlock& block) {
         if (RowSet::usesRotation(block.optionalRows)) p.rotation = laneRotation(block, stepRotation);
         RowSet::solve(rows, p, ctx, useBias, block.optionalRows);
     });
@@ -174,7 +168,7 @@ template <class RowSet>
 void store(const JointBlock& block, std::span<Joint> joints) {
     for (int lane = 0; lane < 4; ++lane)
         if (block.joint[lane] >= 0)
-            RowSet::store(RowLane<4, const float>{block.rows + lane}, joints[block.joint[lane]].data, block.optionalRows);
+            RowSet::store(RowLane<4, const float>{block.rows.data + lane}, joints[block.joint[lane]].data, block.optionalRows);
 }
 
 }  // namespace joint_lanes

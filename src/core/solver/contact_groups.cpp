@@ -323,8 +323,8 @@ void contactGroupRows(World::Impl& w, const StepContext& ctx, RowPass pass) {
         const std::vector<SubstepForces>& forces = w.scratch.substepForces;
         for (int index : g.constraints) {
             const ContactConstraint& c = w.scratch.constraints[index];
-            restituteContact(w.scratch.constraintRows[index], w.scratch.states[c.indexA], w.scratch.states[c.indexB], substepVelocityChange(forces, c.indexA),
-                             substepVelocityChange(forces, c.indexB), ctx);
+            restituteContact(w.scratch.constraintRows[index], w.scratch.states[c.indexA], w.scratch.states[c.indexB], LaneBodies<float>::velocityChange(forces.data(), c.indexA),
+                             LaneBodies<float>::velocityChange(forces.data(), c.indexB), ctx);
         }
         return;
     }

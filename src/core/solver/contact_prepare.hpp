@@ -31,10 +31,10 @@ void prepareContactRows(const World::Impl& world, const StepContext& ctx, const 
 // derived together: lane l from constraints[l], l < used, the others zeros; present: 1 where a
 // lane's point is a manifold point. Each contact's values in a row are read as runs of four or
 // eight floats and turned into lanes.
-void gatherContactLanes(const World::Impl& world, const ContactConstraint* const (&constraints)[4], int used, ContactBlock& block,
+void gatherContactLanes(const World::Impl& world, const ContactConstraint* const (&constraints)[4], int used, ContactBlock<4>& block,
                         const float (&present)[2][4]);
 #ifdef PERPDOT_AVX2
-void gatherContactLanes(const World::Impl& world, const ContactConstraint* const (&constraints)[8], int used, ContactBlock8& block,
+void gatherContactLanes(const World::Impl& world, const ContactConstraint* const (&constraints)[8], int used, ContactBlock<8>& block,
                         const float (&present)[2][8]);
 #endif
 

@@ -26,18 +26,7 @@ BodyState velocityWithoutContact(const World::Impl& w, const StepContext& ctx, i
     return s;
 }
 
-// A contact's two runs of floats the rows take (contactRunFields, pointRunFields): a block reads
-// them four or eight contacts at a time (the point count and the largest push come along unused)
-// and turns them into lanes.
-static_assert(offsetof(Contact, restitution) == offsetof(Contact, friction) + 4 && offsetof(Contact, rollingResistance) == offsetof(Contact, friction) + 8 &&
-                  offsetof(Contact, tangentSpeed) == offsetof(Contact, friction) + 12 && offsetof(Contact, rollingImpulse) == offsetof(Contact, friction) + 16 &&
-                  offsetof(Contact, normal) == offsetof(Contact, friction) + 20 && offsetof(Contact, pointCount) == offsetof(Contact, friction) + 28,
-              "friction, restitution, rolling resistance, tangent speed | rolling impulse, normal, point count");
-static_assert(offsetof(ContactPointState, anchorB) == 8 && offsetof(ContactPointState, separation) == 16 &&
-                  offsetof(ContactPointState, normalImpulse) == 20 && offsetof(ContactPointState, tangentImpulse) == 24,
-              "anchors | separation, normal and tangent impulses, largest push");
-
-// What a contact does not hold as floats in a row: the bodies' 1/I, whether its anchors turn.
+// The Solver fields of contactRowFields (contact_solver_wide.hpp): the bodies' 1/I, whether the anchors turn.
 template <std::size_t lanes>
 void gatherOtherFields(const World::Impl& w, const ContactConstraint* const (&constraints)[lanes], const Contact* const (&contacts)[lanes],
                        int used, float* rows) {
@@ -86,36 +75,6 @@ void prepareContactRows(const World::Impl& w, const StepContext& ctx, const Cont
 
 namespace {
 
-// A block's four lanes from four contacts (an empty lane's: a contact of zeros), given whether
-// each lane's points are manifold points.
-void gatherContactQuad(const Contact* const (&contacts)[4], float* rows, const float (&present)[2][4]) {
-    using Rows = ContactRows<float>;
-    using PointRows = ContactPointRows<float>;
-    using simd::Float4;
-    auto store = [&](std::size_t offset, Float4 value) { value.store(rows + offset / sizeof(float) * 4); };
-    Float4 head[4], tail[4];
-    for (int k = 0; k < 4; ++k) {
-        head[k] = Float4::loadBytes(&contacts[k]->friction);
-        tail[k] = Float4::loadBytes(&contacts[k]->rollingImpulse);
-    }
-    simd::transpose(head);
-    simd::transpose(tail);
-    for (std::size_t f = 0; f < 7; ++f) store(contactRunFields[f], f < 4 ? head[f] : tail[f - 4]);
-    for (std::size_t i = 0; i < 2; ++i) {
-        Float4 anchors[4], values[4];
-        for (int k = 0; k < 4; ++k) {
-            anchors[k] = Float4::loadBytes(&contacts[k]->points[i].anchorA);
-            values[k] = Float4::loadBytes(&contacts[k]->points[i].separation);
-        }
-        simd::transpose(anchors);
-        simd::transpose(values);
-        // No manifold point: zeros, as gatherRows writes them.
-        const auto point = Float4::load(present[i]) > Float4(0.0f);
-        for (std::size_t f = 0; f < 7; ++f)
-            store(offsetof(Rows, points) + i * sizeof(PointRows) + pointRunFields[f], simd::select(point, f < 4 ? anchors[f] : values[f - 4], Float4(0.0f)));
-    }
-}
-
 // The lanes' contacts, or for an empty lane a contact of zeros.
 template <std::size_t lanes>
 void laneContacts(const World::Impl& w, const ContactConstraint* const (&constraints)[lanes], int used, const Contact* (&contacts)[lanes]) {
@@ -124,29 +83,42 @@ void laneContacts(const World::Impl& w, const ContactConstraint* const (&constra
         contacts[lane] = static_cast<int>(lane) < used ? &w.contactCache.contacts[constraints[lane]->contact] : &none;
 }
 
-}  // namespace
-
-void gatherContactLanes(const World::Impl& w, const ContactConstraint* const (&constraints)[4], int used, ContactBlock& block,
-                        const float (&present)[2][4]) {
-    const Contact* contacts[4];
-    laneContacts(w, constraints, used, contacts);
-    gatherContactQuad(contacts, block.rowData(), present);
-    gatherOtherFields(w, constraints, contacts, used, block.rowData());
+// The runs of a block's contacts into its lanes: gatherContactRuns at four lanes, in the AVX2 file at eight.
+void gatherRuns(ContactBlock<4>& block, const float* const (&head)[4], const float* const (&points)[2][4], const float (&present)[2][4]) {
+    gatherContactRuns<simd::Float4>(block, head, points, present);
 }
-
 #ifdef PERPDOT_AVX2
-void gatherContactLanes(const World::Impl& w, const ContactConstraint* const (&constraints)[8], int used, ContactBlock8& block,
-                        const float (&present)[2][8]) {
-    const Contact* contacts[8];
+void gatherRuns(ContactBlock<8>& block, const float* const (&head)[8], const float* const (&points)[2][8], const float (&present)[2][8]) {
+    gatherContactRows8(block, head, points, present);
+}
+#endif
+
+template <std::size_t lanes>
+void gatherLanes(const World::Impl& w, const ContactConstraint* const (&constraints)[lanes], int used, ContactBlock<lanes>& block,
+                 const float (&present)[2][lanes]) {
+    const Contact* contacts[lanes];
     laneContacts(w, constraints, used, contacts);
-    const float* head[8];
-    const float* points[2][8];
-    for (int lane = 0; lane < 8; ++lane) {
+    const float* head[lanes];
+    const float* points[2][lanes];
+    for (std::size_t lane = 0; lane < lanes; ++lane) {
         head[lane] = &contacts[lane]->friction;
         for (int i = 0; i < 2; ++i) points[i][lane] = &contacts[lane]->points[i].anchorA.x;
     }
-    gatherContactRows8(block, head, points, present);
+    gatherRuns(block, head, points, present);
     gatherOtherFields(w, constraints, contacts, used, block.rowData());
+}
+
+}  // namespace
+
+void gatherContactLanes(const World::Impl& w, const ContactConstraint* const (&constraints)[4], int used, ContactBlock<4>& block,
+                        const float (&present)[2][4]) {
+    gatherLanes(w, constraints, used, block, present);
+}
+
+#ifdef PERPDOT_AVX2
+void gatherContactLanes(const World::Impl& w, const ContactConstraint* const (&constraints)[8], int used, ContactBlock<8>& block,
+                        const float (&present)[2][8]) {
+    gatherLanes(w, constraints, used, block, present);
 }
 #endif
 

@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <type_traits>
+#include <utility>
 
 #include "core/solver/contact_prepare.hpp"
 #include "core/world/world_impl.hpp"
@@ -44,65 +45,13 @@ decltype(auto) onContactBlocks(Scratch& s, Fn fn) {
     return fn(s.contactBlocks);
 }
 
-// `rows(blockRows, a, b, slotsA, slotsB, uses)` on the blocks of [begin, end) that `needs` (all by
-// default; the bodies of those ahead asked for, prefetchBodies), or `rows(constraint, a, b, slotA,
-// slotB, RowUses{})` on every overflow constraint when overflow is set.
-template <class Rows, class Needs = bool (*)(const ContactBlock&)>
-void forContacts(World::Impl& w, int begin, int end, bool overflow, Rows rows,
-                 Needs needs = [](const ContactBlock&) { return true; }) {
-    std::vector<BodyState>& states = w.scratch.states;
-    for (int k = begin; k < end; ++k) {
-        ContactBlock& block = w.scratch.contactBlocks[k];
-        if (!needs(block)) continue;
-        if (k + bodiesAhead < end && needs(w.scratch.contactBlocks[k + bodiesAhead]))
-            prefetchBodies(states.data(), w.scratch.contactBlocks[k + bodiesAhead].bodyA, w.scratch.contactBlocks[k + bodiesAhead].bodyB);
-        BodyLanes<Float4> a = gatherBodies(states, block.bodyA);
-        BodyLanes<Float4> b = gatherBodies(states, block.bodyB);
-        rows(block.rows, a, b, block.bodyA, block.bodyB, block.uses);
-        scatterVelocities(states, block.bodyA, a);
-        scatterVelocities(states, block.bodyB, b);
-    }
-    if (!overflow) return;
-    for (int index : w.scratch.overflowConstraints) {
-        const ContactConstraint& c = w.scratch.constraints[index];
-        rows(w.scratch.constraintRows[index], states[c.indexA], states[c.indexB], c.indexA, c.indexB, RowUses{});
-    }
-}
-
-void passContacts(World::Impl& w, const StepContext& ctx, RowPass pass, int begin, int end, bool overflow) {
-    if (pass == RowPass::WarmStart)
-        forContacts(w, begin, end, overflow,
-                    [](auto& c, auto& a, auto& b, const auto&, const auto&, RowUses uses) { warmStartContact(c, a, b, uses); });
-    else if (pass == RowPass::Solve)
-        forContacts(w, begin, end, overflow,
-                    [&](auto& c, auto& a, auto& b, const auto&, const auto&, RowUses uses) { solveContact<true>(c, a, b, ctx, uses); });
-    else if (pass == RowPass::Relax)
-        forContacts(w, begin, end, overflow,
-                    [&](auto& c, auto& a, auto& b, const auto&, const auto&, RowUses uses) { solveContact<false>(c, a, b, ctx, uses); });
-    else
-        forContacts(
-            w, begin, end, overflow,
-            [&](auto& c, auto& a, auto& b, const auto& slotsA, const auto& slotsB, RowUses) {
-                const std::vector<SubstepForces>& forces = w.scratch.substepForces;
-                restituteContact(c, a, b, substepVelocityChange(forces, slotsA), substepVelocityChange(forces, slotsB), ctx);
-            },
-            [](const ContactBlock& block) { return block.uses.elastic; });
-}
-
-}  // namespace
-
-namespace {
-
-// deriveContactRows on a block's lanes: four here, eight in the AVX2 file.
-void deriveBlock(World::Impl& w, const StepContext& ctx, ContactBlock& block, const float (&present)[2][4]) {
-    const BodyLanes<Float4> a = gatherBodies(w.scratch.freeVelocities, block.bodyA);
-    const BodyLanes<Float4> b = gatherBodies(w.scratch.freeVelocities, block.bodyB);
-    const Float4 points[2] = {Float4::load(present[0]), Float4::load(present[1])};
-    deriveContactRows(block.rows, a, b, points, ctx);
+// deriveContactBlock on a block's lanes: four here, eight in the AVX2 file.
+void deriveBlock(World::Impl& w, const StepContext& ctx, ContactBlock<4>& block, const float (&present)[2][4]) {
+    deriveContactBlock<Float4>(block, w.scratch.freeVelocities.data(), present, ctx);
 }
 
 #ifdef PERPDOT_AVX2
-void deriveBlock(World::Impl& w, const StepContext& ctx, ContactBlock8& block, const float (&present)[2][8]) {
+void deriveBlock(World::Impl& w, const StepContext& ctx, ContactBlock<8>& block, const float (&present)[2][8]) {
     deriveContactRows8(block, w.scratch.freeVelocities.data(), present, ctx);
 }
 #endif
@@ -224,39 +173,57 @@ int contactBlockCount(const World::Impl& w, int color) {
 }
 
 void contactRows(World::Impl& w, const StepContext& ctx, RowPass pass, int color, int begin, int end) {
-    const int first = w.scratch.contactBlockStart[color];
+    StepScratch& s = w.scratch;
+    const int first = s.contactBlockStart[color];
 #ifdef PERPDOT_AVX2
-    if (w.scratch.contactLanes == 8)
-        return contactRows8(w.scratch.contactBlocks8.data(), first + begin, first + end, w.scratch.states.data(),
-                            w.scratch.substepForces.data(), ctx, pass);
+    if (s.contactLanes == 8)
+        return contactRows8(s.contactBlocks8.data(), first + begin, first + end, s.states.data(), s.substepForces.data(), ctx, pass);
 #endif
-    passContacts(w, ctx, pass, first + begin, first + end, false);
+    contactBlockRows<Float4>(s.contactBlocks.data(), first + begin, first + end, s.states.data(), s.substepForces.data(), ctx, pass);
 }
 
-void serialContactRows(World::Impl& w, const StepContext& ctx, RowPass pass) { passContacts(w, ctx, pass, 0, 0, true); }
+// The overflow constraints one by one, in their own rows.
+void serialContactRows(World::Impl& w, const StepContext& ctx, RowPass pass) {
+    StepScratch& s = w.scratch;
+    forPass<float>(pass, ctx, s.substepForces.data(), [&](auto rows, auto) {
+        for (int index : s.overflowConstraints) {
+            const ContactConstraint& c = s.constraints[index];
+            rows(s.constraintRows[index], s.states[c.indexA], s.states[c.indexB], c.indexA, c.indexB, RowUses{});
+        }
+    });
+}
 
 namespace {
 
-// Where the rolling impulse and point i's largest push are, in floats (as pointField, contact_solver_wide.hpp).
-constexpr std::size_t rollingField = offsetof(ContactRows<float>, rollingImpulse) / sizeof(float);
-constexpr std::size_t maxNormalField(int i) { return offsetof(ContactRows<float>, maxNormalImpulse) / sizeof(float) + static_cast<std::size_t>(i); }
+// Stored field f of a constraint's rows (a line of storedRowFields), from its lane `rows`, into
+// its contact: a contact's field where point < 0, a point field into point `point`.
+template <ContactRowField f, std::size_t lanes>
+void storeRowField(RowLane<lanes, const float> rows, Contact& contact, int point) {
+    if constexpr (f.pointStride == 0) {
+        if (point < 0) *reinterpret_cast<float*>(reinterpret_cast<char*>(&contact) + f.contact) = rows[f.row];
+    } else if (point >= 0) {
+        *reinterpret_cast<float*>(reinterpret_cast<char*>(&contact.points[point]) + f.contact) =
+            rows[f.row + static_cast<std::size_t>(point) * f.pointStride];
+    }
+}
+
+// The stored fields of a constraint's rows (storedRowFields: the accumulated impulses and each
+// point's largest push), from its lane `rows`, into its contact.
+template <std::size_t lanes>
+void storeContactRows(RowLane<lanes, const float> rows, Contact& contact) {
+    [&]<std::size_t... k>(std::index_sequence<k...>) {
+        (storeRowField<storedRowFields[k]>(rows, contact, -1), ...);
+        for (int i = 0; i < 2; ++i)
+            if (i < contact.pointCount) (storeRowField<storedRowFields[k]>(rows, contact, i), ...);
+    }(std::make_index_sequence<storedRowFields.size()>());
+}
 
 // A block's accumulated impulses straight from its lanes into its contacts.
 template <class Block>
 void storeBlockImpulses(World::Impl& w, const Block& block) {
-    const float* rows = block.rowData();
-    for (int lane = 0; lane < Block::lanes; ++lane) {
-        if (block.contact[lane] < 0) continue;
-        auto field = [&](std::size_t index) { return rows[index * Block::lanes + static_cast<std::size_t>(lane)]; };
-        Contact& contact = w.contactCache.contacts[block.contact[lane]];
-        contact.rollingImpulse = field(rollingField);
-        for (int i = 0; i < contact.pointCount; ++i) {
-            ContactPointState& stored = contact.points[i];
-            stored.normalImpulse = field(pointField(i, offsetof(ContactPointRows<float>, normalImpulse)));
-            stored.tangentImpulse = field(pointField(i, offsetof(ContactPointRows<float>, tangentImpulse)));
-            stored.maxNormalImpulse = field(maxNormalField(i));
-        }
-    }
+    for (int lane = 0; lane < Block::lanes; ++lane)
+        if (block.contact[lane] >= 0)
+            storeContactRows(RowLane<Block::lanes, const float>{block.rowData() + lane}, w.contactCache.contacts[block.contact[lane]]);
 }
 
 template <class Block>
@@ -282,15 +249,7 @@ void storeContactBlocks(World::Impl& w, int color, int begin, int end) {
 void storeContactImpulses(World::Impl& w) {
     StepScratch& s = w.scratch;
     auto storeRows = [&](int index) {
-        const ContactConstraint& c = s.constraints[index];
-        const ContactRows<float>& rows = s.constraintRows[index];
-        Contact& contact = w.contactCache.contacts[c.contact];
-        contact.rollingImpulse = rows.rollingImpulse;
-        for (int i = 0; i < c.pointCount; ++i) {
-            contact.points[i].normalImpulse = rows.points[i].normalImpulse;
-            contact.points[i].tangentImpulse = rows.points[i].tangentImpulse;
-            contact.points[i].maxNormalImpulse = rows.maxNormalImpulse[i];
-        }
+        storeContactRows(RowLane<1, const float>{floatsOf(s.constraintRows[index])}, w.contactCache.contacts[s.constraints[index].contact]);
     };
     for (int index : s.overflowConstraints) storeRows(index);
     for (int index : s.contactGroups.constraints) storeRows(index);

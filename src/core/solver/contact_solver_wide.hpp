@@ -8,11 +8,13 @@
 // a block) has zero masses and zero impulses: its rows compute like the others and apply zero.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <type_traits>
 #include <vector>
 
 #include "collide/collision.hpp"
+#include "core/contacts/contact_cache.hpp"
 #include "core/solver/body_lanes.hpp"
 #include "core/solver/row_lanes.hpp"
 
@@ -27,7 +29,7 @@ struct ContactPointRows {
 };
 
 // The fields every pass reads come first, up to the points; the others only where a lane of the
-// block uses them (RowUses). With the block's solver slots before them (ContactBlock8), a pass over
+// block uses them (RowUses). With the block's solver slots before them (ContactBlock<8>), a pass over
 // blocks of flat, plain contacts streams 13 of a block's 19 cache lines.
 template <class F>
 struct ContactRows {
@@ -300,52 +302,229 @@ void restituteContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, Vec2T
 // N floats each, in the same order: field i of lane l is float i·N + l of the rows (row_lanes.hpp).
 constexpr std::size_t rowFloats = rowFloatsOf<ContactRows>();
 
-// Where a point's field of ContactRows<float> is, in floats (memberOffset: its offsetof in
-// ContactPointRows<float>): in a block of N lanes, lane l of it is float (that index)·N + l.
-constexpr std::size_t pointField(int point, std::size_t memberOffset) {
-    return (offsetof(ContactRows<float>, points) + static_cast<std::size_t>(point) * sizeof(ContactPointRows<float>) + memberOffset) /
-           sizeof(float);
-}
-
-// Where a block's gather (gatherContactLanes, contact_prepare.hpp) puts the runs of floats it
-// reads from each contact, field by field (an offset in ContactRows<float>): the seven of the run
-// from its friction (friction, restitution, rolling resistance, tangent speed, rolling impulse,
-// normal), and the seven of the run from a point's anchor A (anchors A and B, separation, normal
-// and tangent impulses), zero where the point is not a manifold point.
-inline constexpr std::size_t contactRunFields[7] = {
-    offsetof(ContactRows<float>, friction),      offsetof(ContactRows<float>, restitution),    offsetof(ContactRows<float>, rollingResistance),
-    offsetof(ContactRows<float>, tangentSpeed),  offsetof(ContactRows<float>, rollingImpulse), offsetof(ContactRows<float>, normal),
-    offsetof(ContactRows<float>, normal) + sizeof(float)};
-inline constexpr std::size_t pointRunFields[7] = {
-    offsetof(ContactPointRows<float>, anchorA),        offsetof(ContactPointRows<float>, anchorA) + sizeof(float),
-    offsetof(ContactPointRows<float>, anchorB),        offsetof(ContactPointRows<float>, anchorB) + sizeof(float),
-    offsetof(ContactPointRows<float>, baseSeparation), offsetof(ContactPointRows<float>, normalImpulse),
-    offsetof(ContactPointRows<float>, tangentImpulse)};
-
-// Four constraints of one graph colour (no two share a dynamic body) as the lanes of one row set.
-struct ContactBlock {
-    static constexpr int lanes = 4;
-    ContactRows<simd::Float4> rows;
-    int contact[4] = {-1, -1, -1, -1};     // index in World::Impl::contacts; -1: an empty lane
-    int bodyA[4] = {}, bodyB[4] = {};      // solver slots; an empty lane uses the static slot 0
-    RowUses uses;                          // of its lanes (rowUses): the fields after the points they read
-    const float* rowData() const { return floatsOf(rows); }
-    float* rowData() { return floatsOf(rows); }
+// The one table of the contact rows' fields: where each float of ContactRows<float> comes from
+// and whether it goes back into the contact. The gathers read the runs it makes (contactRunFields,
+// pointRunFields) and the stores its stored fields (storeContactRows, contact_solver_wide.cpp);
+// everyRowFloatOnce checks at compile time that it names every float of the rows once.
+enum class RowSource : unsigned char {
+    Run,      // in one of the contact's runs of floats: from Contact::friction, or from a point's anchorA
+    Solver,   // from the solver's slots and the contact's flags (gatherOtherFields, contact_solver.cpp)
+    Derived,  // computed from the others (deriveContactRows)
+};
+struct ContactRowField {
+    std::size_t row;          // offsetof in ContactRows<float> (a point field: point 0's)
+    std::size_t floats;       // 1, or 2 for a Vec2
+    std::size_t pointStride;  // a point field: how far point 1's is from point 0's; 0 for the contact's
+    RowSource source;
+    std::size_t contact;  // offsetof in Contact (a point field: in ContactPointState) it is read from
+                          // (Run) or stored to; 0 for neither
+    bool stored;          // written back into the contact after the step (storeContactRows)
 };
 
-// Eight constraints of one colour, for CPUs with AVX2 (contact_solver_avx2.cpp): the rows are
-// ContactRows<Float8>, kept as floats here because only that file may name AVX2 types.
-struct alignas(64) ContactBlock8 {
-    static constexpr int lanes = 8;
-    int bodyA[8] = {}, bodyB[8] = {};
-    RowUses uses;
-    alignas(32) float rows[rowFloats * 8];
-    int contact[8] = {-1, -1, -1, -1, -1, -1, -1, -1};  // read by layout and store only
-    const float* rowData() const { return rows; }
-    float* rowData() { return rows; }
+namespace contact_rows {
+using R = ContactRows<float>;
+using P = ContactPointRows<float>;
+using C = Contact;
+using S = ContactPointState;
+constexpr std::size_t point = sizeof(P), each = sizeof(float);  // the strides of points[i] and of R's arrays [2]
+}  // namespace contact_rows
+
+// clang-format off
+inline constexpr ContactRowField contactRowFields[] = {
+    {offsetof(contact_rows::R, invIA),             1, 0, RowSource::Solver,  0, false},
+    {offsetof(contact_rows::R, invIB),             1, 0, RowSource::Solver,  0, false},
+    {offsetof(contact_rows::R, normal),            2, 0, RowSource::Run,     offsetof(contact_rows::C, normal), false},
+    {offsetof(contact_rows::R, friction),          1, 0, RowSource::Run,     offsetof(contact_rows::C, friction), false},
+    {offsetof(contact_rows::R, points[0].anchorA), 2, contact_rows::point, RowSource::Run, offsetof(contact_rows::S, anchorA), false},
+    {offsetof(contact_rows::R, points[0].anchorB), 2, contact_rows::point, RowSource::Run, offsetof(contact_rows::S, anchorB), false},
+    {offsetof(contact_rows::R, points[0].baseSeparation), 1, contact_rows::point, RowSource::Run, offsetof(contact_rows::S, separation), false},
+    {offsetof(contact_rows::R, points[0].normalImpulse),  1, contact_rows::point, RowSource::Run, offsetof(contact_rows::S, normalImpulse), true},
+    {offsetof(contact_rows::R, points[0].tangentImpulse), 1, contact_rows::point, RowSource::Run, offsetof(contact_rows::S, tangentImpulse), true},
+    {offsetof(contact_rows::R, points[0].normalMass),     1, contact_rows::point, RowSource::Derived, 0, false},
+    {offsetof(contact_rows::R, points[0].tangentMass),    1, contact_rows::point, RowSource::Derived, 0, false},
+    {offsetof(contact_rows::R, turnsA),            1, 0, RowSource::Solver,  0, false},
+    {offsetof(contact_rows::R, turnsB),            1, 0, RowSource::Solver,  0, false},
+    {offsetof(contact_rows::R, tangentSpeed),      1, 0, RowSource::Run,     offsetof(contact_rows::C, tangentSpeed), false},
+    {offsetof(contact_rows::R, rollingResistance), 1, 0, RowSource::Run,     offsetof(contact_rows::C, rollingResistance), false},
+    {offsetof(contact_rows::R, rollingMass),       1, 0, RowSource::Derived, 0, false},
+    {offsetof(contact_rows::R, rollingImpulse),    1, 0, RowSource::Run,     offsetof(contact_rows::C, rollingImpulse), true},
+    {offsetof(contact_rows::R, restitution),       1, 0, RowSource::Run,     offsetof(contact_rows::C, restitution), false},
+    {offsetof(contact_rows::R, maxNormalImpulse),  1, contact_rows::each, RowSource::Derived, offsetof(contact_rows::S, maxNormalImpulse), true},
+    {offsetof(contact_rows::R, relativeVelocity),  1, contact_rows::each, RowSource::Derived, 0, false},
+};
+// clang-format on
+
+// Every float of ContactRows<float> in exactly one line of contactRowFields.
+constexpr bool everyRowFloatOnce() {
+    std::size_t named[rowFloats] = {};
+    for (const ContactRowField& f : contactRowFields)
+        for (std::size_t i = 0; i < (f.pointStride != 0 ? 2 : 1); ++i)
+            for (std::size_t k = 0; k < f.floats; ++k) {
+                const std::size_t index = (f.row + i * f.pointStride) / sizeof(float) + k;
+                if (index >= rowFloats) return false;
+                ++named[index];
+            }
+    for (std::size_t count : named)
+        if (count != 1) return false;
+    return true;
+}
+static_assert(everyRowFloatOnce(), "contactRowFields must name every field of ContactRows once: give a new field its line");
+
+// A contact's runs of floats, each read four or eight contacts at a time and turned into lanes:
+// the head (from Contact::friction) and each point's (from ContactPointState::anchorA), seven
+// floats each (the eighth, the point count or the largest push, comes along unused). Run float f
+// goes to the row field at byte offset (the run's array)[f]: in ContactRows<float> for the head,
+// in ContactPointRows<float> for a point's. Every float of a run must be a Run field of the table.
+template <bool points>
+constexpr std::array<std::size_t, 7> runFields() {
+    std::array<std::size_t, 7> fields{};
+    std::array<int, 7> named{};
+    const std::size_t start = points ? offsetof(Contact, points) + offsetof(ContactPointState, anchorA) : offsetof(Contact, friction);
+    if (start + 8 * sizeof(float) > (points ? offsetof(Contact, points) + sizeof(ContactPointState) : sizeof(Contact)))
+        throw "a run of eight floats must lie inside its contact or point";
+    for (const ContactRowField& f : contactRowFields) {
+        if (f.source != RowSource::Run || (f.pointStride != 0) != points) continue;
+        const std::size_t at = points ? offsetof(Contact, points) + f.contact : f.contact;
+        for (std::size_t k = 0; k < f.floats; ++k) {
+            const std::size_t run = (at - start) / sizeof(float) + k;
+            if (at < start || run >= 7) throw "a Run field outside its run of seven floats";
+            fields[run] = (points ? f.row - offsetof(ContactRows<float>, points) : f.row) + k * sizeof(float);
+            ++named[run];
+        }
+    }
+    for (int count : named)
+        if (count != 1) throw "every float of a run must be one Run field";
+    return fields;
+}
+inline constexpr std::array<std::size_t, 7> contactRunFields = runFields<false>();
+inline constexpr std::array<std::size_t, 7> pointRunFields = runFields<true>();
+
+// The fields stored back into the contact, in order of the table.
+constexpr std::size_t storedFieldCount() {
+    std::size_t count = 0;
+    for (const ContactRowField& f : contactRowFields) count += f.stored ? 1 : 0;
+    return count;
+}
+inline constexpr auto storedRowFields = [] {
+    std::array<ContactRowField, storedFieldCount()> stored{};
+    std::size_t n = 0;
+    for (const ContactRowField& f : contactRowFields)
+        if (f.stored) stored[n++] = f;
+    return stored;
+}();
+
+// N constraints of one graph colour (no two share a dynamic body) as the lanes of one row set:
+// N = 4 (simd::Float4) or, for CPUs with AVX2, 8 (Float8, contact_solver_avx2.cpp). The rows are
+// ContactRows<F> of an N-lane F (LaneRows, row_lanes.hpp).
+template <std::size_t N>
+struct alignas(64) ContactBlock {
+    static constexpr int lanes = static_cast<int>(N);
+    int bodyA[N] = {}, bodyB[N] = {};  // solver slots; an empty lane uses the static slot 0
+    RowUses uses;                      // of its lanes (rowUses): the fields after the points they read
+    LaneRows<N, rowFloats> rows;
+    int contact[N] = {};  // index in World::Impl::contacts, -1 for an empty lane (layOutBlocks); read by layout and store only
+    const float* rowData() const { return rows.data; }
+    float* rowData() { return rows.data; }
+    template <class F>
+    ContactRows<F>& rowsAs() {
+        static_assert(sizeof(ContactRows<F>) == sizeof rows, "F must be N lanes wide");
+        return rows.template as<ContactRows<F>>();
+    }
 };
 // What a pass over blocks of flat, plain contacts reads: whole cache lines, 13 of them.
-static_assert(offsetof(ContactBlock8, rows) + offsetof(ContactRows<float>, turnsA) * 8 == 13 * 64);
+static_assert(offsetof(ContactBlock<8>, rows) + offsetof(ContactRows<float>, turnsA) * 8 == 13 * 64);
+
+// A run of seven floats of N contacts turned into lanes of F: transpose(runs, fields) sets
+// fields[f] to float f of each lane's run (runs[lane]). Float4's is here; Float8's is in the AVX2
+// file (contact_solver_avx2.cpp).
+template <class F>
+struct ContactRuns;
+
+template <>
+struct ContactRuns<simd::Float4> {
+    static void transpose(const float* const (&runs)[4], simd::Float4 (&fields)[7]) {
+        using simd::Float4;
+        Float4 head[4], tail[4];  // floats 0-3 and 4-7 of the runs
+        for (int k = 0; k < 4; ++k) {
+            head[k] = Float4::loadBytes(runs[k]);
+            tail[k] = Float4::loadBytes(reinterpret_cast<const char*>(runs[k]) + 4 * sizeof(float));
+        }
+        simd::transpose(head);
+        simd::transpose(tail);
+        for (int f = 0; f < 7; ++f) fields[f] = f < 4 ? head[f] : tail[f - 4];
+    }
+};
+
+// A block's contact values from its lanes' runs (contactRunFields, pointRunFields): head[l] is
+// lane l's contact from its friction, points[i][l] its point i from the anchor A; a point's fields
+// are zeros where present[i] is 0, as gatherRows writes them (contact_solver.cpp).
+template <class F, std::size_t N>
+[[gnu::always_inline]] inline void gatherContactRuns(ContactBlock<N>& block, const float* const (&head)[N], const float* const (&points)[2][N],
+                       const float (&present)[2][N]) {
+    auto store = [&](std::size_t offset, F value) { value.store(block.rows.data + offset / sizeof(float) * N); };
+    F fields[7];
+    ContactRuns<F>::transpose(head, fields);
+    for (std::size_t f = 0; f < 7; ++f) store(contactRunFields[f], fields[f]);
+    for (std::size_t i = 0; i < 2; ++i) {
+        ContactRuns<F>::transpose(points[i], fields);
+        const auto point = F::load(present[i]) > F(0.0f);
+        for (std::size_t f = 0; f < 7; ++f)
+            store(offsetof(ContactRows<float>, points) + i * sizeof(ContactPointRows<float>) + pointRunFields[f],
+                  simd::select(point, fields[f], F(0.0f)));
+    }
+}
+
+// One pass (RowPass) of the rows on lanes of F, handed to `loop(rows, elasticOnly)`:
+// rows(c, a, b, slotsA, slotsB, uses) runs it on one row set whose bodies are in solver slots
+// slotsA, slotsB; elasticOnly (std::true_type for restitution) says only rows with an elastic lane
+// need it. The one switch of the passes, for blocks of every width and for single constraints.
+template <class F, class Loop>
+void forPass(RowPass pass, const StepContext& ctx, const SubstepForces* forces, Loop loop) {
+    using Lanes = BodyLanes<F>;
+    switch (pass) {
+        case RowPass::WarmStart:
+            return loop([](ContactRows<F>& c, Lanes& a, Lanes& b, const auto&, const auto&, RowUses uses) { warmStartContact(c, a, b, uses); },
+                        std::false_type{});
+        case RowPass::Solve:
+            return loop([&ctx](ContactRows<F>& c, Lanes& a, Lanes& b, const auto&, const auto&,
+                               RowUses uses) { solveContact<true>(c, a, b, ctx, uses); },
+                        std::false_type{});
+        case RowPass::Relax:
+            return loop([&ctx](ContactRows<F>& c, Lanes& a, Lanes& b, const auto&, const auto&,
+                               RowUses uses) { solveContact<false>(c, a, b, ctx, uses); },
+                        std::false_type{});
+        case RowPass::Restitution:
+            return loop(
+                [&ctx, forces](ContactRows<F>& c, Lanes& a, Lanes& b, const auto& slotsA, const auto& slotsB, RowUses) {
+                    restituteContact(c, a, b, LaneBodies<F>::velocityChange(forces, slotsA), LaneBodies<F>::velocityChange(forces, slotsB), ctx);
+                },
+                std::true_type{});
+    }
+}
+
+// deriveContactRows on a block's N lanes of F at once, its bodies' velocities without contacts in
+// freeVelocities (by solver slot); present[i]: 1 where a lane's point i is a manifold point.
+template <class F, std::size_t N>
+void deriveContactBlock(ContactBlock<N>& block, const BodyState* freeVelocities, const float (&present)[2][N], const StepContext& ctx) {
+    const BodyLanes<F> a = LaneBodies<F>::gather(freeVelocities, block.bodyA);
+    const BodyLanes<F> b = LaneBodies<F>::gather(freeVelocities, block.bodyB);
+    const F points[2] = {F::load(present[0]), F::load(present[1])};
+    deriveContactRows(block.template rowsAs<F>(), a, b, points, ctx);
+}
+
+// One pass over the blocks [begin, end) of N lanes of F (forBlocks, body_lanes.hpp).
+template <class F, std::size_t N>
+void contactBlockRows(ContactBlock<N>* blocks, int begin, int end, BodyState* states, const SubstepForces* forces, const StepContext& ctx,
+                      RowPass pass) {
+    forPass<F>(pass, ctx, forces, [&](auto rows, auto elasticOnly) {
+        forBlocks<F, bodiesAhead>(
+            blocks, begin, end, states,
+            [&](ContactBlock<N>& block, BodyLanes<F>& a, BodyLanes<F>& b) {
+                rows(block.template rowsAs<F>(), a, b, block.bodyA, block.bodyB, block.uses);
+            },
+            [](const ContactBlock<N>& block) { return !decltype(elasticOnly)::value || block.uses.elastic; });
+    });
+}
 
 // The lane width of a new world's contact blocks: 8 where contactLanes8Available() (this build
 // has the AVX2 rows and the CPU runs AVX2), else 4; the environment's PERPDOT_CONTACT_LANES=4 picks 4.
@@ -353,16 +532,11 @@ bool contactLanes8Available();
 int chooseContactLanes();
 
 // The eight-lane rows (src/core/solver/avx2/contact_solver_avx2.cpp, built where PERPDOT_AVX2 is defined):
-// contactRows8 is one pass over blocks [begin, end), as contactRows is over four-lane blocks;
-// deriveContactRows8 is deriveContactRows on a block's lanes, its bodies' velocities without contacts
-// in freeVelocities (by solver slot); gatherContactRows8 writes a block's contact values, each
-// lane's from two runs of eight floats of its contact: `head` (friction, restitution, rolling
-// resistance, tangent speed, rolling impulse, normal, and the point count, unused) and `points[i]`
-// (anchor A, anchor B, separation, normal and tangent impulses, and the largest push, unused), the
-// point's fields zero where present[i] is 0 (contact_solver.cpp lays a contact out so).
-void deriveContactRows8(ContactBlock8& block, const BodyState* freeVelocities, const float (&present)[2][8], const StepContext& ctx);
-void gatherContactRows8(ContactBlock8& block, const float* const (&head)[8], const float* const (&points)[2][8], const float (&present)[2][8]);
-void contactRows8(ContactBlock8* blocks, int begin, int end, BodyState* states, const SubstepForces* forces, const StepContext& ctx,
+// contactRows8 is contactBlockRows on Float8 lanes;
+// deriveContactRows8 is deriveContactBlock on them; gatherContactRows8 is gatherContactRuns.
+void deriveContactRows8(ContactBlock<8>& block, const BodyState* freeVelocities, const float (&present)[2][8], const StepContext& ctx);
+void gatherContactRows8(ContactBlock<8>& block, const float* const (&head)[8], const float* const (&points)[2][8], const float (&present)[2][8]);
+void contactRows8(ContactBlock<8>* blocks, int begin, int end, BodyState* states, const SubstepForces* forces, const StepContext& ctx,
                   RowPass pass);
 
 }  // namespace perpdot

@@ -50,6 +50,20 @@ struct RowLane {
     }
 };
 
+// The rows of a block of N constraints (ContactBlock, JointBlock): a row set Rows<F> of an N-lane
+// F, at most `floats` floats a lane, kept as floats because only the AVX2 file may name its F, and
+// read as the row set by as<Rows>().
+template <std::size_t N, std::size_t floats>
+struct alignas(N * sizeof(float)) LaneRows {
+    float data[floats * N];
+
+    template <class Rows>
+    Rows& as() {
+        static_assert(sizeof(Rows) <= sizeof data && alignof(Rows) <= alignof(LaneRows), "a row set of N lanes must fit");
+        return *reinterpret_cast<Rows*>(data);
+    }
+};
+
 // A row set's floats, where its lanes are gathered and read.
 template <class Rows>
 float* floatsOf(Rows& rows) {

@@ -97,8 +97,8 @@ struct StepScratch {
     std::vector<std::array<int, 2>> constraintSlots;  // by constraint: its bodies' solver slots, for colouring
     GraphColoring coloring;  // one constraint graph: the colours of joints, then of `constraints` (graph_color.hpp)
     int contactLanes = chooseContactLanes();     // constraints per block: 4, or 8 with AVX2
-    std::vector<ContactBlock> contactBlocks;     // four constraints of one colour each, in colour order,
-    std::vector<ContactBlock8> contactBlocks8;   // or eight (contactLanes = 8)
+    std::vector<ContactBlock<4>> contactBlocks;   // four constraints of one colour each, in colour order,
+    std::vector<ContactBlock<8>> contactBlocks8;  // or eight (contactLanes = 8)
     ColorStarts contactBlockStart{};             // colour c is contactBlocks[start[c] .. start[c + 1])
     std::vector<int> contactColors;              // prepareContactBlocks scratch: colour and slot bucket of each constraint,
     std::vector<int> contactOrder;               // and the constraints sorted by them (graph_color.hpp),

@@ -43,109 +43,69 @@ struct Transposed8 {
     return t;
 }
 
-// Each body's state (v.x, v.y, ω, Δp.x, Δp.y, Δq.c, Δq.s, 1/m: body_lanes.hpp) as an aligned row
-// of eight floats, turned into lanes.
-[[gnu::always_inline]] inline BodyLanes<Float8> gatherBodies8(const BodyState* states, const int (&slots)[8]) {
-    static_assert(sizeof(BodyState) == 8 * sizeof(float) && alignof(BodyState) == 32);
-    __m256 row[8];
-    for (int i = 0; i < 8; ++i) row[i] = _mm256_load_ps(reinterpret_cast<const float*>(&states[slots[i]]));
-    const Transposed8 t = transpose8(row);
-    auto field = [&](int f) { return t.field(f); };
-    return {{field(0), field(1)}, field(2), {field(3), field(4)}, {field(5), field(6)}, field(7)};
-}
-
-// The velocities back: the inverse transpose of (v.x, v.y, ω, Δp.x) into each body's first four
-// floats, Δp.x as gathered (the rows leave it alone). Slot 0, the shared static body, never moves.
-[[gnu::always_inline]] inline void scatterVelocities8(BodyState* states, const int (&slots)[8], const BodyLanes<Float8>& lanes) {
-    const __m256 vxvy01 = _mm256_unpacklo_ps(lanes.v.x.v, lanes.v.y.v), vxvy23 = _mm256_unpackhi_ps(lanes.v.x.v, lanes.v.y.v);
-    const __m256 wdp01 = _mm256_unpacklo_ps(lanes.w.v, lanes.dp.x.v), wdp23 = _mm256_unpackhi_ps(lanes.w.v, lanes.dp.x.v);
-    // Row i (i < 4) of bodies i and i + 4, in the low and high halves.
-    const __m256 rows[4] = {_mm256_shuffle_ps(vxvy01, wdp01, 0x44), _mm256_shuffle_ps(vxvy01, wdp01, 0xEE),
-                            _mm256_shuffle_ps(vxvy23, wdp23, 0x44), _mm256_shuffle_ps(vxvy23, wdp23, 0xEE)};
-    for (int i = 0; i < 4; ++i) {
-        if (slots[i] != 0) _mm_storeu_ps(reinterpret_cast<float*>(&states[slots[i]]), _mm256_castps256_ps128(rows[i]));
-        if (slots[i + 4] != 0) _mm_storeu_ps(reinterpret_cast<float*>(&states[slots[i + 4]]), _mm256_extractf128_ps(rows[i], 1));
-    }
-}
-
 }  // namespace
 
-void gatherContactRows8(ContactBlock8& block, const float* const (&head)[8], const float* const (&points)[2][8], const float (&present)[2][8]) {
-    using Rows = ContactRows<float>;
-    using PointRows = ContactPointRows<float>;
-    auto store = [&](std::size_t offset, Float8 value) { _mm256_store_ps(block.rows + offset / sizeof(float) * 8, value.v); };
-    __m256 row[8];
-    for (int k = 0; k < 8; ++k) row[k] = _mm256_loadu_ps(head[k]);
-    const Transposed8 h = transpose8(row);
-    for (int f = 0; f < 7; ++f) store(contactRunFields[f], h.field(f));
-    for (std::size_t i = 0; i < 2; ++i) {
-        for (int k = 0; k < 8; ++k) row[k] = _mm256_loadu_ps(points[i][k]);
-        const Transposed8 p = transpose8(row);
-        const auto point = Float8(_mm256_loadu_ps(present[i])) > Float8(0.0f);
-        for (int f = 0; f < 7; ++f)
-            store(offsetof(Rows, points) + i * sizeof(PointRows) + pointRunFields[f], simd::select(point, p.field(f), Float8(0.0f)));
+template <>
+struct ContactRuns<Float8> {
+    static void transpose(const float* const (&runs)[8], Float8 (&fields)[7]) {
+        __m256 row[8];
+        for (int k = 0; k < 8; ++k) row[k] = _mm256_loadu_ps(runs[k]);
+        const Transposed8 t = transpose8(row);
+        for (int f = 0; f < 7; ++f) fields[f] = t.field(f);
     }
-}
+};
 
-void deriveContactRows8(ContactBlock8& block, const BodyState* freeVelocities, const float (&present)[2][8], const StepContext& ctx) {
-    const BodyLanes<Float8> a = gatherBodies8(freeVelocities, block.bodyA);
-    const BodyLanes<Float8> b = gatherBodies8(freeVelocities, block.bodyB);
-    const Float8 points[2] = {Float8(_mm256_loadu_ps(present[0])), Float8(_mm256_loadu_ps(present[1]))};
-    deriveContactRows(*reinterpret_cast<ContactRows<Float8>*>(block.rows), a, b, points, ctx);
-}
+template <>
+struct LaneBodies<Float8> {
+    using Slots = int[8];
 
-namespace {
-
-// `rows(blockRows, a, b, block)` on the blocks of [begin, end) that `needs` (all by default), the
-// bodies of those ahead asked for (prefetchBodies).
-template <class Rows, class Needs = bool (*)(const ContactBlock8&)>
-void forBlocks(ContactBlock8* blocks, int begin, int end, BodyState* states, Rows rows,
-               Needs needs = [](const ContactBlock8&) { return true; }) {
-    for (int k = begin; k < end; ++k) {
-        ContactBlock8& block = blocks[k];
-        if (!needs(block)) continue;
-        if (k + bodiesAhead < end && needs(blocks[k + bodiesAhead]))
-            prefetchBodies(states, blocks[k + bodiesAhead].bodyA, blocks[k + bodiesAhead].bodyB);
-        BodyLanes<Float8> a = gatherBodies8(states, block.bodyA);
-        BodyLanes<Float8> b = gatherBodies8(states, block.bodyB);
-        rows(*reinterpret_cast<ContactRows<Float8>*>(block.rows), a, b, block);
-        scatterVelocities8(states, block.bodyA, a);
-        scatterVelocities8(states, block.bodyB, b);
+    // Each body's state (v.x, v.y, ω, Δp.x, Δp.y, Δq.c, Δq.s, 1/m: body_lanes.hpp) as an aligned
+    // row of eight floats, turned into lanes.
+    [[gnu::always_inline]] static BodyLanes<Float8> gather(const BodyState* states, const Slots& slots) {
+        static_assert(sizeof(BodyState) == 8 * sizeof(float) && alignof(BodyState) == 32);
+        __m256 row[8];
+        for (int i = 0; i < 8; ++i) row[i] = _mm256_load_ps(reinterpret_cast<const float*>(&states[slots[i]]));
+        const Transposed8 t = transpose8(row);
+        auto field = [&](int f) { return t.field(f); };
+        return {{field(0), field(1)}, field(2), {field(3), field(4)}, {field(5), field(6)}, field(7)};
     }
-}
 
-// The velocity change per substep from its forces of eight slots' bodies, as lanes.
-Vec2T<Float8> substepVelocityChange8(const SubstepForces* forces, const int (&slots)[8]) {
-    alignas(32) float x[8], y[8];
-    for (int lane = 0; lane < 8; ++lane) {
-        x[lane] = forces[slots[lane]].dv.x;
-        y[lane] = forces[slots[lane]].dv.y;
+    // The velocities back: the inverse transpose of (v.x, v.y, ω, Δp.x) into each body's first four
+    // floats, Δp.x as gathered (the rows leave it alone). Slot 0, the shared static body, never moves.
+    [[gnu::always_inline]] static void scatter(BodyState* states, const Slots& slots, const BodyLanes<Float8>& lanes) {
+        const __m256 vxvy01 = _mm256_unpacklo_ps(lanes.v.x.v, lanes.v.y.v), vxvy23 = _mm256_unpackhi_ps(lanes.v.x.v, lanes.v.y.v);
+        const __m256 wdp01 = _mm256_unpacklo_ps(lanes.w.v, lanes.dp.x.v), wdp23 = _mm256_unpackhi_ps(lanes.w.v, lanes.dp.x.v);
+        // Row i (i < 4) of bodies i and i + 4, in the low and high halves.
+        const __m256 rows[4] = {_mm256_shuffle_ps(vxvy01, wdp01, 0x44), _mm256_shuffle_ps(vxvy01, wdp01, 0xEE),
+                                _mm256_shuffle_ps(vxvy23, wdp23, 0x44), _mm256_shuffle_ps(vxvy23, wdp23, 0xEE)};
+        for (int i = 0; i < 4; ++i) {
+            if (slots[i] != 0) _mm_storeu_ps(reinterpret_cast<float*>(&states[slots[i]]), _mm256_castps256_ps128(rows[i]));
+            if (slots[i + 4] != 0) _mm_storeu_ps(reinterpret_cast<float*>(&states[slots[i + 4]]), _mm256_extractf128_ps(rows[i], 1));
+        }
     }
-    return {Float8(_mm256_load_ps(x)), Float8(_mm256_load_ps(y))};
+
+    // The velocity change per substep from its forces of eight slots' bodies, as lanes.
+    static Vec2T<Float8> velocityChange(const SubstepForces* forces, const Slots& slots) {
+        alignas(32) float x[8], y[8];
+        for (int lane = 0; lane < 8; ++lane) {
+            x[lane] = forces[slots[lane]].dv.x;
+            y[lane] = forces[slots[lane]].dv.y;
+        }
+        return {Float8(_mm256_load_ps(x)), Float8(_mm256_load_ps(y))};
+    }
+};
+
+void gatherContactRows8(ContactBlock<8>& block, const float* const (&head)[8], const float* const (&points)[2][8], const float (&present)[2][8]) {
+    gatherContactRuns<Float8>(block, head, points, present);
 }
 
-}  // namespace
+void deriveContactRows8(ContactBlock<8>& block, const BodyState* freeVelocities, const float (&present)[2][8], const StepContext& ctx) {
+    deriveContactBlock<Float8>(block, freeVelocities, present, ctx);
+}
 
-void contactRows8(ContactBlock8* blocks, int begin, int end, BodyState* states, const SubstepForces* forces, const StepContext& ctx,
+void contactRows8(ContactBlock<8>* blocks, int begin, int end, BodyState* states, const SubstepForces* forces, const StepContext& ctx,
                   RowPass pass) {
-    using Lanes = BodyLanes<Float8>;
-    using Rows = ContactRows<Float8>;
-    if (pass == RowPass::WarmStart)
-        forBlocks(blocks, begin, end, states,
-                  [](Rows& c, Lanes& a, Lanes& b, const ContactBlock8& block) { warmStartContact(c, a, b, block.uses); });
-    else if (pass == RowPass::Solve)
-        forBlocks(blocks, begin, end, states,
-                  [&](Rows& c, Lanes& a, Lanes& b, const ContactBlock8& block) { solveContact<true>(c, a, b, ctx, block.uses); });
-    else if (pass == RowPass::Relax)
-        forBlocks(blocks, begin, end, states,
-                  [&](Rows& c, Lanes& a, Lanes& b, const ContactBlock8& block) { solveContact<false>(c, a, b, ctx, block.uses); });
-    else
-        forBlocks(
-            blocks, begin, end, states,
-            [&](Rows& c, Lanes& a, Lanes& b, const ContactBlock8& block) {
-                restituteContact(c, a, b, substepVelocityChange8(forces, block.bodyA), substepVelocityChange8(forces, block.bodyB), ctx);
-            },
-            [](const ContactBlock8& block) { return block.uses.elastic; });
+    contactBlockRows<Float8>(blocks, begin, end, states, forces, ctx, pass);
 }
 
 }  // namespace perpdot
