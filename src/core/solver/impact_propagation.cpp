@@ -53,52 +53,34 @@ bool impact(StepScratch& s, ImpactPoint& p, int sweep, const StepContext& ctx) {
     return true;
 }
 
-// visit(point) for each manifold point of constraint k if it is an elastic contact between two
-// moving bodies. A contact with a body outside the solver, static, kinematic or asleep, has
-// nothing to pass an impact on to: the restitution pass bounces it.
-template <class Visit>
-void forElasticPoints(const World::Impl& w, int k, Visit&& visit) {
-    const StepScratch& s = w.scratch;
-    const ContactConstraint& c = s.constraints[k];
-    if (c.indexA == 0 || c.indexB == 0) return;
-    if (s.states[c.indexA].invMass == 0.0f || s.states[c.indexB].invMass == 0.0f) return;
-    const Contact& contact = w.contactCache.contacts[c.contact];
-    if (contact.restitution == 0.0f) return;
-    for (int i = 0; i < c.pointCount; ++i) {
-        const ContactPointState& p = contact.points[i];
-        visit(ImpactPoint{.constraint = k,
-                          .point = i,
-                          .slotA = c.indexA,
-                          .slotB = c.indexB,
-                          .rA = p.anchorA,
-                          .rB = p.anchorB,
-                          .normal = contact.normal,
-                          .separation = p.separation,
-                          .restitution = contact.restitution,
-                          .friction = contact.friction});
-    }
-}
-
-// The first sweep, which gathers the points, in contact order, as it goes; returns the number of
-// impacts. Most steps nothing meets, so it first looks for the first constraint that does: the
-// points before it cannot meet in the sweep either (no impact has changed a velocity yet).
+// The first sweep, which finds the points as it goes: the manifold points of the step's elastic
+// contacts between two moving bodies, in contact order. A contact with a body outside the solver,
+// static, kinematic or asleep, has nothing to pass an impact on to: the restitution pass bounces
+// it. Returns the number of impacts.
 size_t firstSweep(World::Impl& w, const StepContext& ctx) {
     StepScratch& s = w.scratch;
-    const int count = static_cast<int>(s.constraints.size());
-    int first = 0;
-    for (bool meets = false; first < count; ++first) {
-        forElasticPoints(w, first, [&](const ImpactPoint& p) {
-            meets = meets || meetingSpeed(p, s.freeVelocities[p.slotA], s.freeVelocities[p.slotB], ctx) != 0.0f;
-        });
-        if (meets) break;
-    }
-    if (first == count) return 0;
     size_t impacts = 0;
-    for (int k = 0; k < count; ++k)
-        forElasticPoints(w, k, [&](const ImpactPoint& p) {
-            ImpactPoint& point = s.impacts.points.emplace_back(p);
-            if (k >= first && impact(s, point, 0, ctx)) ++impacts;
-        });
+    for (int k = 0; k < static_cast<int>(s.constraints.size()); ++k) {
+        const ContactConstraint& c = s.constraints[k];
+        if (c.indexA == 0 || c.indexB == 0) continue;
+        if (s.states[c.indexA].invMass == 0.0f || s.states[c.indexB].invMass == 0.0f) continue;
+        const Contact& contact = w.contactCache.contacts[c.contact];
+        if (contact.restitution == 0.0f) continue;
+        for (int i = 0; i < c.pointCount; ++i) {
+            const ContactPointState& p = contact.points[i];
+            ImpactPoint& point = s.impacts.points.emplace_back(ImpactPoint{.constraint = k,
+                                                                           .point = i,
+                                                                           .slotA = c.indexA,
+                                                                           .slotB = c.indexB,
+                                                                           .rA = p.anchorA,
+                                                                           .rB = p.anchorB,
+                                                                           .normal = contact.normal,
+                                                                           .separation = p.separation,
+                                                                           .restitution = contact.restitution,
+                                                                           .friction = contact.friction});
+            impacts += impact(s, point, 0, ctx) ? 1 : 0;
+        }
+    }
     return impacts;
 }
 
