@@ -16,7 +16,7 @@ struct Body {
     BodyType type = BodyType::Static;
     // Beside the pose: the narrowphase asks every contact's bodies whether they are awake, then
     // reads their poses, so these share a cache line. (A body's solver slot during a step is
-    // StepScratch::bodySlots.)
+    // SolverBodies::bodySlots.)
     bool awake = true;
     bool enabled = true;   // World::setEnabled: false keeps it out of the step and the broadphase
     int jointCount = 0;    // joints attached (maintained by the joint store); beside the type, for

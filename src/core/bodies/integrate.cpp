@@ -23,14 +23,14 @@ namespace {
 // (a turning container has thousands, most of them not touching), on the workers: a mark is only
 // ever set to 1, so two workers marking one body agree (relaxed stores).
 void markTouching(World::Impl& w) {
-    w.scratch.touchingBodies.assign(w.bodies.capacity(), 0);
+    w.scratch.bodies.touchingBodies.assign(w.bodies.capacity(), 0);
     const ContactCache& cache = w.contactCache;
     w.workers.parallelFor(cache.contacts.capacity(), 1024, [&](int begin, int end, int) {
         for (int index = begin; index < end; ++index) {
             if (cache.touchingPoints[index] == 0) continue;  // free or not touching
             const auto [bodyA, bodyB] = cache.bodiesOf[index];
-            std::atomic_ref(w.scratch.touchingBodies[bodyA]).store(1, std::memory_order_relaxed);
-            std::atomic_ref(w.scratch.touchingBodies[bodyB]).store(1, std::memory_order_relaxed);
+            std::atomic_ref(w.scratch.bodies.touchingBodies[bodyA]).store(1, std::memory_order_relaxed);
+            std::atomic_ref(w.scratch.bodies.touchingBodies[bodyB]).store(1, std::memory_order_relaxed);
         }
     });
 }
@@ -42,34 +42,34 @@ void markTouching(World::Impl& w) {
 void integrateVelocities(World::Impl& w, const StepContext& ctx) {
     markTouching(w);
     // Slot k + 1 for the k-th awake body in store order; 0 (the static slot) for the others.
-    w.scratch.bodySlots.assign(static_cast<size_t>(w.bodies.capacity()), 0);
+    w.scratch.bodies.bodySlots.assign(static_cast<size_t>(w.bodies.capacity()), 0);
     const int count = w.workers.parallelSelect(
         w.bodies.capacity(),
         [&](int i) {
             const Body& b = w.bodies[i];
             return b.alive && b.type != BodyType::Static && b.awake;
         },
-        [&](int total) { w.scratch.awakeBodies.resize(static_cast<size_t>(total)); },
+        [&](int total) { w.scratch.bodies.awakeBodies.resize(static_cast<size_t>(total)); },
         [&](int k, int i) {
-            w.scratch.awakeBodies[static_cast<size_t>(k)] = i;
-            w.scratch.bodySlots[static_cast<size_t>(i)] = k + 1;
+            w.scratch.bodies.awakeBodies[static_cast<size_t>(k)] = i;
+            w.scratch.bodies.bodySlots[static_cast<size_t>(i)] = k + 1;
         });
-    w.scratch.states.resize(static_cast<size_t>(count) + 1);
-    w.scratch.states[0] = BodyState{};
-    w.scratch.substepForces.resize(static_cast<size_t>(count) + 1);
-    w.scratch.substepForces[0] = SubstepForces{};
-    w.scratch.inverseInertias.resize(static_cast<size_t>(count) + 1);
-    w.scratch.inverseInertias[0] = 0.0f;
+    w.scratch.bodies.states.resize(static_cast<size_t>(count) + 1);
+    w.scratch.bodies.states[0] = BodyState{};
+    w.scratch.bodies.substepForces.resize(static_cast<size_t>(count) + 1);
+    w.scratch.bodies.substepForces[0] = SubstepForces{};
+    w.scratch.bodies.inverseInertias.resize(static_cast<size_t>(count) + 1);
+    w.scratch.bodies.inverseInertias[0] = 0.0f;
     w.workers.parallelFor(count, 256, [&](int begin, int end, int) {
         for (int k = begin; k < end; ++k) {
-            const int i = w.scratch.awakeBodies[k];
+            const int i = w.scratch.bodies.awakeBodies[k];
             const Body& b = w.bodies[i];
             Vec2 v = b.v;
             float omega = b.w;
             SubstepForces f;
             if (b.type == BodyType::Dynamic) {
                 const Vec2 force = (b.gravityScale * b.mass) * w.def.gravity + b.force;
-                if (b.jointCount > 0 || w.scratch.touchingBodies[i]) {
+                if (b.jointCount > 0 || w.scratch.bodies.touchingBodies[i]) {
                     f.dv = (ctx.hs * b.invMass) * force;
                     f.dw = ctx.hs * b.invInertia * b.torque;
                     f.linearDamping = 1.0f / (1.0f + ctx.hs * b.linearDamping);
@@ -82,18 +82,18 @@ void integrateVelocities(World::Impl& w, const StepContext& ctx) {
                     omega *= 1.0f / (1.0f + ctx.h * b.angularDamping);
                 }
             }
-            w.scratch.states[k + 1] = {v, omega, {}, {}, b.invMass};
-            w.scratch.substepForces[k + 1] = f;
-            w.scratch.inverseInertias[k + 1] = b.invInertia;
+            w.scratch.bodies.states[k + 1] = {v, omega, {}, {}, b.invMass};
+            w.scratch.bodies.substepForces[k + 1] = f;
+            w.scratch.bodies.inverseInertias[k + 1] = b.invInertia;
         }
     });
-    w.scratch.stepRotation.assign(w.scratch.states.size(), 0.0f);
+    w.scratch.bodies.stepRotation.assign(w.scratch.bodies.states.size(), 0.0f);
 }
 
 void applySubstepForces(World::Impl& w, int begin, int end) {
     for (int i = begin; i < end; ++i) {
-        BodyState& s = w.scratch.states[i];
-        const SubstepForces& f = w.scratch.substepForces[i];
+        BodyState& s = w.scratch.bodies.states[i];
+        const SubstepForces& f = w.scratch.bodies.substepForces[i];
         s.v = f.dv + f.linearDamping * s.v;
         s.w = f.dw + f.angularDamping * s.w;
     }
@@ -104,11 +104,11 @@ void integratePositions(World::Impl& w, const StepContext& ctx, int begin, int e
     const float maxLinearSpeed = w.def.maxLinearSpeed;
     const float maxSpin = maxAngularSpeed(ctx.invHs);
     for (int i = begin; i < end; ++i) {
-        BodyState& s = w.scratch.states[i];
+        BodyState& s = w.scratch.bodies.states[i];
         s.v = clampSpeed(s.v, maxLinearSpeed);
         s.w = clampAngularSpeed(s.w, maxSpin);
         s.dp += ctx.hs * s.v;
-        w.scratch.stepRotation[i] += ctx.hs * s.w;
+        w.scratch.bodies.stepRotation[i] += ctx.hs * s.w;
         s.dq = integrateRotation(s.dq, ctx.hs * s.w);
     }
 }
@@ -133,73 +133,73 @@ void finalizeBodies(World::Impl& w, const StepContext& ctx) {
         b.angle = a1;
         b.xf = b.derivedTransform();
     };
-    const int count = static_cast<int>(w.scratch.awakeBodies.size());
-    w.scratch.bodyMotion.resize(static_cast<size_t>(count));
-    w.scratch.stepStarts.resize(static_cast<size_t>(count));
+    const int count = static_cast<int>(w.scratch.bodies.awakeBodies.size());
+    w.scratch.bodies.bodyMotion.resize(static_cast<size_t>(count));
+    w.scratch.bodies.stepStarts.resize(static_cast<size_t>(count));
     std::atomic<bool> anyBullet{false};  // only ever set: the same for any split
     w.workers.parallelFor(count, 256, [&](int begin, int end, int) {
         for (int k = begin; k < end; ++k) {
-            Body& b = w.bodies[w.scratch.awakeBodies[k]];
+            Body& b = w.bodies[w.scratch.bodies.awakeBodies[k]];
             b.force = {};  // applied: forces last one step
             b.torque = 0.0f;
-            const BodyState& s = w.scratch.states[k + 1];
-            const float dAngle = w.scratch.stepRotation[k + 1];
+            const BodyState& s = w.scratch.bodies.states[k + 1];
+            const float dAngle = w.scratch.bodies.stepRotation[k + 1];
             if (!isFinite(s.v) || !std::isfinite(s.w) || !isFinite(s.dp) || !std::isfinite(dAngle)) {
-                w.scratch.bodyMotion[k] = NonFinite;
+                w.scratch.bodies.bodyMotion[k] = NonFinite;
                 continue;
             }
             if (b.bullet) anyBullet.store(true, std::memory_order_relaxed);
             const Vec2 c1 = b.center + s.dp;
             const float a1 = b.angle + dAngle;
-            const int index = w.scratch.awakeBodies[k];
+            const int index = w.scratch.bodies.awakeBodies[k];
             if (w.def.enableContinuous && isFast(w, index, b.center, b.angle, c1, a1)) {
                 // Swept against static shapes, which no worker moves: side by side like the rest.
                 const BodyPose start{b.center, b.angle};
-                w.scratch.stepStarts[k] = start;
+                w.scratch.bodies.stepStarts[k] = start;
                 moveTo(b, s, c1, a1);
                 if (b.bullet) {
-                    w.scratch.bodyMotion[k] = Fast;  // it waits for every other body (continuous_impacts.cpp)
+                    w.scratch.bodies.bodyMotion[k] = Fast;  // it waits for every other body (continuous_impacts.cpp)
                     continue;
                 }
                 solveContinuous(w, index, start.center, start.angle);
-                w.scratch.bodyMotion[k] = boxesInside(w, index, b.center, b.xf) ? FastInside : Fast;
+                w.scratch.bodies.bodyMotion[k] = boxesInside(w, index, b.center, b.xf) ? FastInside : Fast;
                 continue;
             }
             moveTo(b, s, c1, a1);
-            w.scratch.bodyMotion[k] = boxesInside(w, index, c1, b.xf) ? MovedInside : Moved;
+            w.scratch.bodies.bodyMotion[k] = boxesInside(w, index, c1, b.xf) ? MovedInside : Moved;
         }
     });
     for (int k = 0; k < count; ++k) {
-        if (w.scratch.bodyMotion[k] == MovedInside || w.scratch.bodyMotion[k] == FastInside) continue;  // most bodies: no more to do
-        const int index = w.scratch.awakeBodies[k];
+        if (w.scratch.bodies.bodyMotion[k] == MovedInside || w.scratch.bodies.bodyMotion[k] == FastInside) continue;  // most bodies: no more to do
+        const int index = w.scratch.bodies.awakeBodies[k];
         Body& b = w.bodies[index];
-        const BodyState& s = w.scratch.states[k + 1];
-        if (w.scratch.bodyMotion[k] == NonFinite) {
+        const BodyState& s = w.scratch.bodies.states[k + 1];
+        if (w.scratch.bodies.bodyMotion[k] == NonFinite) {
             w.freeze(index);                            // where it was before the step,
             w.synchronizeProxies(index, b.xf, {});  // perhaps outside the boxes re-fitted ahead
             continue;
         }
-        if (w.scratch.bodyMotion[k] == Moved) {
+        if (w.scratch.bodies.bodyMotion[k] == Moved) {
             refitEscaped(w, index, b.center, b.xf, s.dp);
             continue;
         }
-        if (!b.bullet) refitEscaped(w, index, b.center, b.xf, b.center - w.scratch.stepStarts[k].center);
+        if (!b.bullet) refitEscaped(w, index, b.center, b.xf, b.center - w.scratch.bodies.stepStarts[k].center);
     }
     // Bullets wait for every other body, then meet the fast ones too (continuous_impacts.cpp):
     // the fast bodies become movers, where there is a bullet.
-    w.scratch.movers.clear();
+    w.scratch.continuous.movers.clear();
     const bool listMovers = anyBullet.load(std::memory_order_relaxed);
     for (int k = 0; listMovers && k < count; ++k) {
-        if (w.scratch.bodyMotion[k] != Fast && w.scratch.bodyMotion[k] != FastInside) continue;
-        const Body& b = w.bodies[w.scratch.awakeBodies[k]];
-        const BodyPose& start = w.scratch.stepStarts[k];
-        w.scratch.movers.push_back({.body = w.scratch.awakeBodies[k], .c0 = start.center, .c1 = b.center, .a0 = start.angle,
+        if (w.scratch.bodies.bodyMotion[k] != Fast && w.scratch.bodies.bodyMotion[k] != FastInside) continue;
+        const Body& b = w.bodies[w.scratch.bodies.awakeBodies[k]];
+        const BodyPose& start = w.scratch.bodies.stepStarts[k];
+        w.scratch.continuous.movers.push_back({.body = w.scratch.bodies.awakeBodies[k], .c0 = start.center, .c1 = b.center, .a0 = start.angle,
                                     .a1 = b.angle, .v = b.v, .w = b.w, .stepStart = start.center, .fast = true});
     }
-    if (!w.scratch.movers.empty()) solveMovingImpacts(w, ctx);
+    if (!w.scratch.continuous.movers.empty()) solveMovingImpacts(w, ctx);
     // The forces of the bodies outside the solver (a body put to sleep with its forces) go too.
     for (int i = 0; i < w.bodies.capacity(); ++i) {
-        if (w.scratch.bodySlots[static_cast<size_t>(i)] != 0) continue;
+        if (w.scratch.bodies.bodySlots[static_cast<size_t>(i)] != 0) continue;
         w.bodies[i].force = {};
         w.bodies[i].torque = 0.0f;
     }

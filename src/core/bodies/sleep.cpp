@@ -22,7 +22,7 @@ void updateSleep(World::Impl& w, float h) {
     if (!w.def.enableSleep) return;
     const size_t n = w.bodies.capacity();
     bool anySleepy = false;
-    for (int i : w.scratch.awakeBodies) {
+    for (int i : w.scratch.bodies.awakeBodies) {
         Body& b = w.bodies[i];
         if (!b.allowSleep || b.w * b.w > angularSleepTolerance * angularSleepTolerance ||
             dot(b.v, b.v) > linearSleepTolerance * linearSleepTolerance) {
@@ -36,43 +36,43 @@ void updateSleep(World::Impl& w, float h) {
 
     // Every body starts as its own island, those woken after the step's integration (by a broken
     // joint) too: they are awake but not among awakeBodies, and no value of an earlier step is read.
-    w.scratch.islandParent.resize(n);
-    std::iota(w.scratch.islandParent.begin(), w.scratch.islandParent.end(), 0);
+    w.scratch.islands.parent.resize(n);
+    std::iota(w.scratch.islands.parent.begin(), w.scratch.islands.parent.end(), 0);
 
     auto joinable = [&](int body) { return w.bodies[body].type == BodyType::Dynamic && w.bodies[body].awake; };
     w.contactCache.contacts.forEachLive([&](int, const Contact& c) {
-        if (c.touching && joinable(c.bodyA) && joinable(c.bodyB)) unite(w.scratch.islandParent, c.bodyA, c.bodyB);
+        if (c.touching && joinable(c.bodyA) && joinable(c.bodyB)) unite(w.scratch.islands.parent, c.bodyA, c.bodyB);
     });
     forEachJointPair(
         w,
         [](void* context, int a, int b) {
             World::Impl& world = *static_cast<World::Impl*>(context);
             auto ok = [&](int i) { return world.bodies[i].type == BodyType::Dynamic && world.bodies[i].awake; };
-            if (ok(a) && ok(b)) unite(world.scratch.islandParent, a, b);
+            if (ok(a) && ok(b)) unite(world.scratch.islands.parent, a, b);
         },
         &w);
 
-    // The island sleeps when its least sleepy body has been still long enough. islandMinSleep and
-    // islandHead reuse the parent array's index space.
-    w.scratch.islandMinSleep.assign(n, std::numeric_limits<float>::max());
-    w.scratch.islandHead.assign(n, -1);
-    for (int i : w.scratch.awakeBodies) {
-        const int root = findRoot(w.scratch.islandParent, i);
-        w.scratch.islandMinSleep[root] = std::min(w.scratch.islandMinSleep[root], w.bodies[i].sleepTime);
+    // The island sleeps when its least sleepy body has been still long enough. islands.minSleep and
+    // islands.head reuse the parent array's index space.
+    w.scratch.islands.minSleep.assign(n, std::numeric_limits<float>::max());
+    w.scratch.islands.head.assign(n, -1);
+    for (int i : w.scratch.bodies.awakeBodies) {
+        const int root = findRoot(w.scratch.islands.parent, i);
+        w.scratch.islands.minSleep[root] = std::min(w.scratch.islands.minSleep[root], w.bodies[i].sleepTime);
     }
-    for (int i : w.scratch.awakeBodies) {
-        const int root = findRoot(w.scratch.islandParent, i);
-        if (w.scratch.islandMinSleep[root] < timeToSleep) continue;
+    for (int i : w.scratch.bodies.awakeBodies) {
+        const int root = findRoot(w.scratch.islands.parent, i);
+        if (w.scratch.islands.minSleep[root] < timeToSleep) continue;
         Body& b = w.bodies[i];
         b.awake = false;
         b.v = {};
         b.w = 0.0f;
         // Thread the island into a ring so that waking any member wakes all.
-        if (w.scratch.islandHead[root] < 0) {
-            w.scratch.islandHead[root] = i;
+        if (w.scratch.islands.head[root] < 0) {
+            w.scratch.islands.head[root] = i;
             b.islandNext = i;
         } else {
-            Body& head = w.bodies[w.scratch.islandHead[root]];
+            Body& head = w.bodies[w.scratch.islands.head[root]];
             b.islandNext = head.islandNext;
             head.islandNext = i;
         }

@@ -87,9 +87,9 @@ void applyImpulse(Mover& a, const Body& ba, Mover& b, const Body& bb, const Impa
 // Movers and pairs: the fast movers are in `movers` already; the bodies their swept boxes meet
 // are added, and every pair with a bullet in it is listed once.
 void collectMoverPairs(World::Impl& w) {
-    std::vector<Mover>& movers = w.scratch.movers;
-    std::vector<MoverPair>& moverPairs = w.scratch.moverPairs;
-    std::vector<int>& moverOfBody = w.scratch.moverOfBody;
+    std::vector<Mover>& movers = w.scratch.continuous.movers;
+    std::vector<MoverPair>& moverPairs = w.scratch.continuous.pairs;
+    std::vector<int>& moverOfBody = w.scratch.continuous.moverOfBody;
     moverPairs.clear();
     moverOfBody.assign(w.bodies.capacity(), -1);
     const int fastCount = static_cast<int>(movers.size());
@@ -119,10 +119,10 @@ void collectMoverPairs(World::Impl& w) {
             int m = moverOfBody[other];
             if (m >= 0 && m < fastCount) return true;  // fast against fast: below
             if (m < 0) {
-                const int slot = w.scratch.bodySlots[other];
-                const BodyState& s = w.scratch.states[slot];  // slot 0 (asleep): no motion
+                const int slot = w.scratch.bodies.bodySlots[other];
+                const BodyState& s = w.scratch.bodies.states[slot];  // slot 0 (asleep): no motion
                 const Vec2 c0 = o.center - s.dp;
-                const float a0 = o.angle - w.scratch.stepRotation[slot];
+                const float a0 = o.angle - w.scratch.bodies.stepRotation[slot];
                 m = static_cast<int>(movers.size());
                 movers.push_back({.body = other, .c0 = c0, .c1 = o.center, .a0 = a0, .a1 = o.angle, .v = o.v,
                                   .w = o.w, .stepStart = c0});
@@ -145,7 +145,7 @@ void collectMoverPairs(World::Impl& w) {
 
 // The pair's first time of impact after step time t (1: none), and the children that meet.
 void pairImpact(const World::Impl& w, MoverPair& pair, float t) {
-    const std::vector<Mover>& movers = w.scratch.movers;
+    const std::vector<Mover>& movers = w.scratch.continuous.movers;
     const Mover& a = movers[pair.a];
     const Mover& b = movers[pair.b];
     const Body& ba = w.bodies[a.body];
@@ -185,7 +185,7 @@ void pairImpact(const World::Impl& w, MoverPair& pair, float t) {
 // moved back to first touch, and new paths for the rest of the step.
 void resolveImpact(World::Impl& w, const MoverPair& pair, float t, const StepContext& ctx) {
     const float h = ctx.h;
-    std::vector<Mover>& movers = w.scratch.movers;
+    std::vector<Mover>& movers = w.scratch.continuous.movers;
     Mover& a = movers[pair.a];
     Mover& b = movers[pair.b];
     const Body& ba = w.bodies[a.body];
@@ -271,8 +271,8 @@ void resolveImpact(World::Impl& w, const MoverPair& pair, float t, const StepCon
 
 void solveMovingImpacts(World::Impl& w, const StepContext& ctx) {
     collectMoverPairs(w);
-    std::vector<Mover>& movers = w.scratch.movers;
-    std::vector<MoverPair>& moverPairs = w.scratch.moverPairs;
+    std::vector<Mover>& movers = w.scratch.continuous.movers;
+    std::vector<MoverPair>& moverPairs = w.scratch.continuous.pairs;
     for (Mover& m : movers) m.sweepStatic = m.fast && w.bodies[m.body].bullet;  // the others were swept already
     float now = 0.0f;
     const int maxImpacts = impactsPerMover * static_cast<int>(movers.size() + moverPairs.size());

@@ -110,8 +110,8 @@ void prepareJoint(PreparedJoint& j, const World::Impl& w, const Joint& joint, co
     const Body& b = w.bodies[joint.bodyB];
     j.type = joint.type;
     j.data = joint.data;
-    j.indexA = w.scratch.bodySlots[joint.bodyA];
-    j.indexB = w.scratch.bodySlots[joint.bodyB];
+    j.indexA = w.scratch.bodies.bodySlots[joint.bodyA];
+    j.indexB = w.scratch.bodies.bodySlots[joint.bodyB];
     // A body outside the solver (static, or held asleep) is immovable for this step.
     j.mass = {j.indexA ? a.invMass : 0.0f, j.indexA ? a.invInertia : 0.0f, j.indexB ? b.invMass : 0.0f,
               j.indexB ? b.invInertia : 0.0f};
@@ -142,7 +142,7 @@ JointKey keyOf(const PreparedJoint& j) {
 template <class Wide, class Scalar>
 void forJointUnits(World::Impl& w, int color, int begin, int end, Wide wide, Scalar scalar) {
     JointScratch& d = jointScratch(w);
-    std::vector<BodyState>& states = w.scratch.states;
+    std::vector<BodyState>& states = w.scratch.bodies.states;
     const int blocks = d.blockStart[color + 1] - d.blockStart[color];
     JointBlock* colorBlocks = d.blocks.data() + d.blockStart[color];
     for (int unit = begin, last = std::min(end, blocks); unit < last;) {
@@ -156,7 +156,7 @@ void forJointUnits(World::Impl& w, int color, int begin, int end, Wide wide, Sca
     for (int unit = std::max(begin, blocks); unit < end; ++unit) {
         PreparedJoint& j = d.prepared[d.scalarOrder[d.scalarStart[color] + unit - blocks]];
         JointPair p = pairOf(j.indexA == 0 ? fixed : states[j.indexA], j.indexB == 0 ? fixed : states[j.indexB],
-                             w.scratch.stepRotation, j);
+                             w.scratch.bodies.stepRotation, j);
         scalar(j, p);
     }
 }
@@ -164,7 +164,7 @@ void forJointUnits(World::Impl& w, int color, int begin, int end, Wide wide, Sca
 }  // namespace
 
 void jointRows(World::Impl& w, const StepContext& ctx, RowPass pass, int color, int begin, int end) {
-    std::vector<BodyState>& states = w.scratch.states;
+    std::vector<BodyState>& states = w.scratch.bodies.states;
     if (pass == RowPass::WarmStart) {
         forJointUnits(
             w, color, begin, end,
@@ -173,7 +173,7 @@ void jointRows(World::Impl& w, const StepContext& ctx, RowPass pass, int color, 
         return;
     }
     const bool useBias = pass == RowPass::Solve;
-    const std::vector<float>& stepRotation = w.scratch.stepRotation;
+    const std::vector<float>& stepRotation = w.scratch.bodies.stepRotation;
     JointScratch& d = jointScratch(w);
     forJointUnits(
         w, color, begin, end,
@@ -213,7 +213,7 @@ void prepareJoints(World::Impl& w, const StepContext& ctx) {
     s.invHs = ctx.invHs;
     auto awake = [&](int index) {
         const Joint& joint = s.joints[index];
-        return joint.alive && (w.scratch.bodySlots[joint.bodyA] != 0 || w.scratch.bodySlots[joint.bodyB] != 0) &&
+        return joint.alive && (w.scratch.bodies.bodySlots[joint.bodyA] != 0 || w.scratch.bodies.bodySlots[joint.bodyB] != 0) &&
                w.bodies[joint.bodyA].enabled && w.bodies[joint.bodyB].enabled;  // World::setEnabled
     };
     // prepareJoint writes every field, so last step's elements are reused as they are.
@@ -246,10 +246,10 @@ void colorJoints(World::Impl& w, const StepContext& ctx) {
     // One colouring for joints and contacts (the constraint graph): joints first, contacts then
     // take the colours their bodies' joints left (prepareContactBlocks).
     GraphColoring& coloring = w.scratch.coloring;
-    coloring.reset(static_cast<int>(w.scratch.states.size()));
+    coloring.reset(static_cast<int>(w.scratch.bodies.states.size()));
     // Joints of revolute trees take no colour: they are solved directly (joint_tree.hpp).
-    findRevoluteTrees(d.trees, d.keys, static_cast<int>(w.scratch.states.size()));
-    stiffenRevoluteTrees(d.trees, d.prepared, ctx.hs, static_cast<int>(w.scratch.states.size()));
+    findRevoluteTrees(d.trees, d.keys, static_cast<int>(w.scratch.bodies.states.size()));
+    stiffenRevoluteTrees(d.trees, d.prepared, ctx.hs, static_cast<int>(w.scratch.bodies.states.size()));
     // Lanes by colour and type: those of joints with the type's rows alone, and of joints with
     // optional rows (a motor, a limit).
     constexpr int types = jointTypeCount;

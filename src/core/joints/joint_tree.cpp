@@ -105,7 +105,7 @@ void findRevoluteTrees(RevoluteTrees& t, const std::vector<JointKey>& keys, int 
 
 void warmStartRevoluteTrees(World::Impl& w, RevoluteTrees& t, std::vector<PreparedJoint>& prepared) {
     for (int k : t.joints) {
-        JointPair p = pairOf(w.scratch.states, w.scratch.stepRotation, prepared[k]);
+        JointPair p = pairOf(w.scratch.bodies.states, w.scratch.bodies.stepRotation, prepared[k]);
         warmStartRevolute(prepared[k], p);
     }
 }
@@ -123,7 +123,7 @@ int assemble(World::Impl& w, RevoluteTrees& t, const std::vector<PreparedJoint>&
     t.rB.resize(joints);
     for (int i = 0; i < joints; ++i) {
         const PreparedJoint& j = prepared[t.joints[first + i]];
-        const JointPair p = pairOf(w.scratch.states, w.scratch.stepRotation, j);
+        const JointPair p = pairOf(w.scratch.bodies.states, w.scratch.bodies.stepRotation, j);
         const JointFrame f = currentFrame(j, p);
         t.rA[i] = f.rA;
         t.rB[i] = f.rB;
@@ -155,10 +155,10 @@ Vec2 lambdaOf(const std::vector<double>& x, int i) { return {static_cast<float>(
 // Moves a body's solver state by a position impulse P at arm r: Δc = P/m, Δθ = perpDot(r, P)/I.
 void displace(World::Impl& w, int slot, float invMass, float invInertia, Vec2 r, Vec2 P) {
     if (slot == 0) return;
-    BodyState& s = w.scratch.states[slot];
+    BodyState& s = w.scratch.bodies.states[slot];
     const float dAngle = invInertia * perpDot(r, P);
     s.dp += invMass * P;
-    w.scratch.stepRotation[slot] += dAngle;
+    w.scratch.bodies.stepRotation[slot] += dAngle;
     s.dq = integrateRotation(s.dq, dAngle);
 }
 
@@ -174,7 +174,7 @@ void solveRevoluteTrees(World::Impl& w, RevoluteTrees& t, std::vector<PreparedJo
         for (int i = 0; i < joints; ++i) {
             PreparedJoint& j = prepared[t.joints[first + i]];
             if (pointRowsOnly(j)) continue;
-            JointPair p = pairOf(w.scratch.states, w.scratch.stepRotation, j);
+            JointPair p = pairOf(w.scratch.bodies.states, w.scratch.bodies.stepRotation, j);
             solveRevoluteAngleRows(j, p, ctx, useBias);
         }
         const int n = assemble(w, t, prepared, tree, [&](const JointPair& p, const JointFrame& f) {
@@ -183,7 +183,7 @@ void solveRevoluteTrees(World::Impl& w, RevoluteTrees& t, std::vector<PreparedJo
         if (!choleskyFactor(t.K.data(), n)) {  // the point rows joint by joint
             for (int i = 0; i < joints; ++i) {
                 PreparedJoint& j = prepared[t.joints[first + i]];
-                JointPair p = pairOf(w.scratch.states, w.scratch.stepRotation, j);
+                JointPair p = pairOf(w.scratch.bodies.states, w.scratch.bodies.stepRotation, j);
                 const JointFrame f = currentFrame(j, p);
                 solvePointRows(p, f.rA, f.rB, f.d, soft, j.data.as<RevoluteJoint>().linearImpulse);
             }
@@ -202,7 +202,7 @@ void solveRevoluteTrees(World::Impl& w, RevoluteTrees& t, std::vector<PreparedJo
         }
         for (int i = 0; i < joints; ++i) {
             const PreparedJoint& j = prepared[t.joints[first + i]];
-            JointPair p = pairOf(w.scratch.states, w.scratch.stepRotation, j);
+            JointPair p = pairOf(w.scratch.bodies.states, w.scratch.bodies.stepRotation, j);
             applyPoint(p, t.rA[i], t.rB[i], lambdaOf(t.x, i));
         }
     }

@@ -111,12 +111,12 @@ void planInPlaceMove(World::Impl& w, int body, PredictedPose& p, const SoleBox& 
 void refitPredicted(int, int, int, void* world) {
     World::Impl& w = *static_cast<World::Impl*>(world);
     releaseApartContacts(w);
-    const std::vector<PredictedPose>& poses = w.scratch.predictedPoses;
+    const std::vector<PredictedPose>& poses = w.scratch.bodies.predictedPoses;
     for (size_t k = 0; k < poses.size(); ++k) {
         const PredictedPose& p = poses[k];
         if (!p.refit) continue;
         if (p.inPlace.proxy >= 0) w.moveInPlace(p.inPlace.proxy, p.inPlace.fat);
-        else refitEscaped(w, w.scratch.awakeBodies[k], p.center, p.xf, p.displacement);
+        else refitEscaped(w, w.scratch.bodies.awakeBodies[k], p.center, p.xf, p.displacement);
     }
     // A worn tree is built anew here too, beside the solver rather than before the next queries.
     w.collision.rebuildTreeIfWorn();
@@ -133,15 +133,15 @@ void refitEscaped(World::Impl& w, int body, Vec2 center, const Transform& xf, Ve
 }
 
 void startTreeRefit(World::Impl& w, const StepContext& ctx) {
-    const int count = static_cast<int>(w.scratch.awakeBodies.size());
-    w.scratch.predictedPoses.resize(static_cast<size_t>(count));
+    const int count = static_cast<int>(w.scratch.bodies.awakeBodies.size());
+    w.scratch.bodies.predictedPoses.resize(static_cast<size_t>(count));
     w.boxRooms.resize(static_cast<size_t>(w.bodies.capacity()));
     w.workers.parallelFor(count, 256, [&](int begin, int end, int) {
         for (int k = begin; k < end; ++k) {
-            const int index = w.scratch.awakeBodies[k];
+            const int index = w.scratch.bodies.awakeBodies[k];
             const Body& b = w.bodies[index];
-            const BodyState& s = w.scratch.states[k + 1];
-            PredictedPose& p = w.scratch.predictedPoses[k];
+            const BodyState& s = w.scratch.bodies.states[k + 1];
+            PredictedPose& p = w.scratch.bodies.predictedPoses[k];
             p.displacement = ctx.h * s.v;
             const float turn = ctx.h * s.w;
             p.refit = false;

@@ -37,7 +37,7 @@ struct RowSide {
 std::array<RowSide, 2> sidesOf(const World::Impl& w, const ContactConstraint& c, const ContactRows<float>& rows,
                                const ContactPointRows<float>& cp) {
     const Vec2 n = rows.normal;
-    const RowMasses m = rowMasses(w.scratch, c.indexA, c.indexB);
+    const RowMasses m = rowMasses(w.scratch.bodies, c.indexA, c.indexB);
     return {RowSide{c.indexA, -n, -perpDot(cp.anchorA, n), m.invMassA, m.invIA},
             RowSide{c.indexB, n, perpDot(cp.anchorB, n), m.invMassB, m.invIB}};
 }
@@ -59,8 +59,8 @@ bool assemble(World::Impl& w, ContactGroups& g, int group) {
     double* L = &g.L[g.matrixStart[group]];
     auto sides = [&](int row) {
         const auto [k, i] = g.rows[first + row];
-        const ContactRows<float>& rows = w.scratch.constraintRows[k];
-        return sidesOf(w, w.scratch.constraints[k], rows, rows.points[i]);
+        const ContactRows<float>& rows = w.scratch.contacts.constraintRows[k];
+        return sidesOf(w, w.scratch.contacts.constraints[k], rows, rows.points[i]);
     };
     for (int r = 0; r < n; ++r) {
         const std::array<RowSide, 2> sr = sides(r);
@@ -73,7 +73,7 @@ bool assemble(World::Impl& w, ContactGroups& g, int group) {
 
 // Whether this step's constraints join the same slots with the same point counts, and the slots
 // have the same kinds, as when remember last ran.
-bool sameAsLastStep(const StepScratch& s, const ContactGroups& g) {
+bool sameAsLastStep(const ContactScratch& s, const ContactGroups& g) {
     auto same = [](const auto& a, const auto& b) {  // one memcmp, not one per element
         return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])) == 0);
     };
@@ -83,7 +83,7 @@ bool sameAsLastStep(const StepScratch& s, const ContactGroups& g) {
     return true;
 }
 
-void remember(const StepScratch& s, ContactGroups& g, bool noneSmall) {
+void remember(const ContactScratch& s, ContactGroups& g, bool noneSmall) {
     g.lastSlots = s.constraintSlots;
     g.lastKind = g.kind;
     g.lastPointCounts.resize(s.constraints.size());
@@ -94,9 +94,9 @@ void remember(const StepScratch& s, ContactGroups& g, bool noneSmall) {
 }  // namespace
 
 void findContactGroups(World::Impl& w, const StepContext& ctx) {
-    ContactGroups& g = w.scratch.contactGroups;
-    const int slots = static_cast<int>(w.scratch.states.size());
-    const int count = static_cast<int>(w.scratch.constraints.size());
+    ContactGroups& g = w.scratch.contacts.groups;
+    const int slots = static_cast<int>(w.scratch.bodies.states.size());
+    const int count = static_cast<int>(w.scratch.contacts.constraints.size());
     g.direct.assign(static_cast<size_t>(count), 0);
     g.constraints.clear();
     g.start.assign(1, 0);
@@ -108,7 +108,7 @@ void findContactGroups(World::Impl& w, const StepContext& ctx) {
     // From the contact: the rows are prepared once the groups are known (contact_prepare.hpp).
     auto loaded = [&](const ContactConstraint& c) {
         const Contact& contact = w.contactCache.contacts[c.contact];
-        const RowMasses m = rowMasses(w.scratch, c.indexA, c.indexB);
+        const RowMasses m = rowMasses(w.scratch.bodies, c.indexA, c.indexB);
         for (int i = 0; i < c.pointCount; ++i) {
             const ContactPointState& p = contact.points[i];
             const float normalMass = effectiveMass<float>(m, p.anchorA, p.anchorB, contact.normal);
@@ -116,7 +116,7 @@ void findContactGroups(World::Impl& w, const StepContext& ctx) {
         }
         return false;
     };
-    if (!(loadImpulse > 0.0f) || std::none_of(w.scratch.constraints.begin(), w.scratch.constraints.end(), loaded)) return;
+    if (!(loadImpulse > 0.0f) || std::none_of(w.scratch.contacts.constraints.begin(), w.scratch.contacts.constraints.end(), loaded)) return;
 
     // Each solver slot's kind: Fixed (the static slot, kinematic bodies: they join nothing),
     // Free (dynamic), Jointed (dynamic with joints: its joint rows stay sequential between the
@@ -124,12 +124,12 @@ void findContactGroups(World::Impl& w, const StepContext& ctx) {
     g.kind.resize(static_cast<size_t>(slots));
     g.kind[0] = Fixed;
     for (int k = 1; k < slots; ++k) {
-        const Body& b = w.bodies[w.scratch.awakeBodies[k - 1]];
+        const Body& b = w.bodies[w.scratch.bodies.awakeBodies[k - 1]];
         g.kind[k] = b.type != BodyType::Dynamic ? Fixed : b.jointCount > 0 ? Jointed : Free;
     }
     // A settled pile keeps its constraints from step to step: with last step's slots, point counts
     // and kinds, the groups are last step's, and if none was small enough then, none is now.
-    if (g.noneSmall && sameAsLastStep(w.scratch, g)) return;
+    if (g.noneSmall && sameAsLastStep(w.scratch.contacts, g)) return;
 
     // Join the slots the constraints couple, and count each constraint's rows at its slot (its
     // dynamic one; a slot that moves nothing stays its own root), 2 in `loaded` if it is jointed.
@@ -138,14 +138,14 @@ void findContactGroups(World::Impl& w, const StepContext& ctx) {
     g.rowCount.assign(static_cast<size_t>(slots), 0);
     g.loaded.assign(static_cast<size_t>(slots), 0);
     auto slotOf = [&](int k) {
-        const auto [a, b] = w.scratch.constraintSlots[k];
+        const auto [a, b] = w.scratch.contacts.constraintSlots[k];
         return g.kind[a] != Fixed ? a : b;
     };
     for (int k = 0; k < count; ++k) {
-        const auto [a, b] = w.scratch.constraintSlots[k];
+        const auto [a, b] = w.scratch.contacts.constraintSlots[k];
         if (g.kind[a] != Fixed && g.kind[b] != Fixed) unite(g.root, a, b);
         const int slot = slotOf(k);
-        g.rowCount[slot] += w.scratch.constraints[k].pointCount;
+        g.rowCount[slot] += w.scratch.contacts.constraints[k].pointCount;
         if (g.kind[a] == Jointed || g.kind[b] == Jointed) g.loaded[slot] = 2;
     }
     // unite keeps the smaller slot as the root, so every parent precedes its child: one sweep in
@@ -159,12 +159,12 @@ void findContactGroups(World::Impl& w, const StepContext& ctx) {
     bool small = false;  // a group, not jointed, with no more rows than a group may have
     for (int k = 0; k < slots; ++k)
         small = small || (g.root[k] == k && g.loaded[k] == 0 && g.rowCount[k] > 0 && g.rowCount[k] <= ContactGroups::maxRows);
-    remember(w.scratch, g, !small);
+    remember(w.scratch.contacts, g, !small);
     if (!small) return;  // a settled pile: one group, too large
     // Per small root: whether one of its rows is loaded (1); larger groups are never direct.
     for (int k = 0; k < count; ++k) {
         const int root = g.root[slotOf(k)];
-        if (g.loaded[root] == 0 && g.rowCount[root] <= ContactGroups::maxRows && loaded(w.scratch.constraints[k])) g.loaded[root] = 1;
+        if (g.loaded[root] == 0 && g.rowCount[root] <= ContactGroups::maxRows && loaded(w.scratch.contacts.constraints[k])) g.loaded[root] = 1;
     }
 
     // Groups in the order of their first constraint while the step's rows last; the constraints of
@@ -193,12 +193,12 @@ void findContactGroups(World::Impl& w, const StepContext& ctx) {
         if (const int group = groupOf(k); group >= 0) g.constraints[g.start[group] + g.rowCount[group]++] = k;
 
     // Each group's rows, K and factor; a group whose K does not factor stays with the sequential rows.
-    for (int k : g.constraints) prepareContactRows(w, ctx, w.scratch.constraints[k], w.scratch.constraintRows[k]);
+    for (int k : g.constraints) prepareContactRows(w, ctx, w.scratch.contacts.constraints[k], w.scratch.contacts.constraintRows[k]);
     int kept = 0;
     for (int group = 0; group < groups; ++group) {
         const int rowsBefore = static_cast<int>(g.rows.size());
         for (int s = g.start[group]; s < g.start[group + 1]; ++s)
-            for (int i = 0; i < w.scratch.constraints[g.constraints[s]].pointCount; ++i) g.rows.push_back({g.constraints[s], i});
+            for (int i = 0; i < w.scratch.contacts.constraints[g.constraints[s]].pointCount; ++i) g.rows.push_back({g.constraints[s], i});
         const int n = static_cast<int>(g.rows.size()) - rowsBefore;
         g.rowStart.push_back(static_cast<int>(g.rows.size()));
         g.matrixStart.push_back(g.matrixStart.back() + static_cast<size_t>(n) * n);
@@ -280,13 +280,13 @@ bool solveGroupNormals(World::Impl& w, ContactGroups& g, int group, const StepCo
     const double* K = &g.K[g.matrixStart[group]];
     const double* L = &g.L[g.matrixStart[group]];
     const Softness& soft = ctx.contactSoftness;  // one softness for all rows: the rest state C = K F / ω²
-    for (int r = 0; r < n; ++r) g.lambda[r] = w.scratch.constraintRows[g.rows[first + r][0]].points[g.rows[first + r][1]].normalImpulse;
+    for (int r = 0; r < n; ++r) g.lambda[r] = w.scratch.contacts.constraintRows[g.rows[first + r][0]].points[g.rows[first + r][1]].normalImpulse;
     for (int r = 0; r < n; ++r) {
         const auto [k, i] = g.rows[first + r];
-        const ContactConstraint& c = w.scratch.constraints[k];
-        const ContactRows<float>& rows = w.scratch.constraintRows[k];
+        const ContactConstraint& c = w.scratch.contacts.constraints[k];
+        const ContactRows<float>& rows = w.scratch.contacts.constraintRows[k];
         const ContactPointRows<float>& cp = rows.points[i];
-        const BodyState &a = w.scratch.states[c.indexA], &b = w.scratch.states[c.indexB];
+        const BodyState &a = w.scratch.bodies.states[c.indexA], &b = w.scratch.bodies.states[c.indexB];
         const float s = currentSeparation(rows, cp, a, b);
         const float vn = dot(relativeVelocity(a, b, cp.anchorA, cp.anchorB), rows.normal);
         if (s > 0.0f) {
@@ -303,14 +303,14 @@ bool solveGroupNormals(World::Impl& w, ContactGroups& g, int group, const StepCo
     if (!solveComplementarity(g, n, K, L)) return false;
     for (int r = 0; r < n; ++r) {
         const auto [k, i] = g.rows[first + r];
-        const ContactConstraint& c = w.scratch.constraints[k];
-        ContactRows<float>& rows = w.scratch.constraintRows[k];
+        const ContactConstraint& c = w.scratch.contacts.constraints[k];
+        ContactRows<float>& rows = w.scratch.contacts.constraintRows[k];
         ContactPointRows<float>& cp = rows.points[i];
         const float newImpulse = std::max(cp.normalImpulse + static_cast<float>(g.x[r]), 0.0f);
         const float impulse = newImpulse - cp.normalImpulse;
         cp.normalImpulse = newImpulse;
         recordPush(rows, i, impulse, ctx);
-        applyImpulse(rows, w.scratch.states[c.indexA], w.scratch.states[c.indexB], cp.anchorA, cp.anchorB, impulse * rows.normal);
+        applyImpulse(rows, w.scratch.bodies.states[c.indexA], w.scratch.bodies.states[c.indexB], cp.anchorA, cp.anchorB, impulse * rows.normal);
     }
     return true;
 }
@@ -318,12 +318,12 @@ bool solveGroupNormals(World::Impl& w, ContactGroups& g, int group, const StepCo
 }  // namespace
 
 void contactGroupRows(World::Impl& w, const StepContext& ctx, RowPass pass) {
-    ContactGroups& g = w.scratch.contactGroups;
+    ContactGroups& g = w.scratch.contacts.groups;
     if (pass == RowPass::Restitution) {  // the bounce is row by row, as for every constraint
-        const std::vector<SubstepForces>& forces = w.scratch.substepForces;
+        const std::vector<SubstepForces>& forces = w.scratch.bodies.substepForces;
         for (int index : g.constraints) {
-            const ContactConstraint& c = w.scratch.constraints[index];
-            restituteContact(w.scratch.constraintRows[index], w.scratch.states[c.indexA], w.scratch.states[c.indexB], LaneBodies<float>::velocityChange(forces.data(), c.indexA),
+            const ContactConstraint& c = w.scratch.contacts.constraints[index];
+            restituteContact(w.scratch.contacts.constraintRows[index], w.scratch.bodies.states[c.indexA], w.scratch.bodies.states[c.indexB], LaneBodies<float>::velocityChange(forces.data(), c.indexA),
                              LaneBodies<float>::velocityChange(forces.data(), c.indexB), ctx);
         }
         return;
@@ -332,9 +332,9 @@ void contactGroupRows(World::Impl& w, const StepContext& ctx, RowPass pass) {
         const bool useBias = pass == RowPass::Solve;
         const bool solved = pass != RowPass::WarmStart && solveGroupNormals(w, g, group, ctx, useBias);
         for (int s = g.start[group]; s < g.start[group + 1]; ++s) {
-            const ContactConstraint& c = w.scratch.constraints[g.constraints[s]];
-            ContactRows<float>& rows = w.scratch.constraintRows[g.constraints[s]];
-            BodyState &a = w.scratch.states[c.indexA], &b = w.scratch.states[c.indexB];
+            const ContactConstraint& c = w.scratch.contacts.constraints[g.constraints[s]];
+            ContactRows<float>& rows = w.scratch.contacts.constraintRows[g.constraints[s]];
+            BodyState &a = w.scratch.bodies.states[c.indexA], &b = w.scratch.bodies.states[c.indexB];
             if (pass == RowPass::WarmStart) warmStartContact(rows, a, b);
             else if (solved && useBias) solveContact<true, false>(rows, a, b, ctx);  // its tangent rows
             else if (solved) solveContact<false, false>(rows, a, b, ctx);

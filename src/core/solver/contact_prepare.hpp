@@ -18,13 +18,13 @@ struct ContactConstraint;
 
 using RowMasses = RowMassLanes<float>;
 
-// Read from the solver slots: 1/m from their states, 1/I from StepScratch::inverseInertias (dense
+// Read from the solver slots: 1/m from their states, 1/I from SolverBodies::inverseInertias (dense
 // arrays, where the bodies are not).
-inline RowMasses rowMasses(const StepScratch& s, int slotA, int slotB) {
-    return {s.states[slotA].invMass, s.inverseInertias[slotA], s.states[slotB].invMass, s.inverseInertias[slotB]};
+inline RowMasses rowMasses(const SolverBodies& bodies, int slotA, int slotB) {
+    return {bodies.states[slotA].invMass, bodies.inverseInertias[slotA], bodies.states[slotB].invMass, bodies.inverseInertias[slotB]};
 }
 
-// The rows of constraint c (its contact and solver slots set, StepScratch::freeVelocities filled):
+// The rows of constraint c (its contact and solver slots set, SolverBodies::freeVelocities filled):
 // its own `rows`, gathered and derived (deriveContactRows, contact_solver_wide.hpp).
 void prepareContactRows(const World::Impl& world, const StepContext& ctx, const ContactConstraint& c, ContactRows<float>& rows);
 // Or the gather alone into a block of four or eight lanes (row_lanes.hpp), the block's lanes to be

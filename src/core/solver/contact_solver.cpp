@@ -17,8 +17,8 @@ namespace {
 // included: in the discrete fall a ball hits the ground with that speed, and an e = 1 bounce then
 // climbs exactly as many steps as it fell (docs/stress.md). Only v and ω are set.
 BodyState velocityWithoutContact(const World::Impl& w, const StepContext& ctx, int slot) {
-    const BodyState& now = w.scratch.states[slot];
-    const SubstepForces& f = w.scratch.substepForces[slot];
+    const BodyState& now = w.scratch.bodies.states[slot];
+    const SubstepForces& f = w.scratch.bodies.substepForces[slot];
     BodyState s;
     s.v = now.v + static_cast<float>(ctx.substeps) * f.dv;
     s.w = now.w + static_cast<float>(ctx.substeps) * f.dw;
@@ -34,8 +34,8 @@ void gatherOtherFields(const World::Impl& w, const ContactConstraint* const (&co
     for (int lane = 0; lane < used; ++lane) {
         const ContactConstraint& c = *constraints[lane];
         const RowLane<lanes> at{rows + lane};
-        at.set(offsetof(Rows, invIA), w.scratch.inverseInertias[c.indexA]);
-        at.set(offsetof(Rows, invIB), w.scratch.inverseInertias[c.indexB]);
+        at.set(offsetof(Rows, invIA), w.scratch.bodies.inverseInertias[c.indexA]);
+        at.set(offsetof(Rows, invIB), w.scratch.bodies.inverseInertias[c.indexB]);
         at.set(offsetof(Rows, turnsA), contacts[lane]->turnsA ? 1.0f : 0.0f);
         at.set(offsetof(Rows, turnsB), contacts[lane]->turnsB ? 1.0f : 0.0f);
     }
@@ -70,7 +70,7 @@ void gatherRows(const World::Impl& w, const ContactConstraint& c, ContactRows<fl
 void prepareContactRows(const World::Impl& w, const StepContext& ctx, const ContactConstraint& c, ContactRows<float>& rows) {
     gatherRows(w, c, rows);
     const float present[2] = {c.pointCount > 0 ? 1.0f : 0.0f, c.pointCount > 1 ? 1.0f : 0.0f};
-    deriveContactRows(rows, w.scratch.freeVelocities[c.indexA], w.scratch.freeVelocities[c.indexB], present, ctx);
+    deriveContactRows(rows, w.scratch.bodies.freeVelocities[c.indexA], w.scratch.bodies.freeVelocities[c.indexB], present, ctx);
 }
 
 namespace {
@@ -129,7 +129,7 @@ void prepareContacts(World::Impl& w, const StepContext& ctx) {
     StepScratch& s = w.scratch;
     // A body is awake this step where it has a solver slot (a static one never is).
     // Contacts are not read: updateContacts left their points and bodies in dense arrays.
-    const std::vector<int>& slotOf = s.bodySlots;
+    const std::vector<int>& slotOf = s.bodies.bodySlots;
     const ContactCache& cache = w.contactCache;
     // Without a branch on whether a contact touches, which pool order mixes: every slot's bodies
     // are looked up (a free slot's are bodies its last contact had, still in the pool's range).
@@ -140,22 +140,22 @@ void prepareContacts(World::Impl& w, const StepContext& ctx) {
     w.workers.parallelSelect(
         w.contactCache.contacts.capacity(), constrains,
         [&](int total) {
-            s.constraints.resize(total);
-            s.constraintRows.resize(total);
-            s.constraintSlots.resize(total);
+            s.contacts.constraints.resize(total);
+            s.contacts.constraintRows.resize(total);
+            s.contacts.constraintSlots.resize(total);
         },
         [&](int k, int index) {
             const auto [bodyA, bodyB] = cache.bodiesOf[index];
-            ContactConstraint& c = s.constraints[k];
+            ContactConstraint& c = s.contacts.constraints[k];
             c.contact = index;
             c.indexA = slotOf[bodyA];
             c.indexB = slotOf[bodyB];
             c.pointCount = cache.touchingPoints[index];
-            s.constraintSlots[k] = {c.indexA, c.indexB};
+            s.contacts.constraintSlots[k] = {c.indexA, c.indexB};
         });
-    s.freeVelocities.resize(s.states.size());
-    w.workers.parallelFor(static_cast<int>(s.states.size()), 256, [&](int begin, int end, int) {
-        for (int slot = begin; slot < end; ++slot) s.freeVelocities[slot] = velocityWithoutContact(w, ctx, slot);
+    s.bodies.freeVelocities.resize(s.bodies.states.size());
+    w.workers.parallelFor(static_cast<int>(s.bodies.states.size()), 256, [&](int begin, int end, int) {
+        for (int slot = begin; slot < end; ++slot) s.bodies.freeVelocities[slot] = velocityWithoutContact(w, ctx, slot);
     });
     propagateImpacts(w, ctx);  // simultaneous impacts, pair by pair, before the substeps
     findContactGroups(w, ctx);

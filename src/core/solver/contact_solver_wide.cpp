@@ -38,21 +38,21 @@ namespace {
 
 // fn(blocks) on the step's contact blocks: of eight lanes (contactLanes = 8) or of four.
 template <class Scratch, class Fn>
-decltype(auto) onContactBlocks(Scratch& s, Fn fn) {
+decltype(auto) onContactBlocks(Scratch& contacts, Fn fn) {
 #ifdef PERPDOT_AVX2
-    if (s.contactLanes == 8) return fn(s.contactBlocks8);
+    if (contacts.lanes == 8) return fn(contacts.blocks8);
 #endif
-    return fn(s.contactBlocks);
+    return fn(contacts.blocks);
 }
 
 // deriveContactBlock on a block's lanes: four here, eight in the AVX2 file.
 void deriveBlock(World::Impl& w, const StepContext& ctx, ContactBlock<4>& block, const float (&present)[2][4]) {
-    deriveContactBlock<Float4>(block, w.scratch.freeVelocities.data(), present, ctx);
+    deriveContactBlock<Float4>(block, w.scratch.bodies.freeVelocities.data(), present, ctx);
 }
 
 #ifdef PERPDOT_AVX2
 void deriveBlock(World::Impl& w, const StepContext& ctx, ContactBlock<8>& block, const float (&present)[2][8]) {
-    deriveContactRows8(block, w.scratch.freeVelocities.data(), present, ctx);
+    deriveContactRows8(block, w.scratch.bodies.freeVelocities.data(), present, ctx);
 }
 #endif
 
@@ -60,11 +60,11 @@ void deriveBlock(World::Impl& w, const StepContext& ctx, ContactBlock<8>& block,
 // may have empty lanes): block b of colour c holds the constraints contactOrder[start[c] + lanes
 // (b − blockStart[c]) ...]. Sized here, laid out by the solver's first stages (layOutBlocks).
 template <class Block>
-void sizeBlocks(StepScratch& s, std::vector<Block>& blocks) {
+void sizeBlocks(ContactScratch& contacts, std::vector<Block>& blocks) {
     constexpr int overflow = GraphColoring::overflow;
     constexpr int width = Block::lanes;
-    const ColorStarts& start = s.contactStart;
-    ColorStarts& blockStart = s.contactBlockStart;
+    const ColorStarts& start = contacts.colorStart;
+    ColorStarts& blockStart = contacts.blockStart;
     blockStart[0] = 0;
     for (int color = 0; color <= overflow; ++color)
         blockStart[color + 1] = blockStart[color] + (color < overflow ? (start[color + 1] - start[color] + width - 1) / width : 0);
@@ -77,23 +77,23 @@ template <class Block>
 void layOutBlocks(World::Impl& w, const StepContext& ctx, std::vector<Block>& blocks, int color, int begin, int end) {
     constexpr int width = Block::lanes;
     StepScratch& s = w.scratch;
-    const int colorStart = s.contactStart[color], colorEnd = s.contactStart[color + 1];
+    const int colorStart = s.contacts.colorStart[color], colorEnd = s.contacts.colorStart[color + 1];
     for (int b = begin; b < end; ++b) {
-        Block& block = blocks[s.contactBlockStart[color] + b];
+        Block& block = blocks[s.contacts.blockStart[color] + b];
         const int position = colorStart + width * b;  // of the lanes' constraints in contactOrder
         const int lanes = std::min(width, colorEnd - position);
         alignas(32) float present[2][width];  // 1 where a lane's point is a manifold point
         const ContactConstraint* constraints[width];
-        const int* order = &s.contactOrder[position];
+        const int* order = &s.contacts.order[position];
         // The lanes' contacts lie anywhere in the pool: the next block's (the constraints right
         // after these in contactOrder) load while this block gathers, and this block's own were
         // asked for by the block before (the first of a range asks for them here).
         const int fetchEnd = std::min(position + lanes + width, colorEnd);
         for (int p = b == begin ? position : position + lanes; p < fetchEnd; ++p)
-            prefetchSolverFields<0>(w.contactCache.contacts[s.constraints[s.contactOrder[p]].contact]);
+            prefetchSolverFields<0>(w.contactCache.contacts[s.contacts.constraints[s.contacts.order[p]].contact]);
         for (int lane = 0; lane < width; ++lane) {
             const bool used = lane < lanes;
-            const ContactConstraint* c = used ? &s.constraints[order[lane]] : nullptr;
+            const ContactConstraint* c = used ? &s.contacts.constraints[order[lane]] : nullptr;
             block.contact[lane] = used ? c->contact : -1;
             block.bodyA[lane] = used ? c->indexA : 0;  // an empty lane: the static slot
             block.bodyB[lane] = used ? c->indexB : 0;
@@ -121,24 +121,24 @@ void layOutBlocks(World::Impl& w, const StepContext& ctx, std::vector<Block>& bl
 void prepareContactBlocks(World::Impl& w, const StepContext& ctx) {
     StepScratch& s = w.scratch;
     constexpr int overflow = GraphColoring::overflow;
-    const int count = static_cast<int>(s.constraints.size());
-    s.contactColors.resize(s.constraints.size());
-    const std::vector<uint8_t>& direct = s.contactGroups.direct;  // solved by their groups instead
-    const int slots = static_cast<int>(s.states.size());
+    const int count = static_cast<int>(s.contacts.constraints.size());
+    s.contacts.colors.resize(s.contacts.constraints.size());
+    const std::vector<uint8_t>& direct = s.contacts.groups.direct;  // solved by their groups instead
+    const int slots = static_cast<int>(s.bodies.states.size());
     for (int index = 0; index < count; ++index) {
-        const auto [slotA, slotB] = s.constraintSlots[index];
+        const auto [slotA, slotB] = s.contacts.constraintSlots[index];
         const int color = direct[index] ? overflow : s.coloring.assign(slotA, slotB);
         // The overflow's constraints are solved one after another: in constraint order.
-        s.contactColors[index] = color * slotBuckets + (color == overflow ? 0 : slotBucket(slotA, slotB, slots));
+        s.contacts.colors[index] = color * slotBuckets + (color == overflow ? 0 : slotBucket(slotA, slotB, slots));
     }
-    const ColorStarts& start = s.contactStart = sortByColor(s.contactColors, s.contactOrder);
-    onContactBlocks(s, [&](auto& blocks) { sizeBlocks(s, blocks); });
-    s.overflowConstraints.clear();
+    const ColorStarts& start = s.contacts.colorStart = sortByColor(s.contacts.colors, s.contacts.order);
+    onContactBlocks(s.contacts, [&](auto& blocks) { sizeBlocks(s.contacts, blocks); });
+    s.contacts.overflow.clear();
     for (int position = start[overflow]; position < count; ++position) {
-        const int index = s.contactOrder[position];
+        const int index = s.contacts.order[position];
         if (direct[index]) continue;
-        s.overflowConstraints.push_back(index);
-        prepareContactRows(w, ctx, s.constraints[index], s.constraintRows[index]);
+        s.contacts.overflow.push_back(index);
+        prepareContactRows(w, ctx, s.contacts.constraints[index], s.contacts.constraintRows[index]);
     }
 }
 
@@ -147,17 +147,17 @@ void prepareContactBlocks(World::Impl& w, const StepContext& ctx) {
 // scattered, had the workers share the constraints' cache lines.
 void locateContactRows(World::Impl& w) {
     StepScratch& s = w.scratch;
-    s.contactRowSlot.assign(s.constraints.size(), -1);
+    s.contacts.rowSlot.assign(s.contacts.constraints.size(), -1);
     for (int color = 0; color < GraphColoring::overflow; ++color)
-        for (int p = s.contactStart[color]; p < s.contactStart[color + 1]; ++p)
-            s.contactRowSlot[s.contactOrder[p]] = s.contactBlockStart[color] * s.contactLanes + (p - s.contactStart[color]);
+        for (int p = s.contacts.colorStart[color]; p < s.contacts.colorStart[color + 1]; ++p)
+            s.contacts.rowSlot[s.contacts.order[p]] = s.contacts.blockStart[color] * s.contacts.lanes + (p - s.contacts.colorStart[color]);
 }
 
 // Field `field` (a float index, pointField) of constraint k's rows, in its lane or its own rows.
 float contactRowField(const World::Impl& w, int k, std::size_t field) {
-    const int slot = w.scratch.contactRowSlot[k];
-    if (slot < 0) return floatsOf(w.scratch.constraintRows[k])[field];
-    return onContactBlocks(w.scratch, [&](const auto& blocks) {
+    const int slot = w.scratch.contacts.rowSlot[k];
+    if (slot < 0) return floatsOf(w.scratch.contacts.constraintRows[k])[field];
+    return onContactBlocks(w.scratch.contacts, [&](const auto& blocks) {
         constexpr std::size_t lanes = std::remove_cvref_t<decltype(blocks[0])>::lanes;
         const auto place = static_cast<std::size_t>(slot);
         return blocks[place / lanes].rowData()[field * lanes + place % lanes];
@@ -165,30 +165,30 @@ float contactRowField(const World::Impl& w, int k, std::size_t field) {
 }
 
 void layOutContactBlocks(World::Impl& w, const StepContext& ctx, int color, int begin, int end) {
-    onContactBlocks(w.scratch, [&](auto& blocks) { layOutBlocks(w, ctx, blocks, color, begin, end); });
+    onContactBlocks(w.scratch.contacts, [&](auto& blocks) { layOutBlocks(w, ctx, blocks, color, begin, end); });
 }
 
 int contactBlockCount(const World::Impl& w, int color) {
-    return w.scratch.contactBlockStart[color + 1] - w.scratch.contactBlockStart[color];
+    return w.scratch.contacts.blockStart[color + 1] - w.scratch.contacts.blockStart[color];
 }
 
 void contactRows(World::Impl& w, const StepContext& ctx, RowPass pass, int color, int begin, int end) {
     StepScratch& s = w.scratch;
-    const int first = s.contactBlockStart[color];
+    const int first = s.contacts.blockStart[color];
 #ifdef PERPDOT_AVX2
-    if (s.contactLanes == 8)
-        return contactRows8(s.contactBlocks8.data(), first + begin, first + end, s.states.data(), s.substepForces.data(), ctx, pass);
+    if (s.contacts.lanes == 8)
+        return contactRows8(s.contacts.blocks8.data(), first + begin, first + end, s.bodies.states.data(), s.bodies.substepForces.data(), ctx, pass);
 #endif
-    contactBlockRows<Float4>(s.contactBlocks.data(), first + begin, first + end, s.states.data(), s.substepForces.data(), ctx, pass);
+    contactBlockRows<Float4>(s.contacts.blocks.data(), first + begin, first + end, s.bodies.states.data(), s.bodies.substepForces.data(), ctx, pass);
 }
 
 // The overflow constraints one by one, in their own rows.
 void serialContactRows(World::Impl& w, const StepContext& ctx, RowPass pass) {
     StepScratch& s = w.scratch;
-    forPass<float>(pass, ctx, s.substepForces.data(), [&](auto rows, auto) {
-        for (int index : s.overflowConstraints) {
-            const ContactConstraint& c = s.constraints[index];
-            rows(s.constraintRows[index], s.states[c.indexA], s.states[c.indexB], c.indexA, c.indexB, RowUses{});
+    forPass<float>(pass, ctx, s.bodies.substepForces.data(), [&](auto rows, auto) {
+        for (int index : s.contacts.overflow) {
+            const ContactConstraint& c = s.contacts.constraints[index];
+            rows(s.contacts.constraintRows[index], s.bodies.states[c.indexA], s.bodies.states[c.indexB], c.indexA, c.indexB, RowUses{});
         }
     });
 }
@@ -241,18 +241,18 @@ void storeBlocks(World::Impl& w, const std::vector<Block>& blocks, int begin, in
 // The impulses for the next step's warm start (a contact has one constraint: the workers write
 // apart). A colour's blocks from their lanes, as the solver's last stages (SolverStages) ...
 void storeContactBlocks(World::Impl& w, int color, int begin, int end) {
-    const int first = w.scratch.contactBlockStart[color];
-    onContactBlocks(w.scratch, [&](const auto& blocks) { storeBlocks(w, blocks, first + begin, first + end); });
+    const int first = w.scratch.contacts.blockStart[color];
+    onContactBlocks(w.scratch.contacts, [&](const auto& blocks) { storeBlocks(w, blocks, first + begin, first + end); });
 }
 
 // ... then those of the overflow constraints and of the contact groups solved directly, from their rows.
 void storeContactImpulses(World::Impl& w) {
     StepScratch& s = w.scratch;
     auto storeRows = [&](int index) {
-        storeContactRows(RowLane<1, const float>{floatsOf(s.constraintRows[index])}, w.contactCache.contacts[s.constraints[index].contact]);
+        storeContactRows(RowLane<1, const float>{floatsOf(s.contacts.constraintRows[index])}, w.contactCache.contacts[s.contacts.constraints[index].contact]);
     };
-    for (int index : s.overflowConstraints) storeRows(index);
-    for (int index : s.contactGroups.constraints) storeRows(index);
+    for (int index : s.contacts.overflow) storeRows(index);
+    for (int index : s.contacts.groups.constraints) storeRows(index);
 }
 
 }  // namespace perpdot

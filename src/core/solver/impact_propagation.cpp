@@ -31,16 +31,16 @@ void kick(BodyState& body, float invI, Vec2 r, Vec2 P) {
 // Point p takes its impact if it meets: j = −(1 + e) v_rel·n / K alone, and Coulomb friction
 // along t = perp(n), |jt| ≤ μ j, on the free velocities and the solver states alike. With e = 1 and
 // no friction a pair of equal masses swaps its velocities along n, and kinetic energy is kept.
-bool impact(StepScratch& s, ImpactPoint& p, int sweep, const StepContext& ctx) {
-    BodyState &a = s.freeVelocities[p.slotA], &b = s.freeVelocities[p.slotB];
+bool impact(SolverBodies& bodies, Impacts& impacts, ImpactPoint& p, int sweep, const StepContext& ctx) {
+    BodyState &a = bodies.freeVelocities[p.slotA], &b = bodies.freeVelocities[p.slotB];
     const float vn = meetingSpeed(p, a, b, ctx);
     if (vn == 0.0f) return false;
-    const RowMasses m = rowMasses(s, p.slotA, p.slotB);
+    const RowMasses m = rowMasses(bodies, p.slotA, p.slotB);
     auto apply = [&](Vec2 P) {
         kick(a, m.invIA, p.rA, -P);
         kick(b, m.invIB, p.rB, P);
-        kick(s.states[p.slotA], m.invIA, p.rA, -P);
-        kick(s.states[p.slotB], m.invIB, p.rB, P);
+        kick(bodies.states[p.slotA], m.invIA, p.rA, -P);
+        kick(bodies.states[p.slotB], m.invIB, p.rB, P);
     };
     p.impactSpeed = std::max(p.impactSpeed, -vn);
     const float j = -(1.0f + p.restitution) * vn * effectiveMass(m, p.rA, p.rB, p.normal);
@@ -49,7 +49,7 @@ bool impact(StepScratch& s, ImpactPoint& p, int sweep, const StepContext& ctx) {
     const float maxFriction = p.friction * j;
     const float jt = -dot(relativeVelocity(a, b, p.rA, p.rB), t) * effectiveMass(m, p.rA, p.rB, t);
     apply(std::clamp(jt, -maxFriction, maxFriction) * t);
-    s.impacts.lastKick[p.slotA] = s.impacts.lastKick[p.slotB] = sweep;
+    impacts.lastKick[p.slotA] = impacts.lastKick[p.slotB] = sweep;
     return true;
 }
 
@@ -60,15 +60,15 @@ bool impact(StepScratch& s, ImpactPoint& p, int sweep, const StepContext& ctx) {
 size_t firstSweep(World::Impl& w, const StepContext& ctx) {
     StepScratch& s = w.scratch;
     size_t impacts = 0;
-    for (int k = 0; k < static_cast<int>(s.constraints.size()); ++k) {
-        const ContactConstraint& c = s.constraints[k];
+    for (int k = 0; k < static_cast<int>(s.contacts.constraints.size()); ++k) {
+        const ContactConstraint& c = s.contacts.constraints[k];
         if (c.indexA == 0 || c.indexB == 0) continue;
-        if (s.states[c.indexA].invMass == 0.0f || s.states[c.indexB].invMass == 0.0f) continue;
+        if (s.bodies.states[c.indexA].invMass == 0.0f || s.bodies.states[c.indexB].invMass == 0.0f) continue;
         const Contact& contact = w.contactCache.contacts[c.contact];
         if (contact.restitution == 0.0f) continue;
         for (int i = 0; i < c.pointCount; ++i) {
             const ContactPointState& p = contact.points[i];
-            ImpactPoint& point = s.impacts.points.emplace_back(ImpactPoint{.constraint = k,
+            ImpactPoint& point = s.contacts.impacts.points.emplace_back(ImpactPoint{.constraint = k,
                                                                            .point = i,
                                                                            .slotA = c.indexA,
                                                                            .slotB = c.indexB,
@@ -78,7 +78,7 @@ size_t firstSweep(World::Impl& w, const StepContext& ctx) {
                                                                            .separation = p.separation,
                                                                            .restitution = contact.restitution,
                                                                            .friction = contact.friction});
-            impacts += impact(s, point, 0, ctx) ? 1 : 0;
+            impacts += impact(s.bodies, s.contacts.impacts, point, 0, ctx) ? 1 : 0;
         }
     }
     return impacts;
@@ -88,22 +88,22 @@ size_t firstSweep(World::Impl& w, const StepContext& ctx) {
 
 void propagateImpacts(World::Impl& w, const StepContext& ctx) {
     StepScratch& s = w.scratch;
-    std::vector<ImpactPoint>& points = s.impacts.points;
+    std::vector<ImpactPoint>& points = s.contacts.impacts.points;
     points.clear();
     if (!w.shapes.anyRestitution) return;  // no shape has ever been elastic: nothing to look for
     // In order of impact: sweeps in contact order until no point meets, at most 4 impacts per
     // point; what still approaches then is left to the substeps and the restitution pass. After
     // the first sweep a point whose bodies no impact has changed since it was last looked at (in
     // this sweep or the one before) cannot meet either: it is skipped, as a full sweep would pass it.
-    s.impacts.lastKick.assign(s.states.size(), -1);
+    s.contacts.impacts.lastKick.assign(s.bodies.states.size(), -1);
     size_t impacts = firstSweep(w, ctx);
     const size_t maxImpacts = 4 * points.size();
     for (int sweep = 1, met = impacts > 0; met && impacts < maxImpacts; ++sweep) {
         met = 0;
         for (ImpactPoint& p : points) {
-            const std::vector<int>& lastKick = s.impacts.lastKick;
+            const std::vector<int>& lastKick = s.contacts.impacts.lastKick;
             if (lastKick[p.slotA] < sweep - 1 && lastKick[p.slotB] < sweep - 1) continue;
-            if (!impact(s, p, sweep, ctx)) continue;
+            if (!impact(s.bodies, s.contacts.impacts, p, sweep, ctx)) continue;
             met = 1;
             if (++impacts == maxImpacts) break;
         }

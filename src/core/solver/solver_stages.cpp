@@ -19,14 +19,14 @@ constexpr int contactsPerItem = 128;
 void SolverStages::build(const World::Impl& w) {
     using Work = SolverStage::Work;
     stages_.clear();
-    const int bodies = static_cast<int>(w.scratch.states.size()) - 1;
+    const int bodies = static_cast<int>(w.scratch.bodies.states.size()) - 1;
     auto add = [&](Work work, RowPass pass, int color, int units, int unitsPerItem) {
         if (units > 0) stages_.push_back({work, pass, color, units, unitsPerItem});
     };
     // A colour's contact blocks: every stage that touches them (layout, passes, store) claims the
     // same items, so a block stays with the worker that laid it out and solves it.
     auto addContactBlocks = [&](Work work, RowPass pass, int color) {
-        add(work, pass, color, contactBlockCount(w, color), contactsPerItem / w.scratch.contactLanes);
+        add(work, pass, color, contactBlockCount(w, color), contactsPerItem / w.scratch.contacts.lanes);
     };
     // Colour by colour, the colour's joints and then its contacts (one constraint graph: they share
     // no moving body); then the constraints no colour took, one by one: joints (and revolute
@@ -38,8 +38,8 @@ void SolverStages::build(const World::Impl& w) {
             addContactBlocks(Work::Contacts, pass, color);
         }
         if (joints) add(Work::SerialJoints, pass, 0, serialJointCount(w) > 0 ? 1 : 0, 1);
-        add(Work::SerialContacts, pass, 0, w.scratch.overflowConstraints.empty() ? 0 : 1, 1);
-        add(Work::ContactGroups, pass, 0, w.scratch.contactGroups.start.size() > 1 ? 1 : 0, 1);
+        add(Work::SerialContacts, pass, 0, w.scratch.contacts.overflow.empty() ? 0 : 1, 1);
+        add(Work::ContactGroups, pass, 0, w.scratch.contacts.groups.start.size() > 1 ? 1 : 0, 1);
     };
     for (int color = 0; color < GraphColoring::overflow; ++color) addContactBlocks(Work::LayOutContacts, RowPass::WarmStart, color);
     firstSubstepStage_ = stages_.size();

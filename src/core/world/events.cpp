@@ -40,11 +40,11 @@ void World::Impl::reportTouch(const Contact& c, bool begin) {
 void reportHitEvents(World::Impl& w) {
     if (!w.shapes.anyHitEvents) return;
     locateContactRows(w);
-    const std::vector<ImpactPoint>& impacts = w.scratch.impacts.points;  // in constraint order
+    const std::vector<ImpactPoint>& impacts = w.scratch.contacts.impacts.points;  // in constraint order
     size_t impact = 0;
-    for (int k = 0; k < static_cast<int>(w.scratch.constraints.size()); ++k) {
+    for (int k = 0; k < static_cast<int>(w.scratch.contacts.constraints.size()); ++k) {
         while (impact < impacts.size() && impacts[impact].constraint < k) ++impact;
-        const ContactConstraint& c = w.scratch.constraints[k];
+        const ContactConstraint& c = w.scratch.contacts.constraints[k];
         const Contact& contact = w.contactCache.contacts[c.contact];
         if (!w.shapes[contact.a.shape].enableHitEvents && !w.shapes[contact.b.shape].enableHitEvents) continue;
         ContactHitEvent event{w.shapeId(contact.a.shape), w.shapeId(contact.b.shape), {}, contact.normal, w.def.hitEventThreshold};

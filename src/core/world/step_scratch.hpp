@@ -20,7 +20,7 @@ namespace perpdot {
 
 // A contact's constraint for this step: where it came from (the contact, the bodies' solver
 // slots) and where its rows are (ContactRows<float>, contact_solver_wide.hpp): a lane of a block
-// (contactBlocks or contactBlocks8), or its own rows in StepScratch::constraintRows when it has no
+// (ContactScratch::blocks or blocks8), or its own rows in ContactScratch::constraintRows when it has no
 // colour (overflow, contact groups). Kept small: the blocks' preparation reads these in colour order.
 struct ContactConstraint {
     int indexA = 0, indexB = 0;  // solver slots
@@ -76,8 +76,8 @@ struct PredictedPose {
     InPlaceMove inPlace;  // where refit and the body has one proxy, which moves in place
 };
 
-struct StepScratch {
-    // Solver arrays.
+// The solver's view of the awake bodies, by solver slot (slot 0: every body that cannot move).
+struct SolverBodies {
     std::vector<BodyState> states;
     std::vector<int> awakeBodies;       // body index of states[i + 1]
     // By body index: its slot in states, 0 for a body outside the solver (static or asleep).
@@ -91,30 +91,49 @@ struct StepScratch {
     std::vector<SubstepForces> substepForces;  // of states[i]
     std::vector<float> inverseInertias;        // 1/I of states[i] (slot 0: 0), dense for gathering rows (1/m is in the states)
     std::vector<BodyState> freeVelocities;     // of states[i]: v and ω at the step's end without contacts (contact_solver.cpp)
+};
+
+// The step's contact constraints and where their rows live: blocks by colour, or one by one.
+struct ContactScratch {
     std::vector<ContactConstraint> constraints;
     Impacts impacts;                           // propagateImpacts scratch: the elastic points between moving bodies
     std::vector<ContactRows<float>> constraintRows;  // by constraint: the rows of those outside the blocks
     std::vector<std::array<int, 2>> constraintSlots;  // by constraint: its bodies' solver slots, for colouring
-    GraphColoring coloring;  // one constraint graph: the colours of joints, then of `constraints` (graph_color.hpp)
-    int contactLanes = chooseContactLanes();     // constraints per block: 4, or 8 with AVX2
-    std::vector<ContactBlock<4>> contactBlocks;   // four constraints of one colour each, in colour order,
-    std::vector<ContactBlock<8>> contactBlocks8;  // or eight (contactLanes = 8)
-    ColorStarts contactBlockStart{};             // colour c is contactBlocks[start[c] .. start[c + 1])
-    std::vector<int> contactColors;              // prepareContactBlocks scratch: colour and slot bucket of each constraint,
-    std::vector<int> contactOrder;               // and the constraints sorted by them (graph_color.hpp),
-    ColorStarts contactStart{};                  // colour c at contactOrder[start[c] .. start[c + 1])
-    std::vector<int> contactRowSlot;             // by constraint, for hit events (locateContactRows)
-    std::vector<int> overflowConstraints;        // constraints no colour could take: solved one by one
-    ContactGroups contactGroups;                 // constraints solved a group at a time (contact_groups.hpp)
-    SolverStages solverStages;                   // the substeps' stages for the workers
-    JointScratchPtr joints = makeJointScratch();  // the joints' prepared rows, blocks and colours (joint_store.hpp)
-    std::vector<int> islandParent;      // union-find scratch for sleeping, by body index
-    std::vector<float> islandMinSleep;
-    std::vector<int> islandHead;
-    // Continuous collision between moving bodies (continuous_impacts.cpp).
+    int lanes = chooseContactLanes();        // constraints per block: 4, or 8 with AVX2
+    std::vector<ContactBlock<4>> blocks;     // four constraints of one colour each, in colour order,
+    std::vector<ContactBlock<8>> blocks8;    // or eight (lanes = 8)
+    ColorStarts blockStart{};                // colour c is blocks[start[c] .. start[c + 1])
+    std::vector<int> colors;                 // prepareContactBlocks scratch: colour and slot bucket of each constraint,
+    std::vector<int> order;                  // and the constraints sorted by them (graph_color.hpp),
+    ColorStarts colorStart{};                // colour c at order[start[c] .. start[c + 1])
+    std::vector<int> rowSlot;                // by constraint, for hit events (locateContactRows)
+    std::vector<int> overflow;               // constraints no colour could take: solved one by one
+    ContactGroups groups;                    // constraints solved a group at a time (contact_groups.hpp)
+};
+
+// Union-find scratch for sleeping, by body index (sleep.cpp).
+struct IslandScratch {
+    std::vector<int> parent;
+    std::vector<float> minSleep;
+    std::vector<int> head;
+};
+
+// Continuous collision between moving bodies (continuous_impacts.cpp).
+struct MoverScratch {
     std::vector<Mover> movers;          // fast bodies and what they may hit,
-    std::vector<MoverPair> moverPairs;  // the pairs among them that include a bullet,
+    std::vector<MoverPair> pairs;       // the pairs among them that include a bullet,
     std::vector<int> moverOfBody;       // and each body's mover (-1: none)
+};
+
+// The step's working arrays by owner. Contacts and joints share one colouring (one constraint graph).
+struct StepScratch {
+    SolverBodies bodies;
+    ContactScratch contacts;
+    JointScratchPtr joints = makeJointScratch();  // the joints' prepared rows, blocks and colours (joint_store.hpp)
+    GraphColoring coloring;  // the colours of joints, then of contacts.constraints (graph_color.hpp)
+    SolverStages solverStages;  // the substeps' stages for the workers
+    IslandScratch islands;
+    MoverScratch continuous;
 };
 
 }  // namespace perpdot
