@@ -90,25 +90,24 @@ void integrateVelocities(World::Impl& w, const StepContext& ctx) {
     w.scratch.bodies.stepRotation.assign(w.scratch.bodies.states.size(), 0.0f);
 }
 
-void applySubstepForces(World::Impl& w, int begin, int end) {
+void applySubstepForces(SolverBodies& bodies, int begin, int end) {
     for (int i = begin; i < end; ++i) {
-        BodyState& s = w.scratch.bodies.states[i];
-        const SubstepForces& f = w.scratch.bodies.substepForces[i];
+        BodyState& s = bodies.states[i];
+        const SubstepForces& f = bodies.substepForces[i];
         s.v = f.dv + f.linearDamping * s.v;
         s.w = f.dw + f.angularDamping * s.w;
     }
 }
 
 // x += hs v, θ += hs ω for one substep, with speeds clamped against blow-ups.
-void integratePositions(World::Impl& w, const StepContext& ctx, int begin, int end) {
-    const float maxLinearSpeed = w.def.maxLinearSpeed;
+void integratePositions(SolverBodies& bodies, const StepContext& ctx, int begin, int end) {
     const float maxSpin = maxAngularSpeed(ctx.invHs);
     for (int i = begin; i < end; ++i) {
-        BodyState& s = w.scratch.bodies.states[i];
-        s.v = clampSpeed(s.v, maxLinearSpeed);
+        BodyState& s = bodies.states[i];
+        s.v = clampSpeed(s.v, ctx.maxLinearSpeed);
         s.w = clampAngularSpeed(s.w, maxSpin);
         s.dp += ctx.hs * s.v;
-        w.scratch.bodies.stepRotation[i] += ctx.hs * s.w;
+        bodies.stepRotation[i] += ctx.hs * s.w;
         s.dq = integrateRotation(s.dq, ctx.hs * s.w);
     }
 }

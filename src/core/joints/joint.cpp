@@ -140,9 +140,8 @@ JointKey keyOf(const PreparedJoint& j) {
 // colour share no moving body, so their order within it is free and workers may run its units
 // side by side.
 template <class Wide, class Scalar>
-void forJointUnits(World::Impl& w, int color, int begin, int end, Wide wide, Scalar scalar) {
-    JointScratch& d = jointScratch(w);
-    std::vector<BodyState>& states = w.scratch.bodies.states;
+void forJointUnits(JointScratch& d, SolverBodies& bodies, int color, int begin, int end, Wide wide, Scalar scalar) {
+    std::vector<BodyState>& states = bodies.states;
     const int blocks = d.blockStart[color + 1] - d.blockStart[color];
     JointBlock* colorBlocks = d.blocks.data() + d.blockStart[color];
     for (int unit = begin, last = std::min(end, blocks); unit < last;) {
@@ -156,27 +155,26 @@ void forJointUnits(World::Impl& w, int color, int begin, int end, Wide wide, Sca
     for (int unit = std::max(begin, blocks); unit < end; ++unit) {
         PreparedJoint& j = d.prepared[d.scalarOrder[d.scalarStart[color] + unit - blocks]];
         JointPair p = pairOf(j.indexA == 0 ? fixed : states[j.indexA], j.indexB == 0 ? fixed : states[j.indexB],
-                             w.scratch.bodies.stepRotation, j);
+                             bodies.stepRotation, j);
         scalar(j, p);
     }
 }
 
 }  // namespace
 
-void jointRows(World::Impl& w, const StepContext& ctx, RowPass pass, int color, int begin, int end) {
-    std::vector<BodyState>& states = w.scratch.bodies.states;
+void jointRows(JointScratch& d, SolverBodies& bodies, const StepContext& ctx, RowPass pass, int color, int begin, int end) {
+    std::vector<BodyState>& states = bodies.states;
     if (pass == RowPass::WarmStart) {
         forJointUnits(
-            w, color, begin, end,
+            d, bodies, color, begin, end,
             [&](const JointLaneStages& lanes, JointBlock* blocks, int count) { lanes.warmStart(blocks, count, states); },
             [](PreparedJoint& j, JointPair& p) { stagesOf(j.type).warmStart(j, p); });
         return;
     }
     const bool useBias = pass == RowPass::Solve;
-    const std::vector<float>& stepRotation = w.scratch.bodies.stepRotation;
-    JointScratch& d = jointScratch(w);
+    const std::vector<float>& stepRotation = bodies.stepRotation;
     forJointUnits(
-        w, color, begin, end,
+        d, bodies, color, begin, end,
         [&](const JointLaneStages& lanes, JointBlock* blocks, int count) {
             lanes.solve(blocks, count, states, stepRotation, ctx, useBias);
         },
@@ -314,28 +312,25 @@ void colorJoints(World::Impl& w, const StepContext& ctx) {
 }
 
 // Every substep begins by re-applying the accumulated impulses (Box2D v3's soft step).
-int jointUnitCount(const World::Impl& w, int color) {
-    const JointScratch& d = jointScratch(w);
+int jointUnitCount(const JointScratch& d, int color) {
     return d.blockStart[color + 1] - d.blockStart[color] + d.scalarStart[color + 1] - d.scalarStart[color];
 }
 
-int serialJointCount(const World::Impl& w) {
-    return jointUnitCount(w, GraphColoring::overflow) + static_cast<int>(jointScratch(w).trees.joints.size());
+int serialJointCount(const JointScratch& d) {
+    return jointUnitCount(d, GraphColoring::overflow) + static_cast<int>(d.trees.joints.size());
 }
 
-void serialJointRows(World::Impl& w, const StepContext& ctx, RowPass pass) {
+void serialJointRows(JointScratch& d, SolverBodies& bodies, const StepContext& ctx, RowPass pass) {
     constexpr int overflow = GraphColoring::overflow;
-    jointRows(w, ctx, pass, overflow, 0, jointUnitCount(w, overflow));
-    JointScratch& d = jointScratch(w);
+    jointRows(d, bodies, ctx, pass, overflow, 0, jointUnitCount(d, overflow));
     if (pass == RowPass::WarmStart)
-        warmStartRevoluteTrees(w, d.trees, d.prepared);
+        warmStartRevoluteTrees(bodies, d.trees, d.prepared);
     else
-        solveRevoluteTrees(w, d.trees, d.prepared, ctx, pass == RowPass::Solve);
+        solveRevoluteTrees(bodies, d.trees, d.prepared, ctx, pass == RowPass::Solve);
 }
 
-void projectJoints(World::Impl& w) {
-    JointScratch& d = jointScratch(w);
-    projectRevoluteTrees(w, d.trees, d.prepared);
+void projectJoints(JointScratch& d, SolverBodies& bodies) {
+    projectRevoluteTrees(bodies, d.trees, d.prepared);
 }
 
 // The accumulated impulses go back to the joints, ready for the next step's warm start.

@@ -18,6 +18,7 @@ using JointStorePtr = std::unique_ptr<JointStore, JointStoreDeleter>;
 JointStorePtr makeJointStore();
 // The joints' per-step arrays (joint_store.hpp), for the step scratch.
 struct JointScratch;
+struct SolverBodies;  // step_scratch.hpp
 struct JointScratchDeleter {
     void operator()(JointScratch* scratch) const;
 };
@@ -31,14 +32,14 @@ void prepareJoints(World::Impl& world, const StepContext& ctx);
 void colorJoints(World::Impl& world, const StepContext& ctx);
 // The work of colour `color` (below GraphColoring::overflow) in a pass: units that share no
 // moving body, to be run in any order or side by side.
-int jointUnitCount(const World::Impl& world, int color);
-void jointRows(World::Impl& world, const StepContext& ctx, RowPass pass, int color, int begin, int end);
+int jointUnitCount(const JointScratch& joints, int color);
+void jointRows(JointScratch& joints, SolverBodies& bodies, const StepContext& ctx, RowPass pass, int color, int begin, int end);
 // The joints no colour could take, then the revolute trees: one after another.
-int serialJointCount(const World::Impl& world);
-void serialJointRows(World::Impl& world, const StepContext& ctx, RowPass pass);
+int serialJointCount(const JointScratch& joints);
+void serialJointRows(JointScratch& joints, SolverBodies& bodies, const StepContext& ctx, RowPass pass);
 void storeJointImpulses(World::Impl& world, const StepContext& ctx);
 // After the substeps: a Newton step on the positions of each revolute tree (joint_tree.hpp).
-void projectJoints(World::Impl& world);
+void projectJoints(JointScratch& joints, SolverBodies& bodies);
 
 // Reports (and destroys, where asked) the joints whose reaction, averaged over the step, passed
 // their break limits; run after storeJointImpulses.

@@ -9,7 +9,7 @@
 #include "core/joints/joint_revolute.hpp"
 #include "core/joints/joint_rows.hpp"
 #include "core/base/union_find.hpp"
-#include "core/world/world_impl.hpp"
+#include "core/world/step_scratch.hpp"
 
 namespace perpdot {
 namespace {
@@ -103,9 +103,9 @@ void findRevoluteTrees(RevoluteTrees& t, const std::vector<JointKey>& keys, int 
     }
 }
 
-void warmStartRevoluteTrees(World::Impl& w, RevoluteTrees& t, std::vector<PreparedJoint>& prepared) {
+void warmStartRevoluteTrees(SolverBodies& bodies, RevoluteTrees& t, std::vector<PreparedJoint>& prepared) {
     for (int k : t.joints) {
-        JointPair p = pairOf(w.scratch.bodies.states, w.scratch.bodies.stepRotation, prepared[k]);
+        JointPair p = pairOf(bodies.states, bodies.stepRotation, prepared[k]);
         warmStartRevolute(prepared[k], p);
     }
 }
@@ -115,7 +115,7 @@ namespace {
 // K of tree `tree` (2n x 2n, row-major) at the anchors now, with t.rA, t.rB set and t.x[2i..2i+1]
 // = `row(joint, pair, frame)`, the right-hand side of joint i.
 template <class Row>
-int assemble(World::Impl& w, RevoluteTrees& t, const std::vector<PreparedJoint>& prepared, size_t tree, Row row) {
+int assemble(SolverBodies& bodies, RevoluteTrees& t, const std::vector<PreparedJoint>& prepared, size_t tree, Row row) {
     const int first = t.start[tree], joints = t.start[tree + 1] - first, n = 2 * joints;
     t.K.assign(static_cast<size_t>(n) * n, 0.0);
     t.x.resize(n);
@@ -123,7 +123,7 @@ int assemble(World::Impl& w, RevoluteTrees& t, const std::vector<PreparedJoint>&
     t.rB.resize(joints);
     for (int i = 0; i < joints; ++i) {
         const PreparedJoint& j = prepared[t.joints[first + i]];
-        const JointPair p = pairOf(w.scratch.bodies.states, w.scratch.bodies.stepRotation, j);
+        const JointPair p = pairOf(bodies.states, bodies.stepRotation, j);
         const JointFrame f = currentFrame(j, p);
         t.rA[i] = f.rA;
         t.rB[i] = f.rB;
@@ -153,18 +153,18 @@ int assemble(World::Impl& w, RevoluteTrees& t, const std::vector<PreparedJoint>&
 Vec2 lambdaOf(const std::vector<double>& x, int i) { return {static_cast<float>(x[2 * i]), static_cast<float>(x[2 * i + 1])}; }
 
 // Moves a body's solver state by a position impulse P at arm r: Δc = P/m, Δθ = perpDot(r, P)/I.
-void displace(World::Impl& w, int slot, float invMass, float invInertia, Vec2 r, Vec2 P) {
+void displace(SolverBodies& bodies, int slot, float invMass, float invInertia, Vec2 r, Vec2 P) {
     if (slot == 0) return;
-    BodyState& s = w.scratch.bodies.states[slot];
+    BodyState& s = bodies.states[slot];
     const float dAngle = invInertia * perpDot(r, P);
     s.dp += invMass * P;
-    w.scratch.bodies.stepRotation[slot] += dAngle;
+    bodies.stepRotation[slot] += dAngle;
     s.dq = integrateRotation(s.dq, dAngle);
 }
 
 }  // namespace
 
-void solveRevoluteTrees(World::Impl& w, RevoluteTrees& t, std::vector<PreparedJoint>& prepared, const StepContext& ctx,
+void solveRevoluteTrees(SolverBodies& bodies, RevoluteTrees& t, std::vector<PreparedJoint>& prepared, const StepContext& ctx,
                         bool useBias) {
     const Softness soft = rigidSoftness(ctx, useBias);
     for (size_t tree = 0; tree + 1 < t.start.size(); ++tree) {
@@ -174,16 +174,16 @@ void solveRevoluteTrees(World::Impl& w, RevoluteTrees& t, std::vector<PreparedJo
         for (int i = 0; i < joints; ++i) {
             PreparedJoint& j = prepared[t.joints[first + i]];
             if (pointRowsOnly(j)) continue;
-            JointPair p = pairOf(w.scratch.bodies.states, w.scratch.bodies.stepRotation, j);
+            JointPair p = pairOf(bodies.states, bodies.stepRotation, j);
             solveRevoluteAngleRows(j, p, ctx, useBias);
         }
-        const int n = assemble(w, t, prepared, tree, [&](const JointPair& p, const JointFrame& f) {
+        const int n = assemble(bodies, t, prepared, tree, [&](const JointPair& p, const JointFrame& f) {
             return relativeVelocity(p, f.rA, f.rB) + soft.biasRate * f.d;  // v_rel + biasRate·C
         });
         if (!choleskyFactor(t.K.data(), n)) {  // the point rows joint by joint
             for (int i = 0; i < joints; ++i) {
                 PreparedJoint& j = prepared[t.joints[first + i]];
-                JointPair p = pairOf(w.scratch.bodies.states, w.scratch.bodies.stepRotation, j);
+                JointPair p = pairOf(bodies.states, bodies.stepRotation, j);
                 const JointFrame f = currentFrame(j, p);
                 solvePointRows(p, f.rA, f.rB, f.d, soft, j.data.as<RevoluteJoint>().linearImpulse);
             }
@@ -202,7 +202,7 @@ void solveRevoluteTrees(World::Impl& w, RevoluteTrees& t, std::vector<PreparedJo
         }
         for (int i = 0; i < joints; ++i) {
             const PreparedJoint& j = prepared[t.joints[first + i]];
-            JointPair p = pairOf(w.scratch.bodies.states, w.scratch.bodies.stepRotation, j);
+            JointPair p = pairOf(bodies.states, bodies.stepRotation, j);
             applyPoint(p, t.rA[i], t.rB[i], lambdaOf(t.x, i));
         }
     }
@@ -210,17 +210,17 @@ void solveRevoluteTrees(World::Impl& w, RevoluteTrees& t, std::vector<PreparedJo
 
 // Newton's step on the positions: K P = −C, then each body moves by the position impulses at its
 // anchors (Box2D 2.4's position pass, exact for the whole tree instead of joint by joint).
-void projectRevoluteTrees(World::Impl& w, RevoluteTrees& t, const std::vector<PreparedJoint>& prepared) {
+void projectRevoluteTrees(SolverBodies& bodies, RevoluteTrees& t, const std::vector<PreparedJoint>& prepared) {
     for (size_t tree = 0; tree + 1 < t.start.size(); ++tree) {
         const int first = t.start[tree], joints = t.start[tree + 1] - first;
-        const int n = assemble(w, t, prepared, tree, [](const JointPair&, const JointFrame& f) { return -f.d; });
+        const int n = assemble(bodies, t, prepared, tree, [](const JointPair&, const JointFrame& f) { return -f.d; });
         if (!choleskyFactor(t.K.data(), n)) continue;
         choleskySolve(t.K.data(), n, t.x.data());
         for (int i = 0; i < joints; ++i) {
             const PreparedJoint& j = prepared[t.joints[first + i]];
             const Vec2 P = lambdaOf(t.x, i);
-            displace(w, j.indexA, j.mass.mA, j.mass.iA, t.rA[i], -P);
-            displace(w, j.indexB, j.mass.mB, j.mass.iB, t.rB[i], P);
+            displace(bodies, j.indexA, j.mass.mA, j.mass.iA, t.rA[i], -P);
+            displace(bodies, j.indexB, j.mass.mB, j.mass.iB, t.rB[i], P);
         }
     }
 }

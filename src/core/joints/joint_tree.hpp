@@ -19,6 +19,7 @@ namespace perpdot {
 
 struct JointKey;
 struct PreparedJoint;
+struct SolverBodies;  // step_scratch.hpp
 
 struct RevoluteTrees {
     static constexpr int maxJoints = 32;  // K is 2n x 2n: about (2n)³/6 multiply-adds a pass
@@ -44,11 +45,11 @@ void findRevoluteTrees(RevoluteTrees& trees, const std::vector<JointKey>& keys, 
 
 // Warm start (each joint's accumulated impulse) and one pass (with soft bias, or the relax pass
 // without) of every tree. A tree whose K does not factor has its point rows solved joint by joint.
-void warmStartRevoluteTrees(World::Impl& world, RevoluteTrees& trees, std::vector<PreparedJoint>& prepared);
-void solveRevoluteTrees(World::Impl& world, RevoluteTrees& trees, std::vector<PreparedJoint>& prepared,
+void warmStartRevoluteTrees(SolverBodies& bodies, RevoluteTrees& trees, std::vector<PreparedJoint>& prepared);
+void solveRevoluteTrees(SolverBodies& bodies, RevoluteTrees& trees, std::vector<PreparedJoint>& prepared,
                         const StepContext& ctx, bool useBias);
 // After the substeps: one Newton step on each tree's positions, K P = −C, so the anchors a step
 // ends with meet (the velocity passes leave the drift of rotating arms).
-void projectRevoluteTrees(World::Impl& world, RevoluteTrees& trees, const std::vector<PreparedJoint>& prepared);
+void projectRevoluteTrees(SolverBodies& bodies, RevoluteTrees& trees, const std::vector<PreparedJoint>& prepared);
 
 }  // namespace perpdot

@@ -275,18 +275,18 @@ bool solveComplementarity(ContactGroups& g, int n, const double* K, const double
 // impulse of the pass: v_rel·n → −s/hs for a speculative row (rigid, it may close the gap); with
 // bias, the soft step K Δλ = −massScale·(v + biasRate·C) − impulseScale·K λ; without, v → 0.
 // False, and nothing applied, when its complementarity problem did not settle.
-bool solveGroupNormals(World::Impl& w, ContactGroups& g, int group, const StepContext& ctx, bool useBias) {
+bool solveGroupNormals(ContactScratch& contacts, SolverBodies& bodies, ContactGroups& g, int group, const StepContext& ctx, bool useBias) {
     const int first = g.rowStart[group], n = g.rowStart[group + 1] - first;
     const double* K = &g.K[g.matrixStart[group]];
     const double* L = &g.L[g.matrixStart[group]];
     const Softness& soft = ctx.contactSoftness;  // one softness for all rows: the rest state C = K F / ω²
-    for (int r = 0; r < n; ++r) g.lambda[r] = w.scratch.contacts.constraintRows[g.rows[first + r][0]].points[g.rows[first + r][1]].normalImpulse;
+    for (int r = 0; r < n; ++r) g.lambda[r] = contacts.constraintRows[g.rows[first + r][0]].points[g.rows[first + r][1]].normalImpulse;
     for (int r = 0; r < n; ++r) {
         const auto [k, i] = g.rows[first + r];
-        const ContactConstraint& c = w.scratch.contacts.constraints[k];
-        const ContactRows<float>& rows = w.scratch.contacts.constraintRows[k];
+        const ContactConstraint& c = contacts.constraints[k];
+        const ContactRows<float>& rows = contacts.constraintRows[k];
         const ContactPointRows<float>& cp = rows.points[i];
-        const BodyState &a = w.scratch.bodies.states[c.indexA], &b = w.scratch.bodies.states[c.indexB];
+        const BodyState &a = bodies.states[c.indexA], &b = bodies.states[c.indexB];
         const float s = currentSeparation(rows, cp, a, b);
         const float vn = dot(relativeVelocity(a, b, cp.anchorA, cp.anchorB), rows.normal);
         if (s > 0.0f) {
@@ -303,38 +303,38 @@ bool solveGroupNormals(World::Impl& w, ContactGroups& g, int group, const StepCo
     if (!solveComplementarity(g, n, K, L)) return false;
     for (int r = 0; r < n; ++r) {
         const auto [k, i] = g.rows[first + r];
-        const ContactConstraint& c = w.scratch.contacts.constraints[k];
-        ContactRows<float>& rows = w.scratch.contacts.constraintRows[k];
+        const ContactConstraint& c = contacts.constraints[k];
+        ContactRows<float>& rows = contacts.constraintRows[k];
         ContactPointRows<float>& cp = rows.points[i];
         const float newImpulse = std::max(cp.normalImpulse + static_cast<float>(g.x[r]), 0.0f);
         const float impulse = newImpulse - cp.normalImpulse;
         cp.normalImpulse = newImpulse;
         recordPush(rows, i, impulse, ctx);
-        applyImpulse(rows, w.scratch.bodies.states[c.indexA], w.scratch.bodies.states[c.indexB], cp.anchorA, cp.anchorB, impulse * rows.normal);
+        applyImpulse(rows, bodies.states[c.indexA], bodies.states[c.indexB], cp.anchorA, cp.anchorB, impulse * rows.normal);
     }
     return true;
 }
 
 }  // namespace
 
-void contactGroupRows(World::Impl& w, const StepContext& ctx, RowPass pass) {
-    ContactGroups& g = w.scratch.contacts.groups;
+void contactGroupRows(ContactScratch& contacts, SolverBodies& bodies, const StepContext& ctx, RowPass pass) {
+    ContactGroups& g = contacts.groups;
     if (pass == RowPass::Restitution) {  // the bounce is row by row, as for every constraint
-        const std::vector<SubstepForces>& forces = w.scratch.bodies.substepForces;
+        const std::vector<SubstepForces>& forces = bodies.substepForces;
         for (int index : g.constraints) {
-            const ContactConstraint& c = w.scratch.contacts.constraints[index];
-            restituteContact(w.scratch.contacts.constraintRows[index], w.scratch.bodies.states[c.indexA], w.scratch.bodies.states[c.indexB], LaneBodies<float>::velocityChange(forces.data(), c.indexA),
+            const ContactConstraint& c = contacts.constraints[index];
+            restituteContact(contacts.constraintRows[index], bodies.states[c.indexA], bodies.states[c.indexB], LaneBodies<float>::velocityChange(forces.data(), c.indexA),
                              LaneBodies<float>::velocityChange(forces.data(), c.indexB), ctx);
         }
         return;
     }
     for (int group = 0; group + 1 < static_cast<int>(g.start.size()); ++group) {
         const bool useBias = pass == RowPass::Solve;
-        const bool solved = pass != RowPass::WarmStart && solveGroupNormals(w, g, group, ctx, useBias);
+        const bool solved = pass != RowPass::WarmStart && solveGroupNormals(contacts, bodies, g, group, ctx, useBias);
         for (int s = g.start[group]; s < g.start[group + 1]; ++s) {
-            const ContactConstraint& c = w.scratch.contacts.constraints[g.constraints[s]];
-            ContactRows<float>& rows = w.scratch.contacts.constraintRows[g.constraints[s]];
-            BodyState &a = w.scratch.bodies.states[c.indexA], &b = w.scratch.bodies.states[c.indexB];
+            const ContactConstraint& c = contacts.constraints[g.constraints[s]];
+            ContactRows<float>& rows = contacts.constraintRows[g.constraints[s]];
+            BodyState &a = bodies.states[c.indexA], &b = bodies.states[c.indexB];
             if (pass == RowPass::WarmStart) warmStartContact(rows, a, b);
             else if (solved && useBias) solveContact<true, false>(rows, a, b, ctx);  // its tangent rows
             else if (solved) solveContact<false, false>(rows, a, b, ctx);

@@ -28,6 +28,9 @@
 
 namespace perpdot {
 
+struct ContactScratch;  // step_scratch.hpp
+struct SolverBodies;
+
 struct ContactGroups {
     static constexpr int maxRows = 128;        // K is n x n: about n³/6 multiply-adds to factor, once a step
     static constexpr int maxTotalRows = 1024;  // all groups of a step: bounds their work and storage
@@ -56,6 +59,6 @@ struct ContactGroups {
 // rows prepared and K factored.
 void findContactGroups(World::Impl& world, const StepContext& ctx);
 // A pass of every group: warm start, or its normal rows as one system then its tangent rows.
-void contactGroupRows(World::Impl& world, const StepContext& ctx, RowPass pass);
+void contactGroupRows(ContactScratch& contacts, SolverBodies& bodies, const StepContext& ctx, RowPass pass);
 
 }  // namespace perpdot

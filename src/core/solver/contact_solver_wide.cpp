@@ -145,19 +145,18 @@ void prepareContactBlocks(World::Impl& w, const StepContext& ctx) {
 // Where each constraint's rows are: lane slot % lanes of block slot / lanes, or -1 for its own
 // rows. Layout leaves this implicit in the colour order: writing it into the constraints there,
 // scattered, had the workers share the constraints' cache lines.
-void locateContactRows(World::Impl& w) {
-    StepScratch& s = w.scratch;
-    s.contacts.rowSlot.assign(s.contacts.constraints.size(), -1);
+void locateContactRows(ContactScratch& c) {
+    c.rowSlot.assign(c.constraints.size(), -1);
     for (int color = 0; color < GraphColoring::overflow; ++color)
-        for (int p = s.contacts.colorStart[color]; p < s.contacts.colorStart[color + 1]; ++p)
-            s.contacts.rowSlot[s.contacts.order[p]] = s.contacts.blockStart[color] * s.contacts.lanes + (p - s.contacts.colorStart[color]);
+        for (int p = c.colorStart[color]; p < c.colorStart[color + 1]; ++p)
+            c.rowSlot[c.order[p]] = c.blockStart[color] * c.lanes + (p - c.colorStart[color]);
 }
 
 // Field `field` (a float index, pointField) of constraint k's rows, in its lane or its own rows.
-float contactRowField(const World::Impl& w, int k, std::size_t field) {
-    const int slot = w.scratch.contacts.rowSlot[k];
-    if (slot < 0) return floatsOf(w.scratch.contacts.constraintRows[k])[field];
-    return onContactBlocks(w.scratch.contacts, [&](const auto& blocks) {
+float contactRowField(const ContactScratch& contacts, int k, std::size_t field) {
+    const int slot = contacts.rowSlot[k];
+    if (slot < 0) return floatsOf(contacts.constraintRows[k])[field];
+    return onContactBlocks(contacts, [&](const auto& blocks) {
         constexpr std::size_t lanes = std::remove_cvref_t<decltype(blocks[0])>::lanes;
         const auto place = static_cast<std::size_t>(slot);
         return blocks[place / lanes].rowData()[field * lanes + place % lanes];
@@ -168,27 +167,25 @@ void layOutContactBlocks(World::Impl& w, const StepContext& ctx, int color, int 
     onContactBlocks(w.scratch.contacts, [&](auto& blocks) { layOutBlocks(w, ctx, blocks, color, begin, end); });
 }
 
-int contactBlockCount(const World::Impl& w, int color) {
-    return w.scratch.contacts.blockStart[color + 1] - w.scratch.contacts.blockStart[color];
+int contactBlockCount(const ContactScratch& contacts, int color) {
+    return contacts.blockStart[color + 1] - contacts.blockStart[color];
 }
 
-void contactRows(World::Impl& w, const StepContext& ctx, RowPass pass, int color, int begin, int end) {
-    StepScratch& s = w.scratch;
-    const int first = s.contacts.blockStart[color];
+void contactRows(ContactScratch& contacts, SolverBodies& bodies, const StepContext& ctx, RowPass pass, int color, int begin, int end) {
+    const int first = contacts.blockStart[color];
 #ifdef PERPDOT_AVX2
-    if (s.contacts.lanes == 8)
-        return contactRows8(s.contacts.blocks8.data(), first + begin, first + end, s.bodies.states.data(), s.bodies.substepForces.data(), ctx, pass);
+    if (contacts.lanes == 8)
+        return contactRows8(contacts.blocks8.data(), first + begin, first + end, bodies.states.data(), bodies.substepForces.data(), ctx, pass);
 #endif
-    contactBlockRows<Float4>(s.contacts.blocks.data(), first + begin, first + end, s.bodies.states.data(), s.bodies.substepForces.data(), ctx, pass);
+    contactBlockRows<Float4>(contacts.blocks.data(), first + begin, first + end, bodies.states.data(), bodies.substepForces.data(), ctx, pass);
 }
 
 // The overflow constraints one by one, in their own rows.
-void serialContactRows(World::Impl& w, const StepContext& ctx, RowPass pass) {
-    StepScratch& s = w.scratch;
-    forPass<float>(pass, ctx, s.bodies.substepForces.data(), [&](auto rows, auto) {
-        for (int index : s.contacts.overflow) {
-            const ContactConstraint& c = s.contacts.constraints[index];
-            rows(s.contacts.constraintRows[index], s.bodies.states[c.indexA], s.bodies.states[c.indexB], c.indexA, c.indexB, RowUses{});
+void serialContactRows(ContactScratch& contacts, SolverBodies& bodies, const StepContext& ctx, RowPass pass) {
+    forPass<float>(pass, ctx, bodies.substepForces.data(), [&](auto rows, auto) {
+        for (int index : contacts.overflow) {
+            const ContactConstraint& c = contacts.constraints[index];
+            rows(contacts.constraintRows[index], bodies.states[c.indexA], bodies.states[c.indexB], c.indexA, c.indexB, RowUses{});
         }
     });
 }

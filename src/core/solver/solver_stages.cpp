@@ -26,7 +26,7 @@ void SolverStages::build(const World::Impl& w) {
     // A colour's contact blocks: every stage that touches them (layout, passes, store) claims the
     // same items, so a block stays with the worker that laid it out and solves it.
     auto addContactBlocks = [&](Work work, RowPass pass, int color) {
-        add(work, pass, color, contactBlockCount(w, color), contactsPerItem / w.scratch.contacts.lanes);
+        add(work, pass, color, contactBlockCount(w.scratch.contacts, color), contactsPerItem / w.scratch.contacts.lanes);
     };
     // Colour by colour, the colour's joints and then its contacts (one constraint graph: they share
     // no moving body); then the constraints no colour took, one by one: joints (and revolute
@@ -34,10 +34,10 @@ void SolverStages::build(const World::Impl& w) {
     auto rows = [&](RowPass pass) {
         const bool joints = pass != RowPass::Restitution;
         for (int color = 0; color < GraphColoring::overflow; ++color) {
-            if (joints) add(Work::Joints, pass, color, jointUnitCount(w, color), jointUnitsPerItem);
+            if (joints) add(Work::Joints, pass, color, jointUnitCount(*w.scratch.joints, color), jointUnitsPerItem);
             addContactBlocks(Work::Contacts, pass, color);
         }
-        if (joints) add(Work::SerialJoints, pass, 0, serialJointCount(w) > 0 ? 1 : 0, 1);
+        if (joints) add(Work::SerialJoints, pass, 0, serialJointCount(*w.scratch.joints) > 0 ? 1 : 0, 1);
         add(Work::SerialContacts, pass, 0, w.scratch.contacts.overflow.empty() ? 0 : 1, 1);
         add(Work::ContactGroups, pass, 0, w.scratch.contacts.groups.start.size() > 1 ? 1 : 0, 1);
     };
@@ -57,13 +57,13 @@ void SolverStages::execute(World::Impl& w, const StepContext& ctx, const SolverS
     using Work = SolverStage::Work;
     switch (stage.work) {
         case Work::LayOutContacts: layOutContactBlocks(w, ctx, stage.color, begin, end); break;
-        case Work::SubstepForces: applySubstepForces(w, begin + 1, end + 1); break;
-        case Work::Joints: jointRows(w, ctx, stage.pass, stage.color, begin, end); break;
-        case Work::SerialJoints: serialJointRows(w, ctx, stage.pass); break;
-        case Work::Contacts: contactRows(w, ctx, stage.pass, stage.color, begin, end); break;
-        case Work::SerialContacts: serialContactRows(w, ctx, stage.pass); break;
-        case Work::ContactGroups: contactGroupRows(w, ctx, stage.pass); break;
-        case Work::IntegratePositions: integratePositions(w, ctx, begin + 1, end + 1); break;
+        case Work::SubstepForces: applySubstepForces(w.scratch.bodies, begin + 1, end + 1); break;
+        case Work::Joints: jointRows(*w.scratch.joints, w.scratch.bodies, ctx, stage.pass, stage.color, begin, end); break;
+        case Work::SerialJoints: serialJointRows(*w.scratch.joints, w.scratch.bodies, ctx, stage.pass); break;
+        case Work::Contacts: contactRows(w.scratch.contacts, w.scratch.bodies, ctx, stage.pass, stage.color, begin, end); break;
+        case Work::SerialContacts: serialContactRows(w.scratch.contacts, w.scratch.bodies, ctx, stage.pass); break;
+        case Work::ContactGroups: contactGroupRows(w.scratch.contacts, w.scratch.bodies, ctx, stage.pass); break;
+        case Work::IntegratePositions: integratePositions(w.scratch.bodies, ctx, begin + 1, end + 1); break;
         case Work::StoreContacts: storeContactBlocks(w, stage.color, begin, end); break;
     }
 }

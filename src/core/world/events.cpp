@@ -39,7 +39,7 @@ void World::Impl::reportTouch(const Contact& c, bool begin) {
 // impact before the substeps (impact_propagation.cpp; its approach is then gone from the rows).
 void reportHitEvents(World::Impl& w) {
     if (!w.shapes.anyHitEvents) return;
-    locateContactRows(w);
+    locateContactRows(w.scratch.contacts);
     const std::vector<ImpactPoint>& impacts = w.scratch.contacts.impacts.points;  // in constraint order
     size_t impact = 0;
     for (int k = 0; k < static_cast<int>(w.scratch.contacts.constraints.size()); ++k) {
@@ -50,7 +50,7 @@ void reportHitEvents(World::Impl& w) {
         ContactHitEvent event{w.shapeId(contact.a.shape), w.shapeId(contact.b.shape), {}, contact.normal, w.def.hitEventThreshold};
         bool hit = false;
         for (int i = 0; i < c.pointCount; ++i) {
-            const float approachSpeed = -contactRowField(w, k, offsetof(ContactRows<float>, relativeVelocity) / sizeof(float) + static_cast<std::size_t>(i));
+            const float approachSpeed = -contactRowField(w.scratch.contacts, k, offsetof(ContactRows<float>, relativeVelocity) / sizeof(float) + static_cast<std::size_t>(i));
             if (approachSpeed > event.approachSpeed && contact.points[i].maxNormalImpulse > 0.0f) {
                 event.approachSpeed = approachSpeed;
                 event.point = contact.points[i].point;

@@ -17,9 +17,9 @@ StepContext makeStepContext(const World::Impl& w, float h);
 // whole step's forces now, constrained ones per substep.
 void integrateVelocities(World::Impl& w, const StepContext& ctx);
 // A substep's share of the forces on the constrained bodies, solver slots [begin, end).
-void applySubstepForces(World::Impl& w, int begin, int end);
+void applySubstepForces(SolverBodies& bodies, int begin, int end);
 // Integrate positions: x += hs v, θ += hs ω, solver slots [begin, end).
-void integratePositions(World::Impl& w, const StepContext& ctx, int begin, int end);
+void integratePositions(SolverBodies& bodies, const StepContext& ctx, int begin, int end);
 // Re-fit ahead (refit_ahead.cpp): start re-fitting, on a worker of its own, the proxies of the
 // bodies whose predicted end pose leaves their fat AABB; finish before the bodies take their poses.
 void startTreeRefit(World::Impl& w, const StepContext& ctx);

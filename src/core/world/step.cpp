@@ -25,6 +25,7 @@ StepContext makeStepContext(const World::Impl& w, float h) {
     ctx.restitutionThreshold = def.restitutionThreshold;
     ctx.hitEvents = w.shapes.anyHitEvents;
     ctx.maxBiasVelocity = def.contactPushMaxVelocity;
+    ctx.maxLinearSpeed = def.maxLinearSpeed;
     ctx.pushSlop = def.box2dSkin ? collide::linearSlop : 0.0f;
     ctx.enableWarmStarting = def.enableWarmStarting;
     return ctx;
@@ -68,7 +69,7 @@ void World::step(float timeStep) {
     // the workers).
     w.scratch.solverStages.build(w);
     w.scratch.solverStages.run(w, ctx);
-    projectJoints(w);         // project: the anchors of revolute trees meet again
+    projectJoints(*w.scratch.joints, w.scratch.bodies);         // project: the anchors of revolute trees meet again
     storeContactImpulses(w);  // store: impulses for the next step's warm start (the lanes' stored by the solver)
     storeJointImpulses(w, ctx);
     reportHitEvents(w);
