@@ -6,10 +6,10 @@
 #include <cmath>
 #include <cstddef>
 
+#include "core/bodies/body_store.hpp"
 #include "core/joints/joint_distance.hpp"
 #include "core/joints/joint_solver_wide.hpp"
 #include "core/joints/joint_type.hpp"
-#include "core/world/world_impl.hpp"
 
 namespace perpdot {
 

@@ -2,8 +2,8 @@
 // on). Box2D v3's filter joint.
 #include <tuple>
 
+#include "core/bodies/body_store.hpp"
 #include "core/joints/joint_type.hpp"
-#include "core/world/world_impl.hpp"
 
 namespace perpdot {
 

@@ -4,9 +4,9 @@
 // nA = uA, sA = perpDot(rA, uA), nB = ratio·uB, sB = ratio·perpDot(rB, uB) (joint_coupled_row.hpp).
 #include <cmath>
 
+#include "core/bodies/body_store.hpp"
 #include "core/joints/joint_coupled_row.hpp"
 #include "core/joints/joint_type.hpp"
-#include "core/world/world_impl.hpp"
 
 namespace perpdot {
 

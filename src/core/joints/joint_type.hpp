@@ -11,7 +11,7 @@
 #pragma once
 
 #include "core/joints/joint_store.hpp"
-#include "core/snapshot/snapshot_fields.hpp"
+#include "core/snapshot/math_fields.hpp"
 
 namespace perpdot {
 

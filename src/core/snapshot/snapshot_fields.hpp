@@ -1,37 +1,20 @@
-// The field list of every struct a snapshot holds (field_list.hpp), and the format version. The
-// joint types' data are the exception: each type's list is in its joint_<type>.cpp, beside its
-// stages (joint_type.hpp).
+// The field list of every struct of the world a snapshot holds (field_list.hpp); the format version
+// and the math types' lists are in math_fields.hpp. The joint types' data are the exception: each
+// type's list is in its joint_<type>.cpp, beside its stages (joint_type.hpp).
 //
 // To add a member to one of these structs: add it to the struct's list with .since(N), where N
-// is formatVersion + 1, and set formatVersion to N (docs/reliability.md, "Adding a field"). The
+// is formatVersion + 1, and set formatVersion (math_fields.hpp) to N (docs/reliability.md, "Adding a field"). The
 // size checks below fail the build when a struct changes and nobody looked at its list. Members
 // not listed are links rebuilt on reading (lists, edges, proxies), per-step scratch or userData.
 #pragma once
 
 #include <tuple>
 
-#include "core/snapshot/field_list.hpp"
+#include "core/snapshot/math_fields.hpp"
 #include "core/joints/joint_store.hpp"
 #include "core/world/world_impl.hpp"
 
 namespace perpdot {
-
-// 1: joint type data as raw struct bytes. 2: every struct through its field list. 3: end events
-// raised between steps (a body or shape destroyed), which the next step reports. 4: kept
-// manifolds (manifold_reuse.hpp), WorldDef::contactReuseDistance and box2dSkin (older: true),
-// joints' break limits. 5: bodies and shapes taken out of the simulation (World::setEnabled); a
-// chain's loop byte also holds its solid side and whether ghost vertices follow (bits 2, 4, 8: 0 in
-// older files, whose chains were solid on the left).
-constexpr uint32_t formatVersion = 5;
-
-// --- math ---
-
-constexpr auto fields(const Rot*) { return std::tuple{field("c", &Rot::c), field("s", &Rot::s)}; }
-constexpr auto fields(const Transform*) { return std::tuple{field("p", &Transform::p), field("q", &Transform::q)}; }
-constexpr auto fields(const Softness*) {
-    return std::tuple{field("biasRate", &Softness::biasRate), field("massScale", &Softness::massScale),
-                      field("impulseScale", &Softness::impulseScale)};
-}
 
 // --- world ---
 
