@@ -100,6 +100,15 @@ void addPair(World::Impl& w, const NewPair& pair) {
     cache.bodyLists.link(cache.contacts, index, 1, c.bodyB);
 }
 
+// Where a contact's separations are measured (collide::Skin): Box2D's skins on WorldDef::box2dSkin;
+// else a pair with a static or kinematic body keeps keptSkin of each skin as a rest gap, so a body
+// slides over the seams between separate pieces of ground or platform; two dynamic bodies rest on
+// their true surfaces, so a stack of n boxes stands n rest gaps no taller than built.
+collide::Skin contactSkin(const WorldDef& def, const Body& a, const Body& b) {
+    if (def.box2dSkin) return collide::Skin::Box2D;
+    return a.type == BodyType::Dynamic && b.type == BodyType::Dynamic ? collide::Skin::None : collide::Skin::Kept;
+}
+
 // The narrowphase of one contact, with the bodies' poses alone: whether its fat AABBs still
 // overlap (else it is to be destroyed), a sensor's overlap, or its kept manifold or a new one.
 // Events, the pre-solve callback and waking are left to updateContacts.
@@ -116,12 +125,13 @@ Narrowphase collideContact(World::Impl& w, int index) {
         const ShapeData &sa = w.shapes[c.a.shape], &sb = w.shapes[c.b.shape];
         return std::max(sa.maxExtent + length(ba.localCenter), sb.maxExtent + length(bb.localCenter));
     };
+    const collide::Skin skin = contactSkin(w.def, ba, bb);
     const ReuseLimits limits{.distance = w.def.contactReuseDistance,
                              .reach = c.pointCount > 0 ? 0.0f : reach(),
                              .box2dMargin = collide::box2dSkin(c.typeA) + collide::box2dSkin(c.typeB),
-                             .skinOffset = w.def.box2dSkin ? 0.0f : collide::skinOffset(c.typeA) + collide::skinOffset(c.typeB)};
+                             .skinOffset = collide::skinOffset(c.typeA, skin) + collide::skinOffset(c.typeB, skin)};
     if (!reuseManifold(c, ba, bb, limits))
-        takeManifold(c, collision.collide(c.a, ba.xf, c.b, bb.xf, w.def.box2dSkin), ba, bb, c.turnsA && c.turnsB);
+        takeManifold(c, collision.collide(c.a, ba.xf, c.b, bb.xf, skin), ba, bb, c.turnsA && c.turnsB);
     c.touching = c.pointCount > 0;
     return wasTouching ? Narrowphase::WasTouching : Narrowphase::WasNotTouching;
 }
