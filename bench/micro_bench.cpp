@@ -19,7 +19,7 @@ void BM_NarrowphaseBoxBox(benchmark::State& state) {
     const Transform a{{0.0f, 0.5f}, Rot::fromAngle(0.01f)};
     const Transform b{{0.1f, 1.49f}, Rot::fromAngle(-0.02f)};
     for (auto _ : state) {
-        collide::Manifold m = collision.collide({0, 0}, a, {1, 0}, b, false);
+        collide::Manifold m = collision.collide({0, 0}, a, {1, 0}, b, collide::Skin::Kept);
         benchmark::DoNotOptimize(m);
     }
 }

@@ -124,8 +124,8 @@ TEST(Contact, BlockOnSteepInclineSlidesWithCoulombDeceleration) {
     EXPECT_NEAR(a, expected, mu * std::fabs(vn2 - vn1) / 1.0f + 2e-3f);
 }
 
-// A 1 m box dropped 1 cm rests on its true surface (each polygon keeps 0.5 mm of Box2D's skin as a
-// rest gap); with WorldDef::box2dSkin it rests on Box2D 2.4's skins as b2World does: 0.015 m higher.
+// A 1 m box dropped 1 cm rests on its true surface (on the static ground each polygon keeps 0.5 mm
+// of Box2D's skin as a rest gap); with WorldDef::box2dSkin it rests on Box2D 2.4's skins as b2World does: 0.015 m higher.
 TEST(Contact, BoxRestsOnItsTrueSurfaceOrOnBox2DsSkin) {
     for (const bool box2dSkin : {false, true}) {
         World world({.box2dSkin = box2dSkin});
@@ -136,6 +136,31 @@ TEST(Contact, BoxRestsOnItsTrueSurfaceOrOnBox2DsSkin) {
         EXPECT_NEAR(world.position(box).y, rest, 2e-3f) << (box2dSkin ? "on Box2D's skin" : "true surfaces");
         EXPECT_NEAR(world.linearVelocity(box).y, 0.0f, 1e-3f);
     }
+}
+
+// The rest gap follows the partner's type: a box keeps 1 mm (0.5 mm of skin each) over a static
+// or a kinematic box, and none over a dynamic one (docs/stress.md, "True-surface contact").
+TEST(Contact, RestGapIsKeptOnlyAgainstStaticAndKinematicBodies) {
+    for (const BodyType type : {BodyType::Static, BodyType::Kinematic}) {
+        World world({.enableSleep = false});
+        const BodyId below = world.createBody(test::bodyAt({0.0f, -0.5f}, type));
+        world.createShape(below, {}, makeBox(0.5f, 0.5f));
+        const BodyId box = test::addBox(world, {0.0f, 0.5f}, 0.5f, 0.5f);
+        test::run(world, 300);
+        const float gap = world.position(box).y - 0.5f;
+        EXPECT_GT(gap, 0.0005f) << (type == BodyType::Static ? "static" : "kinematic");
+        EXPECT_LT(gap, 0.0011f) << (type == BodyType::Static ? "static" : "kinematic");
+    }
+    World world({.enableSleep = false});
+    test::addGround(world);
+    const BodyId lower = test::addBox(world, {0.0f, 0.5f}, 0.5f, 0.5f);
+    const BodyId upper = test::addBox(world, {0.0f, 1.5f}, 0.5f, 0.5f);
+    test::run(world, 300);
+    // No gap: the soft contact's compression (0.7 mm: two boxes are no loaded group, their rows are
+    // solved one by one) is an overlap of the true surfaces, which a 1 mm gap would have hidden.
+    const float apart = world.position(upper).y - world.position(lower).y;
+    EXPECT_LT(apart, 0.9998f) << "dynamic on dynamic";
+    EXPECT_GT(apart, 0.998f) << "dynamic on dynamic";
 }
 
 TEST(Contact, DiscRollsWithoutSlippingAtTwoThirdsGSinTheta) {

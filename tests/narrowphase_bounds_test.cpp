@@ -57,7 +57,7 @@ TEST(NarrowphaseBounds, SkippingNeverDropsAPointBox2DReports) {
                 const Transform xfB{{distance * std::cos(direction), distance * std::sin(direction)}, Rot::fromAngle(twoPi * unit(rng))};
                 const int expected = b < 3 ? box2dPointCount(polygons[a], xfA, &polygons[b], nullptr, xfB)
                                            : box2dPointCount(polygons[a], xfA, nullptr, &disc, xfB);
-                const int got = collision.collide({a, 0}, xfA, {b, 0}, xfB, true).pointCount;
+                const int got = collision.collide({a, 0}, xfA, {b, 0}, xfB, collide::Skin::Box2D).pointCount;
                 ASSERT_EQ(got, expected) << "shapes " << a << ", " << b << " at distance " << distance << " of reach " << reach;
                 withPoints += expected > 0 ? 1 : 0;
                 ++compared;

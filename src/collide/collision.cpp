@@ -534,13 +534,14 @@ void CollisionSystem::shiftOrigin(Vec2 newOrigin) {
 namespace {
 
 // What perpdot adds to a b2 shape's separations (collision.hpp's skinOffset, by b2 type).
-float skin(const b2Shape& shape) {
-    return shape.m_type == b2Shape::e_circle || isCapsule(shape) ? 0.0f : polygonRadius - keptSkin;
+float skinOffset(const b2Shape& shape, Skin skin) {
+    if (skin == Skin::Box2D || shape.m_type == b2Shape::e_circle || isCapsule(shape)) return 0.0f;
+    return skin == Skin::Kept ? polygonRadius - keptSkin : polygonRadius;
 }
 
 }  // namespace
 
-Manifold CollisionSystem::collide(ChildKey a, const Transform& xfA, ChildKey b, const Transform& xfB, bool box2dSkin) const {
+Manifold CollisionSystem::collide(ChildKey a, const Transform& xfA, ChildKey b, const Transform& xfB, Skin skin) const {
     if (impl_->apart(a.shape, xfA.p, b.shape, xfB.p)) return {};
     const Geometry& ga = impl_->geometry[a.shape];
     const Geometry& gb = impl_->geometry[b.shape];
@@ -586,7 +587,7 @@ Manifold CollisionSystem::collide(ChildKey a, const Transform& xfA, ChildKey b, 
     out.normal = fromB2(wm.normal);
     // Between the true surfaces the gap is skinA + skinB wider, and its midpoint moves by half the
     // difference along n.
-    const float skinA = box2dSkin ? 0.0f : skin(shapeA), skinB = box2dSkin ? 0.0f : skin(shapeB);
+    const float skinA = skinOffset(shapeA, skin), skinB = skinOffset(shapeB, skin);
     for (int i = 0; i < m.pointCount; ++i) {
         out.points[i].point = fromB2(wm.points[i]) + (0.5f * (skinB - skinA)) * out.normal;
         out.points[i].separation = wm.separations[i] + skinA + skinB;

@@ -16,16 +16,26 @@ namespace perpdot::collide {
 // Box2D's tolerances, kept so perpdot and Box2D rest bodies at the same separations.
 inline constexpr float linearSlop = 0.005f;
 inline constexpr float polygonRadius = 2.0f * linearSlop;  // Box2D 2.4's collision skin of polygons and segments
-// The part of Box2D's skin a polygon or segment keeps as a rest gap: a box resting on a row of
-// separate tiles then slides over their seams without catching a tile's side face (docs/stress.md).
+// The part of Box2D's skin a polygon or segment keeps as a rest gap against a static or kinematic
+// body: a box resting on a row of separate tiles then slides over their seams without catching a
+// tile's side face (docs/stress.md). Two dynamic bodies keep none: they rest on their true surfaces.
 inline constexpr float keptSkin = 0.1f * linearSlop;
+
+// Where collide() measures a pair's separations: on Box2D 2.4's skins (WorldDef::box2dSkin, and
+// the time of impact), between the true surfaces less keptSkin of each skin (a pair with a static
+// or kinematic body), or between the true surfaces (two dynamic bodies).
+enum class Skin : uint8_t { Box2D, Kept, None };
 
 // Box2D 2.4's skin around a shape: polygons, segments and chains have one, circles and capsules not.
 constexpr float box2dSkin(ShapeType type) {
     return type == ShapeType::Polygon || type == ShapeType::Segment || type == ShapeType::Chain ? polygonRadius : 0.0f;
 }
-// What perpdot adds to Box2D's separations for a shape: its skin less keptSkin.
-constexpr float skinOffset(ShapeType type) { return box2dSkin(type) > 0.0f ? box2dSkin(type) - keptSkin : 0.0f; }
+// What perpdot adds to Box2D's separations for a shape: nothing on Box2D's skin, else its skin,
+// less keptSkin where the pair keeps it.
+constexpr float skinOffset(ShapeType type, Skin skin) {
+    if (skin == Skin::Box2D || box2dSkin(type) == 0.0f) return 0.0f;
+    return skin == Skin::Kept ? box2dSkin(type) - keptSkin : box2dSkin(type);
+}
 
 struct ManifoldPoint {
     Vec2 point;               // world, midway between the two surfaces
@@ -158,9 +168,10 @@ public:
     // be the "larger" one as ordered by orderPair).
     // Box2D 2.4 finds manifold points where the skins (polygonRadius around every polygon and
     // segment) overlap and measures separations between the skins. perpdot measures them between
-    // the true surfaces, so the skin is only a speculative margin; `box2dSkin` keeps Box2D's
-    // separations (WorldDef::box2dSkin: bodies rest where b2World rests them).
-    Manifold collide(ChildKey a, const Transform& xfA, ChildKey b, const Transform& xfB, bool box2dSkin) const;
+    // the true surfaces (less keptSkin of each skin with Skin::Kept), so the skin is only a
+    // speculative margin; Skin::Box2D keeps Box2D's separations (WorldDef::box2dSkin: bodies rest
+    // where b2World rests them).
+    Manifold collide(ChildKey a, const Transform& xfA, ChildKey b, const Transform& xfB, Skin skin) const;
     // True when the pair must be swapped so that collide() receives (A, B) in Box2D's order
     // (polygon before circle, segment/chain before either).
     static bool mustSwap(ShapeType a, ShapeType b);

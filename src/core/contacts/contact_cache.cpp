@@ -93,7 +93,7 @@ void addPair(World::Impl& w, const NewPair& pair) {
     c.proxyB = proxyB;
     c.a = keyA;
     c.b = keyB;
-    bindShapes(cache, index, *sa, *sb);
+    bindShapes(cache, index, *sa, *sb, contactSkin(w.def, w.bodies[sa->body].type, w.bodies[sb->body].type));
     c.sensor = sa->sensor || sb->sensor;
     if (!c.sensor) mixMaterials(c, *sa, *sb);
     cache.bodyLists.link(cache.contacts, index, 0, c.bodyA);
@@ -119,9 +119,9 @@ Narrowphase collideContact(World::Impl& w, int index) {
     const ReuseLimits limits{.distance = w.def.contactReuseDistance,
                              .reach = c.pointCount > 0 ? 0.0f : reach(),
                              .box2dMargin = collide::box2dSkin(c.typeA) + collide::box2dSkin(c.typeB),
-                             .skinOffset = w.def.box2dSkin ? 0.0f : collide::skinOffset(c.typeA) + collide::skinOffset(c.typeB)};
+                             .skinOffset = collide::skinOffset(c.typeA, c.skin) + collide::skinOffset(c.typeB, c.skin)};
     if (!reuseManifold(c, ba, bb, limits))
-        takeManifold(c, collision.collide(c.a, ba.xf, c.b, bb.xf, w.def.box2dSkin), ba, bb, c.turnsA && c.turnsB);
+        takeManifold(c, collision.collide(c.a, ba.xf, c.b, bb.xf, c.skin), ba, bb, c.turnsA && c.turnsB);
     c.touching = c.pointCount > 0;
     return wasTouching ? Narrowphase::WasTouching : Narrowphase::WasNotTouching;
 }
@@ -261,7 +261,12 @@ void updatePairs(World::Impl& w) {
     }
 }
 
-void bindShapes(ContactCache& cache, int contact, const ShapeData& a, const ShapeData& b) {
+collide::Skin contactSkin(const WorldDef& def, BodyType a, BodyType b) {
+    if (def.box2dSkin) return collide::Skin::Box2D;
+    return a == BodyType::Dynamic && b == BodyType::Dynamic ? collide::Skin::None : collide::Skin::Kept;
+}
+
+void bindShapes(ContactCache& cache, int contact, const ShapeData& a, const ShapeData& b, collide::Skin skin) {
     Contact& c = cache.contacts[contact];
     c.bodyA = a.body;
     c.bodyB = b.body;
@@ -269,6 +274,7 @@ void bindShapes(ContactCache& cache, int contact, const ShapeData& a, const Shap
     c.turnsB = isFlat(b);
     c.typeA = a.type;
     c.typeB = b.type;
+    c.skin = skin;
     const auto capacity = static_cast<size_t>(cache.contacts.capacity());
     cache.bodiesOf.resize(capacity);
     cache.touchingPoints.resize(capacity);

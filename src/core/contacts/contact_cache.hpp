@@ -50,6 +50,9 @@ struct Contact {
     // The pose at the last narrowphase (manifold_reuse.hpp): B's centre in A's frame, both angles,
     // and their rotations R(θ) (derived from the angles, not saved: snapshot.cpp derives them again).
     bool reuseValid = false;
+    // Where its separations are measured (contactSkin), from bindShapes; beside the pose the
+    // narrowphase reads, in the padding before reuseOffset.
+    collide::Skin skin = collide::Skin::Kept;
     Vec2 reuseOffset;
     float reuseAngleA = 0, reuseAngleB = 0;
     Rot reuseRotA, reuseRotB;
@@ -126,9 +129,15 @@ void destroyContact(World::Impl& world, int contact);  // with its end event
 // order: serial work that no stage reads before the next updatePairs, done on the worker that
 // re-fits the tree (refit_ahead.cpp) beside the solve.
 void releaseApartContacts(World::Impl& world);
-// What a contact takes from its two shapes for its whole life: their bodies, types and whether
-// its points turn with them (a shape's geometry never changes).
-void bindShapes(ContactCache& cache, int contact, const ShapeData& a, const ShapeData& b);
+// Where a contact's separations are measured (collide::Skin): Box2D's skins on WorldDef::box2dSkin;
+// else a pair with a static or kinematic body keeps keptSkin of each skin as a rest gap, so a body
+// slides over the seams between separate pieces of ground or platform; two dynamic bodies rest on
+// their true surfaces, so a stack of n boxes stands n rest gaps no taller than built.
+collide::Skin contactSkin(const WorldDef& def, BodyType a, BodyType b);
+// What a contact takes from its two shapes for its whole life: their bodies, types, whether its
+// points turn with them (a shape's geometry never changes) and `skin`, contactSkin of its bodies
+// (a body that changes type ends its contacts).
+void bindShapes(ContactCache& cache, int contact, const ShapeData& a, const ShapeData& b, collide::Skin skin);
 
 // Box2D's mixing rules, so cross-checks compare like with like.
 inline float mixFriction(float a, float b) { return std::sqrt(a * b); }

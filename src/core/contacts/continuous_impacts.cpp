@@ -196,8 +196,9 @@ void resolveImpact(World::Impl& w, const MoverPair& pair, float t, const StepCon
     const bool swap = collide::CollisionSystem::mustSwap(shapeA.type, shapeB.type);
     // Box2D's separations: the time of impact stops at Box2D's target distance in skin terms, and
     // going back by the skin overlap leaves the pair a skin apart, never inside each other.
+    constexpr collide::Skin skin = collide::Skin::Box2D;
     const collide::Manifold manifold =
-        swap ? w.collision.collide(pair.keyB, xfB, pair.keyA, xfA, true) : w.collision.collide(pair.keyA, xfA, pair.keyB, xfB, true);
+        swap ? w.collision.collide(pair.keyB, xfB, pair.keyA, xfA, skin) : w.collision.collide(pair.keyA, xfA, pair.keyB, xfB, skin);
     if (manifold.pointCount == 0) {  // nothing to push on: both wait at the impact (continuous.cpp's answer)
         for (Mover* m : {&a, &b}) {
             restartAt(*m, t);

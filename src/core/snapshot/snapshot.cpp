@@ -464,7 +464,7 @@ void World::restore(std::span<const uint8_t> bytes) {
         if (sa.body == sb.body || !collide::CollisionSystem::canCollide(sa.type, sb.type) ||
             collide::CollisionSystem::mustSwap(sa.type, sb.type))
             in.fail("contact " + std::to_string(i) + " pairs shapes that cannot collide");
-        bindShapes(w.contactCache, i, sa, sb);
+        bindShapes(w.contactCache, i, sa, sb, contactSkin(w.def, w.bodies[sa.body].type, w.bodies[sb.body].type));
     }
     w.contactCache.contacts.restoreFreeList(readFreeList(in, contactAlive, "free contact"));
     std::vector<bool> edgeSeen(2 * static_cast<size_t>(contactCount), false);

@@ -114,8 +114,8 @@ constexpr auto fields(const ContactPointState*) {
                       field("baseSeparation", &P::baseSeparation).anyBits().since(4)};
 }
 
-// Not listed: alive (written by the pool); pairKey, proxies, bodies, turnsA, turnsB, typeA, typeB (derived
-// from the child keys); points (the first pointCount, written after the list); edges (written as body lists);
+// Not listed: alive (written by the pool); pairKey, proxies, bodies, turnsA, turnsB, typeA, typeB, skin (derived
+// from the child keys and the bodies' types); points (the first pointCount, written after the list); edges (written as body lists);
 // reuseRotA, reuseRotB (R of the reuse angles, derived on reading).
 static_assert(reviewedLayout<Contact, 232>);
 constexpr auto fields(const Contact*) {
