@@ -26,7 +26,6 @@ namespace {
 JointStore& store(World::Impl& w) { return *w.joints; }
 const JointStore& store(const World::Impl& w) { return *w.joints; }
 JointScratch& jointScratch(World::Impl& w) { return *w.scratch.joints; }
-const JointScratch& jointScratch(const World::Impl& w) { return *w.scratch.joints; }
 
 // A joint that forbids collision between its bodies removes their contacts.
 void destroyContactsBetween(World::Impl& w, int bodyA, int bodyB) {
