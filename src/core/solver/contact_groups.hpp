@@ -32,7 +32,7 @@ struct ContactScratch;  // step_scratch.hpp
 struct SolverBodies;
 
 struct ContactGroups {
-    static constexpr int maxRows = 256;        // K is n x n: about n³/6 multiply-adds to factor, once a step
+    static constexpr int maxRows = 128;        // K is n x n: about n³/6 multiply-adds to factor, once a step
     static constexpr int maxTotalRows = 1024;  // all groups of a step: bounds their work and storage
     static constexpr float loadTrigger = 8;    // in g: λn K_ii / hs of the most loaded row
     std::vector<int> constraints;            // indices into World::Impl::constraints, group by group
