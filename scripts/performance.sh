@@ -156,7 +156,7 @@ takes less time; **bold** marks the scenes where perpdot is behind Box2D v3.
 - **perpdot** is timed by \`perpdot bench SCENE --engine perpdot --repeat 1\` over the scene's whole
   step count (world creation excluded), the Release build of this repository.
 - **Box2D v3** is timed by its own \`benchmark -t=1 -w=1 -b=NAME -r=1\`, built by the user from
-  Box2D v3's sources (Release, its default SIMD: SSE2 on x86-64) and passed in
+  Box2D v3's sources (Release, \`BOX2D_VALIDATE=OFF\` as a shipped game builds it, its default SIMD: SSE2 on x86-64) and passed in
   \`PERPDOT_BOX2D_V3_BENCHMARK\`; this repository holds no Box2D v3 code. It times steps 2 … N of N;
   the script divides by N − 1. Without that program the column says "not measured".
 - The two alternate round by round, so that both see the same load on a shared machine; each
