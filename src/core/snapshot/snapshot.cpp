@@ -10,6 +10,7 @@
 // touched: corrupt bytes give perpdot::Error and leave the world as it was.
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -72,6 +73,15 @@ void readBody(ByteReader& in, Body& b, std::vector<int>& edges, int bodyCount, i
     if (b.mass < 0 || b.invMass < 0 || b.inertia < 0 || b.invInertia < 0) in.fail("negative mass or inertia");
     if (b.jointCount < 0 || b.jointCount > 0x3FFFFFFF) in.fail("joint count " + std::to_string(b.jointCount) + " is out of range");
     if (b.islandNext < -1 || b.islandNext >= bodyCount) in.fail("island link " + std::to_string(b.islandNext) + " is out of range");
+    // The centre of mass is its shapes' centroid, so within their range of the origin, and the step
+    // derives the origin from it: c − R·localCenter. Beyond that range, or away from
+    // transformPoint(xf, localCenter), the origin of the next step differs from the one saved or
+    // overflows (a fuzzed 1.7e38 m centre with a −1.7e38 m local centre: an infinite origin).
+    if (!withinShapeRange(b.localCenter)) in.fail("body local centre is beyond the shape range (maxShapeCoordinate)");
+    const Vec2 fromOrigin = transformPoint(b.xf, b.localCenter);
+    const float tolerance = 1e-4f * (1.0f + std::fabs(b.center.x) + std::fabs(b.center.y) + std::fabs(b.localCenter.x) + std::fabs(b.localCenter.y));
+    if (!(std::fabs(fromOrigin.x - b.center.x) <= tolerance && std::fabs(fromOrigin.y - b.center.y) <= tolerance))
+        in.fail("body centre of mass is not where its origin and local centre put it");
     b.shapes.resize(in.count(4, "body shape"));
     for (int& s : b.shapes) s = in.integer(0, shapeLimit - 1, "shape index");
     const int edgeCount = in.count(4, "contact edge");
