@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "joint_helpers.hpp"
@@ -150,6 +151,55 @@ TEST(RevoluteLoop, StraightBridgeCarriesAHeavyPlank) {
     const Motion m = run(world, planks, joints, 180);
     EXPECT_LT(m.worstGap, 0.01f * 0.5f);
     EXPECT_LT(m.energyRise, 1e-3f * m.energyScale);
+}
+
+// Outside the direct solve (docs/stress.md, "What the direct solve does not take"): hinges with a
+// limit, and groups of more than 32 hinges, run in the sequential passes. A heavy end then opens
+// them — these tests pin how far, over 10 s — while the motion stays finite and takes no energy in.
+// 20 (or `links`) links of 0.5 m pinned at one end, released horizontal, the last `ratio` times a
+// link's mass; `limited`: every hinge within ±1 rad.
+struct Chain {
+    std::vector<BodyId> links;
+    std::vector<JointId> joints;
+};
+Chain heavyChain(World& world, int links, float ratio, bool limited) {
+    const Vec2 pin{0.0f, 40.0f};
+    BodyId previous = staticBody(world, pin);
+    Chain c;
+    for (int i = 0; i < links; ++i) {
+        c.links.push_back(box(world, pin + Vec2{(static_cast<float>(i) + 0.5f) * 0.5f, 0.0f}, 0.25f, 0.05f, i == links - 1 ? ratio : 1.0f));
+        RevoluteJointDef def = hinge(world, previous, c.links.back(), pin + Vec2{static_cast<float>(i) * 0.5f, 0.0f});
+        if (limited) def.enableLimit = true, def.lowerAngle = -1.0f, def.upperAngle = 1.0f;
+        c.joints.push_back(world.createJoint(def));
+        previous = c.links.back();
+    }
+    return c;
+}
+
+// The worst gap over 10 s, after checking that every link ends finite and the energy never rose.
+float sequentialGap(int links, float ratio, bool limited) {
+    World world(WorldDef{.gravity = {0.0f, -g}});
+    const Chain c = heavyChain(world, links, ratio, limited);
+    const Motion m = run(world, c.links, c.joints, 600);
+    for (BodyId b : c.links) EXPECT_TRUE(std::isfinite(world.position(b).x) && std::isfinite(world.position(b).y));
+    EXPECT_LT(m.energyRise, 1e-3f * m.energyScale) << "the energy does not grow";
+    return m.worstGap;
+}
+
+TEST(RevoluteTree, LimitedHeavyChainIsLeftToTheSequentialPasses) {
+    EXPECT_LT(sequentialGap(20, 100.0f, true), 0.2f);  // 0.13 m
+    const float at1000 = sequentialGap(20, 1000.0f, true), at10k = sequentialGap(20, 10000.0f, true);
+    EXPECT_GT(at1000, 1.0f);  // 4.2 m: a limit holding the heavy end needs its row in the block
+    EXPECT_LT(at1000, 10.0f);
+    EXPECT_GT(at10k, 10.0f);  // 36 m
+    EXPECT_LT(at10k, 100.0f);
+}
+
+TEST(RevoluteTree, ChainOfMoreThan32HingesIsLeftToTheSequentialPasses) {
+    EXPECT_LT(sequentialGap(40, 100.0f, false), 0.1f);  // 6.7 cm
+    const float at1000 = sequentialGap(40, 1000.0f, false);
+    EXPECT_GT(at1000, 1.0f);  // 3.5 m
+    EXPECT_LT(at1000, 10.0f);
 }
 
 }  // namespace
