@@ -533,10 +533,10 @@ void CollisionSystem::shiftOrigin(Vec2 newOrigin) {
 
 namespace {
 
-// What perpdot adds to a b2 shape's separations (collision.hpp's skinOffset, by b2 type).
+// What perpdot adds to a b2 shape's separations: collision.hpp's skinOffset, where polygons and
+// edges have Box2D's polygon skin and circles and capsules (b2 polygons with a radius) none.
 float skinOffset(const b2Shape& shape, Skin skin) {
-    if (skin == Skin::Box2D || shape.m_type == b2Shape::e_circle || isCapsule(shape)) return 0.0f;
-    return skin == Skin::Kept ? polygonRadius - keptSkin : polygonRadius;
+    return shape.m_type == b2Shape::e_circle || isCapsule(shape) ? 0.0f : collide::skinOffset(ShapeType::Polygon, skin);
 }
 
 }  // namespace

@@ -123,10 +123,9 @@ void finalizeBodies(World::Impl& w, const StepContext& ctx) {
     enum Motion : uint8_t { Moved, MovedInside, Fast, FastInside, NonFinite };
     // The solver's velocities, within the speed limits (restitution comes after the last clamp of
     // integratePositions), and the pose (c1, a1) into the body.
-    const float maxLinearSpeed = w.def.maxLinearSpeed;
     const float maxSpin = maxAngularSpeed(ctx.invHs);
     const auto moveTo = [&](Body& b, const BodyState& s, Vec2 c1, float a1) {
-        b.v = clampSpeed(s.v, maxLinearSpeed);
+        b.v = clampSpeed(s.v, ctx.maxLinearSpeed);
         b.w = clampAngularSpeed(s.w, maxSpin);
         b.center = c1;
         b.angle = a1;

@@ -254,7 +254,7 @@ void resolveImpact(World::Impl& w, const MoverPair& pair, float t, const StepCon
     }
     // The integration's speed limits hold here too (speed_limits.hpp).
     for (Mover* m : {&a, &b}) {
-        m->v = clampSpeed(m->v, w.def.maxLinearSpeed);
+        m->v = clampSpeed(m->v, ctx.maxLinearSpeed);
         m->w = clampAngularSpeed(m->w, maxAngularSpeed(ctx.invHs));
     }
     // Back along the old paths to the first touch (not before either path began), then on with the

@@ -45,7 +45,7 @@ struct StepContext {
     Softness jointSoftness;
     float restitutionThreshold = 1.0f;
     float maxBiasVelocity = 3.0f;
-    float maxLinearSpeed = 0;  // WorldDef::maxLinearSpeed: speeds are clamped to it each substep
+    float maxLinearSpeed = 0;  // WorldDef::maxLinearSpeed: the step clamps every speed it writes to it
     // Overlap left unpushed: Box2D 2.4's linear slop on its skin (WorldDef::box2dSkin), else none.
     float pushSlop = 0.0f;
     bool enableWarmStarting = true;
