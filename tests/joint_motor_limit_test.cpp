@@ -53,6 +53,25 @@ TEST(JointMotor, StalledRevoluteMotorRespectsMaxTorque) {
     EXPECT_LT(world.angularVelocity(arm), 0.0f);  // it falls despite the motor
 }
 
+// Ten m/s straight down on `ball` for half a second, with the motor's reaction (|torque| or |force|)
+// checked against `maxReaction` at every step: the struck body's largest |speed| and the motor's
+// largest reaction.
+struct Blow {
+    float fastest = 0.0f, strongest = 0.0f;
+};
+template <class Speed, class Reaction>
+Blow strike(World& world, BodyId ball, float maxReaction, Speed speed, Reaction reaction) {
+    world.setLinearVelocity(ball, {0.0f, -10.0f});
+    Blow blow;
+    for (int i = 0; i < 30; ++i) {
+        world.step(h);
+        blow.fastest = std::max(blow.fastest, std::fabs(speed()));
+        blow.strongest = std::max(blow.strongest, std::fabs(reaction()));
+        EXPECT_LE(std::fabs(reaction()), maxReaction * 1.0001f) << "step " << i;
+    }
+    return blow;
+}
+
 // A blow far beyond a motor's strength: a 0.1 kg arm held at rest by a 1 N·m motor, struck near
 // its tip by a ball 50 times its mass at 10 m/s (stress case hinge_hit without the limit). The
 // ball turns the arm; the motor resists with exactly its maximum torque at every step, never more.
@@ -66,16 +85,10 @@ TEST(JointMotor, StruckMotorNeverExceedsItsMaxTorque) {
     def.maxMotorTorque = 1.0f;
     const JointId motor = world.createJoint(def);
     const BodyId ball = disc(world, {0.9f, 0.25f}, 0.1f, 5.0f / (3.14159265f * 0.01f));  // 5 kg
-    world.setLinearVelocity(ball, {0.0f, -10.0f});
-    float fastest = 0.0f, strongest = 0.0f;
-    for (int i = 0; i < 30; ++i) {
-        world.step(h);
-        fastest = std::max(fastest, std::fabs(world.angularVelocity(arm)));
-        strongest = std::max(strongest, std::fabs(world.jointReactionTorque(motor)));
-        EXPECT_LE(std::fabs(world.jointReactionTorque(motor)), def.maxMotorTorque * 1.0001f) << "step " << i;
-    }
-    EXPECT_GT(fastest, 5.0f);                                          // the blow overpowered the motor
-    EXPECT_NEAR(strongest, def.maxMotorTorque, 1e-3f * def.maxMotorTorque);  // which pushed back with all it has
+    const Blow blow = strike(world, ball, def.maxMotorTorque, [&] { return world.angularVelocity(arm); },
+                             [&] { return world.jointReactionTorque(motor); });
+    EXPECT_GT(blow.fastest, 5.0f);                                               // the blow overpowered the motor
+    EXPECT_NEAR(blow.strongest, def.maxMotorTorque, 1e-3f * def.maxMotorTorque);  // which pushed back with all it has
 }
 
 // The same blow along a prismatic motor's axis: a 0.25 kg slider held by a 1 N motor, struck by a
@@ -92,17 +105,11 @@ TEST(JointMotor, StruckPrismaticMotorNeverExceedsItsMaxForce) {
     def.motorSpeed = 0.0f;
     def.maxMotorForce = 1.0f;
     const JointId motor = world.createJoint(def);
-    const BodyId ball = disc(world, {0.0f, 0.5f}, 0.1f, 12.5f / (3.14159265f * 0.01f));
-    world.setLinearVelocity(ball, {0.0f, -10.0f});
-    float fastest = 0.0f, strongest = 0.0f;
-    for (int i = 0; i < 30; ++i) {
-        world.step(h);
-        fastest = std::max(fastest, std::fabs(world.linearVelocity(slider).y));
-        strongest = std::max(strongest, std::fabs(world.jointReactionForce(motor).y));
-        EXPECT_LE(std::fabs(world.jointReactionForce(motor).y), def.maxMotorForce * 1.0001f) << "step " << i;
-    }
-    EXPECT_GT(fastest, 5.0f);
-    EXPECT_NEAR(strongest, def.maxMotorForce, 1e-3f * def.maxMotorForce);
+    const BodyId ball = disc(world, {0.0f, 0.5f}, 0.1f, 12.5f / (3.14159265f * 0.01f));  // 12.5 kg
+    const Blow blow = strike(world, ball, def.maxMotorForce, [&] { return world.linearVelocity(slider).y; },
+                             [&] { return world.jointReactionForce(motor).y; });
+    EXPECT_GT(blow.fastest, 5.0f);
+    EXPECT_NEAR(blow.strongest, def.maxMotorForce, 1e-3f * def.maxMotorForce);
 }
 
 TEST(JointMotor, PrismaticMotorAcceleratesAtMaxForceThenHoldsSpeed) {
