@@ -5,7 +5,7 @@
 # Usage: hub_reach_test.sh REPOSITORY_ROOT
 set -u
 root=$1
-max=25
+max=21
 cd "$root/src" || exit 1
 includers=$(grep -rl '#include "core/world/world_impl.hpp"' . | sort)
 count=$(echo "$includers" | grep -c .)

@@ -1,5 +1,6 @@
-// The body stages of the step (stages.hpp): gather awake bodies and integrate their forces, apply
-// a substep's forces, x += hs v, and write the solver state back (with continuous collision).
+// The body stages of the step (stages.hpp, and integrate.hpp for the two the substeps run): gather
+// awake bodies and integrate their forces, apply a substep's forces, x += hs v, and write the
+// solver state back (with continuous collision).
 //
 // Forces are integrated semi-implicitly (v first, then x). A body with no touching contact and
 // no joint is integrated once per step in Box2D 2.4's order — v += h (g·gravityScale + F/m),

@@ -8,7 +8,6 @@
 #include "core/solver/cholesky.hpp"
 #include "core/solver/contact_prepare.hpp"
 #include "core/base/union_find.hpp"
-#include "core/world/world_impl.hpp"
 
 namespace perpdot {
 namespace {
@@ -34,7 +33,7 @@ struct RowSide {
 };
 
 // −n, −perpDot(rA, n) for A; n, perpDot(rB, n) for B.
-std::array<RowSide, 2> sidesOf(const World::Impl& w, const ContactConstraint& c, const ContactRows<float>& rows,
+std::array<RowSide, 2> sidesOf(const SolverWorld& w, const ContactConstraint& c, const ContactRows<float>& rows,
                                const ContactPointRows<float>& cp) {
     const Vec2 n = rows.normal;
     const RowMasses m = rowMasses(w.scratch.bodies, c.indexA, c.indexB);
@@ -53,7 +52,7 @@ double coupling(const std::array<RowSide, 2>& r, const std::array<RowSide, 2>& s
 }
 
 // Rows of group `group` assembled into K and factored into L; false if K is singular.
-bool assemble(World::Impl& w, ContactGroups& g, int group) {
+bool assemble(const SolverWorld& w, ContactGroups& g, int group) {
     const int first = g.rowStart[group], n = g.rowStart[group + 1] - first;
     double* K = &g.K[g.matrixStart[group]];
     double* L = &g.L[g.matrixStart[group]];
@@ -93,7 +92,7 @@ void remember(const ContactScratch& s, ContactGroups& g, bool noneSmall) {
 
 }  // namespace
 
-void findContactGroups(World::Impl& w, const StepContext& ctx) {
+void findContactGroups(const SolverWorld& w, const StepContext& ctx) {
     ContactGroups& g = w.scratch.contacts.groups;
     const int slots = static_cast<int>(w.scratch.bodies.states.size());
     const int count = static_cast<int>(w.scratch.contacts.constraints.size());
@@ -104,7 +103,7 @@ void findContactGroups(World::Impl& w, const StepContext& ctx) {
     g.rowStart.assign(1, 0);
     g.matrixStart.assign(1, 0);
     // Loads are measured in g: λn K_ii / hs ≥ loadTrigger·g, i.e. λn ≥ loadTrigger·g·hs·normalMass.
-    const float loadImpulse = ContactGroups::loadTrigger * length(w.def.gravity) * ctx.hs;
+    const float loadImpulse = ContactGroups::loadTrigger * length(w.gravity) * ctx.hs;
     // From the contact: the rows are prepared once the groups are known (contact_prepare.hpp).
     auto loaded = [&](const ContactConstraint& c) {
         const Contact& contact = w.contactCache.contacts[c.contact];

@@ -30,12 +30,13 @@ namespace perpdot {
 
 struct ContactScratch;  // step_scratch.hpp
 struct SolverBodies;
+struct SolverWorld;     // solver_world.hpp
 
 struct ContactGroups {
     static constexpr int maxRows = 128;        // K is n x n: about n³/6 multiply-adds to factor, once a step
     static constexpr int maxTotalRows = 1024;  // all groups of a step: bounds their work and storage
     static constexpr float loadTrigger = 8;    // in g: λn K_ii / hs of the most loaded row
-    std::vector<int> constraints;            // indices into World::Impl::constraints, group by group
+    std::vector<int> constraints;            // indices into ContactScratch::constraints, group by group
     std::vector<int> start;                  // group g is constraints[start[g] .. start[g + 1])
     std::vector<std::array<int, 2>> rows;    // (constraint, point) of each normal row, group by group
     std::vector<int> rowStart;               // group g's rows are rows[rowStart[g] .. rowStart[g + 1])
@@ -57,7 +58,7 @@ struct ContactGroups {
 
 // The groups of this step's constraints to solve directly (after the select of prepareContacts), their
 // rows prepared and K factored.
-void findContactGroups(World::Impl& world, const StepContext& ctx);
+void findContactGroups(const SolverWorld& world, const StepContext& ctx);
 // A pass of every group: warm start, or its normal rows as one system then its tangent rows.
 void contactGroupRows(ContactScratch& contacts, SolverBodies& bodies, const StepContext& ctx, RowPass pass);
 

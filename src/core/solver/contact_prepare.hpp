@@ -6,11 +6,9 @@
 // any rows exist.
 #pragma once
 
-#include "core/bodies/body_store.hpp"
 #include "core/solver/contact_solver_wide.hpp"
+#include "core/solver/solver_world.hpp"
 #include "core/world/step_context.hpp"
-#include "core/world/step_scratch.hpp"
-#include "perpdot/world.hpp"
 
 namespace perpdot {
 
@@ -26,15 +24,15 @@ inline RowMasses rowMasses(const SolverBodies& bodies, int slotA, int slotB) {
 
 // The rows of constraint c (its contact and solver slots set, SolverBodies::freeVelocities filled):
 // its own `rows`, gathered and derived (deriveContactRows, contact_solver_wide.hpp).
-void prepareContactRows(const World::Impl& world, const StepContext& ctx, const ContactConstraint& c, ContactRows<float>& rows);
+void prepareContactRows(const SolverWorld& world, const StepContext& ctx, const ContactConstraint& c, ContactRows<float>& rows);
 // Or the gather alone into a block of four or eight lanes (row_lanes.hpp), the block's lanes to be
 // derived together: lane l from constraints[l], l < used, the others zeros; present: 1 where a
 // lane's point is a manifold point. Each contact's values in a row are read as runs of four or
 // eight floats and turned into lanes.
-void gatherContactLanes(const World::Impl& world, const ContactConstraint* const (&constraints)[4], int used, ContactBlock<4>& block,
+void gatherContactLanes(const SolverWorld& world, const ContactConstraint* const (&constraints)[4], int used, ContactBlock<4>& block,
                         const float (&present)[2][4]);
 #ifdef PERPDOT_AVX2
-void gatherContactLanes(const World::Impl& world, const ContactConstraint* const (&constraints)[8], int used, ContactBlock<8>& block,
+void gatherContactLanes(const SolverWorld& world, const ContactConstraint* const (&constraints)[8], int used, ContactBlock<8>& block,
                         const float (&present)[2][8]);
 #endif
 

@@ -5,8 +5,8 @@
 #include <cstring>
 
 #include "core/solver/contact_prepare.hpp"
+#include "core/solver/contact_solver.hpp"
 #include "core/solver/impact_propagation.hpp"
-#include "core/world/world_impl.hpp"
 
 namespace perpdot {
 
@@ -16,7 +16,7 @@ namespace {
 // forces still to come. Restitution reverses the approach speed at the end of the step, forces
 // included: in the discrete fall a ball hits the ground with that speed, and an e = 1 bounce then
 // climbs exactly as many steps as it fell (docs/stress.md). Only v and ω are set.
-BodyState velocityWithoutContact(const World::Impl& w, const StepContext& ctx, int slot) {
+BodyState velocityWithoutContact(const SolverWorld& w, const StepContext& ctx, int slot) {
     const BodyState& now = w.scratch.bodies.states[slot];
     const SubstepForces& f = w.scratch.bodies.substepForces[slot];
     BodyState s;
@@ -28,7 +28,7 @@ BodyState velocityWithoutContact(const World::Impl& w, const StepContext& ctx, i
 
 // The Solver fields of contactRowFields (contact_solver_wide.hpp): the bodies' 1/I, whether the anchors turn.
 template <std::size_t lanes>
-void gatherOtherFields(const World::Impl& w, const ContactConstraint* const (&constraints)[lanes], const Contact* const (&contacts)[lanes],
+void gatherOtherFields(const SolverWorld& w, const ContactConstraint* const (&constraints)[lanes], const Contact* const (&contacts)[lanes],
                        int used, float* rows) {
     using Rows = ContactRows<float>;
     for (int lane = 0; lane < used; ++lane) {
@@ -46,7 +46,7 @@ void gatherOtherFields(const World::Impl& w, const ContactConstraint* const (&co
 // pointRunFields: the separation in baseSeparation, last step's impulses as they were, zeros for
 // no manifold point), and the others (gatherOtherFields). With deriveContactRows every field is
 // written: a reused slot keeps nothing old.
-void gatherRows(const World::Impl& w, const ContactConstraint& c, ContactRows<float>& out) {
+void gatherRows(const SolverWorld& w, const ContactConstraint& c, ContactRows<float>& out) {
     using Rows = ContactRows<float>;
     using PointRows = ContactPointRows<float>;
     float* rows = floatsOf(out);
@@ -67,7 +67,7 @@ void gatherRows(const World::Impl& w, const ContactConstraint& c, ContactRows<fl
 
 }  // namespace
 
-void prepareContactRows(const World::Impl& w, const StepContext& ctx, const ContactConstraint& c, ContactRows<float>& rows) {
+void prepareContactRows(const SolverWorld& w, const StepContext& ctx, const ContactConstraint& c, ContactRows<float>& rows) {
     gatherRows(w, c, rows);
     const float present[2] = {c.pointCount > 0 ? 1.0f : 0.0f, c.pointCount > 1 ? 1.0f : 0.0f};
     deriveContactRows(rows, w.scratch.bodies.freeVelocities[c.indexA], w.scratch.bodies.freeVelocities[c.indexB], present, ctx);
@@ -77,7 +77,7 @@ namespace {
 
 // The lanes' contacts, or for an empty lane a contact of zeros.
 template <std::size_t lanes>
-void laneContacts(const World::Impl& w, const ContactConstraint* const (&constraints)[lanes], int used, const Contact* (&contacts)[lanes]) {
+void laneContacts(const SolverWorld& w, const ContactConstraint* const (&constraints)[lanes], int used, const Contact* (&contacts)[lanes]) {
     static const Contact none{};
     for (std::size_t lane = 0; lane < lanes; ++lane)
         contacts[lane] = static_cast<int>(lane) < used ? &w.contactCache.contacts[constraints[lane]->contact] : &none;
@@ -94,7 +94,7 @@ void gatherRuns(ContactBlock<8>& block, const float* const (&head)[8], const flo
 #endif
 
 template <std::size_t lanes>
-void gatherLanes(const World::Impl& w, const ContactConstraint* const (&constraints)[lanes], int used, ContactBlock<lanes>& block,
+void gatherLanes(const SolverWorld& w, const ContactConstraint* const (&constraints)[lanes], int used, ContactBlock<lanes>& block,
                  const float (&present)[2][lanes]) {
     const Contact* contacts[lanes];
     laneContacts(w, constraints, used, contacts);
@@ -110,13 +110,13 @@ void gatherLanes(const World::Impl& w, const ContactConstraint* const (&constrai
 
 }  // namespace
 
-void gatherContactLanes(const World::Impl& w, const ContactConstraint* const (&constraints)[4], int used, ContactBlock<4>& block,
+void gatherContactLanes(const SolverWorld& w, const ContactConstraint* const (&constraints)[4], int used, ContactBlock<4>& block,
                         const float (&present)[2][4]) {
     gatherLanes(w, constraints, used, block, present);
 }
 
 #ifdef PERPDOT_AVX2
-void gatherContactLanes(const World::Impl& w, const ContactConstraint* const (&constraints)[8], int used, ContactBlock<8>& block,
+void gatherContactLanes(const SolverWorld& w, const ContactConstraint* const (&constraints)[8], int used, ContactBlock<8>& block,
                         const float (&present)[2][8]) {
     gatherLanes(w, constraints, used, block, present);
 }
@@ -125,8 +125,8 @@ void gatherContactLanes(const World::Impl& w, const ContactConstraint* const (&c
 // The touching contacts with an awake body, in pool order, selected by the workers: their
 // contacts and bodies' solver slots. Their rows are prepared once their place is known: in a block
 // (prepareContactBlocks), with the overflow or in a contact group.
-void prepareContacts(World::Impl& w, const StepContext& ctx) {
-    StepScratch& s = w.scratch;
+void prepareContacts(const SolverWorld& w, const StepContext& ctx) {
+    const SolverWorld::Scratch& s = w.scratch;
     // A body is awake this step where it has a solver slot (a static one never is).
     // Contacts are not read: updateContacts left their points and bodies in dense arrays.
     const std::vector<int>& slotOf = s.bodies.bodySlots;

@@ -12,7 +12,7 @@
 #include <utility>
 
 #include "core/solver/contact_prepare.hpp"
-#include "core/world/world_impl.hpp"
+#include "core/solver/contact_solver.hpp"
 
 namespace perpdot {
 
@@ -46,12 +46,12 @@ decltype(auto) onContactBlocks(Scratch& contacts, Fn fn) {
 }
 
 // deriveContactBlock on a block's lanes: four here, eight in the AVX2 file.
-void deriveBlock(World::Impl& w, const StepContext& ctx, ContactBlock<4>& block, const float (&present)[2][4]) {
+void deriveBlock(const SolverWorld& w, const StepContext& ctx, ContactBlock<4>& block, const float (&present)[2][4]) {
     deriveContactBlock<Float4>(block, w.scratch.bodies.freeVelocities.data(), present, ctx);
 }
 
 #ifdef PERPDOT_AVX2
-void deriveBlock(World::Impl& w, const StepContext& ctx, ContactBlock<8>& block, const float (&present)[2][8]) {
+void deriveBlock(const SolverWorld& w, const StepContext& ctx, ContactBlock<8>& block, const float (&present)[2][8]) {
     deriveContactRows8(block, w.scratch.bodies.freeVelocities.data(), present, ctx);
 }
 #endif
@@ -74,9 +74,9 @@ void sizeBlocks(ContactScratch& contacts, std::vector<Block>& blocks) {
 // Blocks [begin, end) of colour `color`: the lanes' contact values gathered into them four or eight
 // at a time (gatherContactLanes), then the block's rows derived lanes at once (contact_prepare.hpp).
 template <class Block>
-void layOutBlocks(World::Impl& w, const StepContext& ctx, std::vector<Block>& blocks, int color, int begin, int end) {
+void layOutBlocks(const SolverWorld& w, const StepContext& ctx, std::vector<Block>& blocks, int color, int begin, int end) {
     constexpr int width = Block::lanes;
-    StepScratch& s = w.scratch;
+    const SolverWorld::Scratch& s = w.scratch;
     const int colorStart = s.contacts.colorStart[color], colorEnd = s.contacts.colorStart[color + 1];
     for (int b = begin; b < end; ++b) {
         Block& block = blocks[s.contacts.blockStart[color] + b];
@@ -118,8 +118,8 @@ void layOutBlocks(World::Impl& w, const StepContext& ctx, std::vector<Block>& bl
 // into their own rows. The lane width changes no result:
 // a colour's constraints share no moving body. The constraints of contact groups solved directly
 // (contact_groups.hpp) take no colour: their groups prepared them.
-void prepareContactBlocks(World::Impl& w, const StepContext& ctx) {
-    StepScratch& s = w.scratch;
+void prepareContactBlocks(const SolverWorld& w, const StepContext& ctx) {
+    const SolverWorld::Scratch& s = w.scratch;
     constexpr int overflow = GraphColoring::overflow;
     const int count = static_cast<int>(s.contacts.constraints.size());
     s.contacts.colors.resize(s.contacts.constraints.size());
@@ -163,7 +163,7 @@ float contactRowField(const ContactScratch& contacts, int k, std::size_t field) 
     });
 }
 
-void layOutContactBlocks(World::Impl& w, const StepContext& ctx, int color, int begin, int end) {
+void layOutContactBlocks(const SolverWorld& w, const StepContext& ctx, int color, int begin, int end) {
     onContactBlocks(w.scratch.contacts, [&](auto& blocks) { layOutBlocks(w, ctx, blocks, color, begin, end); });
 }
 
@@ -217,19 +217,19 @@ void storeContactRows(RowLane<lanes, const float> rows, Contact& contact) {
 
 // A block's accumulated impulses straight from its lanes into its contacts.
 template <class Block>
-void storeBlockImpulses(World::Impl& w, const Block& block) {
+void storeBlockImpulses(ContactCache& cache, const Block& block) {
     for (int lane = 0; lane < Block::lanes; ++lane)
         if (block.contact[lane] >= 0)
-            storeContactRows(RowLane<Block::lanes, const float>{block.rowData() + lane}, w.contactCache.contacts[block.contact[lane]]);
+            storeContactRows(RowLane<Block::lanes, const float>{block.rowData() + lane}, cache.contacts[block.contact[lane]]);
 }
 
 template <class Block>
-void storeBlocks(World::Impl& w, const std::vector<Block>& blocks, int begin, int end) {
+void storeBlocks(ContactCache& cache, const std::vector<Block>& blocks, int begin, int end) {
     for (int k = begin; k < end; ++k) {
         if (k + 1 < end)  // the next block's contacts load while this one's are written
             for (int contact : blocks[k + 1].contact)
-                if (contact >= 0) prefetchSolverFields<1>(w.contactCache.contacts[contact]);
-        storeBlockImpulses(w, blocks[k]);
+                if (contact >= 0) prefetchSolverFields<1>(cache.contacts[contact]);
+        storeBlockImpulses(cache, blocks[k]);
     }
 }
 
@@ -237,19 +237,18 @@ void storeBlocks(World::Impl& w, const std::vector<Block>& blocks, int begin, in
 
 // The impulses for the next step's warm start (a contact has one constraint: the workers write
 // apart). A colour's blocks from their lanes, as the solver's last stages (SolverStages) ...
-void storeContactBlocks(World::Impl& w, int color, int begin, int end) {
-    const int first = w.scratch.contacts.blockStart[color];
-    onContactBlocks(w.scratch.contacts, [&](const auto& blocks) { storeBlocks(w, blocks, first + begin, first + end); });
+void storeContactBlocks(const ContactScratch& contacts, ContactCache& cache, int color, int begin, int end) {
+    const int first = contacts.blockStart[color];
+    onContactBlocks(contacts, [&](const auto& blocks) { storeBlocks(cache, blocks, first + begin, first + end); });
 }
 
 // ... then those of the overflow constraints and of the contact groups solved directly, from their rows.
-void storeContactImpulses(World::Impl& w) {
-    StepScratch& s = w.scratch;
+void storeContactImpulses(const ContactScratch& contacts, ContactCache& cache) {
     auto storeRows = [&](int index) {
-        storeContactRows(RowLane<1, const float>{floatsOf(s.contacts.constraintRows[index])}, w.contactCache.contacts[s.contacts.constraints[index].contact]);
+        storeContactRows(RowLane<1, const float>{floatsOf(contacts.constraintRows[index])}, cache.contacts[contacts.constraints[index].contact]);
     };
-    for (int index : s.contacts.overflow) storeRows(index);
-    for (int index : s.contacts.groups.constraints) storeRows(index);
+    for (int index : contacts.overflow) storeRows(index);
+    for (int index : contacts.groups.constraints) storeRows(index);
 }
 
 }  // namespace perpdot

@@ -5,7 +5,6 @@
 #include <algorithm>
 
 #include "core/solver/contact_prepare.hpp"
-#include "core/world/world_impl.hpp"
 
 namespace perpdot {
 
@@ -57,8 +56,8 @@ bool impact(SolverBodies& bodies, Impacts& impacts, ImpactPoint& p, int sweep, c
 // contacts between two moving bodies, in contact order. A contact with a body outside the solver,
 // static, kinematic or asleep, has nothing to pass an impact on to: the restitution pass bounces
 // it. Returns the number of impacts.
-size_t firstSweep(World::Impl& w, const StepContext& ctx) {
-    StepScratch& s = w.scratch;
+size_t firstSweep(const SolverWorld& w, const StepContext& ctx) {
+    const SolverWorld::Scratch& s = w.scratch;
     size_t impacts = 0;
     for (int k = 0; k < static_cast<int>(s.contacts.constraints.size()); ++k) {
         const ContactConstraint& c = s.contacts.constraints[k];
@@ -86,11 +85,11 @@ size_t firstSweep(World::Impl& w, const StepContext& ctx) {
 
 }  // namespace
 
-void propagateImpacts(World::Impl& w, const StepContext& ctx) {
-    StepScratch& s = w.scratch;
+void propagateImpacts(const SolverWorld& w, const StepContext& ctx) {
+    const SolverWorld::Scratch& s = w.scratch;
     std::vector<ImpactPoint>& points = s.contacts.impacts.points;
     points.clear();
-    if (!w.shapes.anyRestitution) return;  // no shape has ever been elastic: nothing to look for
+    if (!w.anyRestitution) return;  // no shape has ever been elastic: nothing to look for
     // In order of impact: sweeps in contact order until no point meets, at most 4 impacts per
     // point; what still approaches then is left to the substeps and the restitution pass. After
     // the first sweep a point whose bodies no impact has changed since it was last looked at (in

@@ -13,6 +13,7 @@
 namespace perpdot {
 
 struct StepContext;
+struct SolverWorld;  // solver_world.hpp
 
 // A manifold point of an elastic contact between two moving bodies (solver slots), as an impact
 // reads it.
@@ -33,6 +34,6 @@ struct Impacts {
 
 // The impacts of this step (after the contact constraints are selected and their bodies' free
 // velocities found): the solver states and free velocities of the bodies they hit change alike.
-void propagateImpacts(World::Impl& world, const StepContext& ctx);
+void propagateImpacts(const SolverWorld& world, const StepContext& ctx);
 
 }  // namespace perpdot

@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <thread>
 
-#include "core/world/stages.hpp"
+#include "core/bodies/integrate.hpp"
+#include "core/joints/joint.hpp"
+#include "core/solver/contact_groups.hpp"
+#include "core/solver/contact_solver.hpp"
 
 namespace perpdot {
 
@@ -16,7 +19,7 @@ constexpr int contactsPerItem = 128;
 
 }  // namespace
 
-void SolverStages::build(const World::Impl& w) {
+void SolverStages::build(const SolverWorld& w) {
     using Work = SolverStage::Work;
     stages_.clear();
     const int bodies = static_cast<int>(w.scratch.bodies.states.size()) - 1;
@@ -34,10 +37,10 @@ void SolverStages::build(const World::Impl& w) {
     auto rows = [&](RowPass pass) {
         const bool joints = pass != RowPass::Restitution;
         for (int color = 0; color < GraphColoring::overflow; ++color) {
-            if (joints) add(Work::Joints, pass, color, jointUnitCount(*w.scratch.joints, color), jointUnitsPerItem);
+            if (joints) add(Work::Joints, pass, color, jointUnitCount(w.scratch.joints, color), jointUnitsPerItem);
             addContactBlocks(Work::Contacts, pass, color);
         }
-        if (joints) add(Work::SerialJoints, pass, 0, serialJointCount(*w.scratch.joints) > 0 ? 1 : 0, 1);
+        if (joints) add(Work::SerialJoints, pass, 0, serialJointCount(w.scratch.joints) > 0 ? 1 : 0, 1);
         add(Work::SerialContacts, pass, 0, w.scratch.contacts.overflow.empty() ? 0 : 1, 1);
         add(Work::ContactGroups, pass, 0, w.scratch.contacts.groups.start.size() > 1 ? 1 : 0, 1);
     };
@@ -53,24 +56,24 @@ void SolverStages::build(const World::Impl& w) {
     for (int color = 0; color < GraphColoring::overflow; ++color) addContactBlocks(Work::StoreContacts, RowPass::Restitution, color);
 }
 
-void SolverStages::execute(World::Impl& w, const StepContext& ctx, const SolverStage& stage, int begin, int end) const {
+void SolverStages::execute(const SolverWorld& w, const StepContext& ctx, const SolverStage& stage, int begin, int end) const {
     using Work = SolverStage::Work;
     switch (stage.work) {
         case Work::LayOutContacts: layOutContactBlocks(w, ctx, stage.color, begin, end); break;
         case Work::SubstepForces: applySubstepForces(w.scratch.bodies, begin + 1, end + 1); break;
-        case Work::Joints: jointRows(*w.scratch.joints, w.scratch.bodies, ctx, stage.pass, stage.color, begin, end); break;
-        case Work::SerialJoints: serialJointRows(*w.scratch.joints, w.scratch.bodies, ctx, stage.pass); break;
+        case Work::Joints: jointRows(w.scratch.joints, w.scratch.bodies, ctx, stage.pass, stage.color, begin, end); break;
+        case Work::SerialJoints: serialJointRows(w.scratch.joints, w.scratch.bodies, ctx, stage.pass); break;
         case Work::Contacts: contactRows(w.scratch.contacts, w.scratch.bodies, ctx, stage.pass, stage.color, begin, end); break;
         case Work::SerialContacts: serialContactRows(w.scratch.contacts, w.scratch.bodies, ctx, stage.pass); break;
         case Work::ContactGroups: contactGroupRows(w.scratch.contacts, w.scratch.bodies, ctx, stage.pass); break;
         case Work::IntegratePositions: integratePositions(w.scratch.bodies, ctx, begin + 1, end + 1); break;
-        case Work::StoreContacts: storeContactBlocks(w, stage.color, begin, end); break;
+        case Work::StoreContacts: storeContactBlocks(w.scratch.contacts, w.contactCache, stage.color, begin, end); break;
     }
 }
 
 // One worker's walk through every stage of every substep, then the stages after them: claim items
 // until none is left, then wait for the items other workers claimed.
-void SolverStages::participate(World::Impl& w, const StepContext& ctx, int worker, int workerCount) {
+void SolverStages::participate(const SolverWorld& w, const StepContext& ctx, int worker, int workerCount) {
     const size_t count = stages_.size();
     // Stage s in round `round` (a substep, or ctx.substeps for the stages after them), whose items
     // the round before left claimed `claimed` times.
@@ -100,7 +103,7 @@ void SolverStages::participate(World::Impl& w, const StepContext& ctx, int worke
     for (size_t s = substepStages_; s < count; ++s) walk(ctx.substeps, s, 0);
 }
 
-void SolverStages::run(World::Impl& w, const StepContext& ctx) {
+void SolverStages::run(const SolverWorld& w, const StepContext& ctx) {
     if (w.workers.count() == 1) {
         for (size_t s = 0; s < firstSubstepStage_; ++s) execute(w, ctx, stages_[s], 0, stages_[s].units);
         for (int substep = 0; substep < ctx.substeps; ++substep)

@@ -15,9 +15,10 @@
 #include <vector>
 
 #include "core/world/step_context.hpp"
-#include "perpdot/world.hpp"
 
 namespace perpdot {
+
+struct SolverWorld;  // solver_world.hpp
 
 struct SolverStage {
     enum class Work : uint8_t { LayOutContacts, SubstepForces, Joints, SerialJoints, Contacts, SerialContacts, ContactGroups, IntegratePositions, StoreContacts };
@@ -35,16 +36,16 @@ public:
     // after those run once before the substeps (the contact blocks laid out, colour by colour, by
     // the workers that solve them), and those run once after: restitution's, then the contact
     // blocks' impulses stored (by the workers that solved them last).
-    void build(const World::Impl& w);
+    void build(const SolverWorld& w);
     // Every substep's stages, on the world's workers.
-    void run(World::Impl& w, const StepContext& ctx);
+    void run(const SolverWorld& w, const StepContext& ctx);
 
 private:
     struct alignas(64) Sync {  // a stage of a substep: its items done
         std::atomic<int> done{0};
     };
-    void execute(World::Impl& w, const StepContext& ctx, const SolverStage& stage, int begin, int end) const;
-    void participate(World::Impl& w, const StepContext& ctx, int worker, int workerCount);
+    void execute(const SolverWorld& w, const StepContext& ctx, const SolverStage& stage, int begin, int end) const;
+    void participate(const SolverWorld& w, const StepContext& ctx, int worker, int workerCount);
 
     // stages_[0, firstSubstepStage_) run once before the substeps, [firstSubstepStage_,
     // substepStages_) every substep, the rest (restitution) once after the last.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstddef>
 
+#include "core/solver/contact_solver.hpp"
 #include "core/world/world_impl.hpp"
 
 namespace perpdot {

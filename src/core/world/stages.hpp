@@ -5,7 +5,9 @@
 // collision has its own header (continuous.hpp).
 #pragma once
 
+#include "core/bodies/integrate.hpp"
 #include "core/joints/joint.hpp"
+#include "core/solver/contact_solver.hpp"
 #include "core/world/world_impl.hpp"
 
 namespace perpdot {
@@ -16,10 +18,6 @@ StepContext makeStepContext(const World::Impl& w, float h);
 // Integrate velocities: gather the awake bodies into the solver arrays; free bodies take the
 // whole step's forces now, constrained ones per substep.
 void integrateVelocities(World::Impl& w, const StepContext& ctx);
-// A substep's share of the forces on the constrained bodies, solver slots [begin, end).
-void applySubstepForces(SolverBodies& bodies, int begin, int end);
-// Integrate positions: x += hs v, θ += hs ω, solver slots [begin, end).
-void integratePositions(SolverBodies& bodies, const StepContext& ctx, int begin, int end);
 // Re-fit ahead (refit_ahead.cpp): start re-fitting, on a worker of its own, the proxies of the
 // bodies whose predicted end pose leaves their fat AABB; finish before the bodies take their poses.
 void startTreeRefit(World::Impl& w, const StepContext& ctx);

@@ -31,6 +31,21 @@ StepContext makeStepContext(const World::Impl& w, float h) {
     return ctx;
 }
 
+namespace {
+
+// The solver's view of the world (solver_world.hpp): its stages see these parts and no others.
+SolverWorld solverWorld(World::Impl& w) {
+    StepScratch& s = w.scratch;
+    return {.bodies = w.bodies,
+            .contactCache = w.contactCache,
+            .scratch = {.bodies = s.bodies, .contacts = s.contacts, .coloring = s.coloring, .joints = *s.joints},
+            .workers = w.workers,
+            .gravity = w.def.gravity,
+            .anyRestitution = w.shapes.anyRestitution};
+}
+
+}  // namespace
+
 void World::step(float timeStep) {
     Impl& w = *impl_;
     if (w.locked) throw Error("World::step: called during step() (from a callback); step after it returns");
@@ -63,14 +78,15 @@ void World::step(float timeStep) {
     prepareJoints(w, ctx);   // prepare: effective masses, anchors, warm-start impulses
     startTreeRefit(w, ctx);  // the broadphase follows the predicted poses on a worker of its own,
     colorJoints(w, ctx);     // beside the joints' serial colouring
-    prepareContacts(w, ctx);
+    const SolverWorld solver = solverWorld(w);
+    prepareContacts(solver, ctx);
     // Per substep: its forces, warm start, solve with soft bias, x += hs v, relax without bias;
     // then restitution, Hecker's bounce, once (solver_stages.hpp: the rows colour by colour, on
     // the workers).
-    w.scratch.solverStages.build(w);
-    w.scratch.solverStages.run(w, ctx);
+    w.scratch.solverStages.build(solver);
+    w.scratch.solverStages.run(solver, ctx);
     projectJoints(*w.scratch.joints, w.scratch.bodies);         // project: the anchors of revolute trees meet again
-    storeContactImpulses(w);  // store: impulses for the next step's warm start (the lanes' stored by the solver)
+    storeContactImpulses(w.scratch.contacts, w.contactCache);  // store: impulses for the next step's warm start (the lanes' stored by the solver)
     storeJointImpulses(w, ctx);
     reportHitEvents(w);
     finishTreeRefit(w);

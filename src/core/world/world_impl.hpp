@@ -87,26 +87,7 @@ struct World::Impl {
     ContactData contactData(const Contact& c) const;
 };
 
-// Contact solver stages (contact_solver.cpp, and contact_solver_wide.cpp for the rows solved in
-// graph-coloured blocks of four).
-void prepareContacts(World::Impl& world, const StepContext& ctx);
-void prepareContactBlocks(World::Impl& world, const StepContext& ctx);
-// The blocks of colour `color` (below GraphColoring::overflow), laid out (the solver's first
-// stages) and then in a pass: they share no moving body, so they run in any order or side by
-// side; then the overflow constraints, one by one.
-int contactBlockCount(const ContactScratch& contacts, int color);
-void layOutContactBlocks(World::Impl& world, const StepContext& ctx, int color, int begin, int end);
-void contactRows(ContactScratch& contacts, SolverBodies& bodies, const StepContext& ctx, RowPass pass, int color, int begin, int end);
-void serialContactRows(ContactScratch& contacts, SolverBodies& bodies, const StepContext& ctx, RowPass pass);
-// The accumulated impulses, restitution's included, into the contacts: those of colour `color`'s
-// blocks [begin, end) straight from their lanes (the solver's last stages), and those of the
-// constraints solved from their own rows.
-void storeContactBlocks(World::Impl& world, int color, int begin, int end);
-void storeContactImpulses(World::Impl& world);
-// Field `field` (a float index of ContactRows<float>, pointField) of a constraint's rows, once
-// locateContactRows has found where each constraint's rows are.
-void locateContactRows(ContactScratch& contacts);
-float contactRowField(const ContactScratch& contacts, int constraint, std::size_t field);
+// The hit events of the step's contacts, from their rows after the solve (events.cpp).
 void reportHitEvents(World::Impl& world);
 
 }  // namespace perpdot
