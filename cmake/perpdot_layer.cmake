@@ -6,18 +6,21 @@
 #
 #   perpdot_layer(<layer> [OBJECT] [OUTPUT_NAME <library file name>] FOLDERS <src/ folders>
 #                 PUBLIC_HEADERS <file names in include/perpdot/> [EXPORTS <paths under src/>]
-#                 [PARTS <object layers>] [BELOW <lower layers>])
+#                 [SEES <paths under src/>] [PARTS <object layers>] [BELOW <lower layers>])
 #
 # defines perpdot_<layer> from every .cpp under src/<folder> (recursively, but for folders named
-# avx2, whose files are compiled with their own flags) -- a file added to a folder joins its layer
-# at the next build. A library layer is perpdot::<layer> (exported as such); an OBJECT layer is
-# compiled apart, behind its own fence, and its objects become part of the library layer that
-# names it in PARTS, which sees all of its folders.
+# avx2, whose files are compiled with their own flags, and for the folders of its PARTS) -- a file
+# added to a folder joins its layer at the next build. A library layer is perpdot::<layer>
+# (exported as such); an OBJECT layer is compiled apart, behind its own fence, and its objects
+# become part of the library layer that names it in PARTS, which sees all of its folders. A part
+# may be a folder of the library's own (core/solver in core).
 #   <view>/include/perpdot/<header>  the layer's public headers (PUBLIC: what its users see)
 #   <view>/src/<folder>              the layer's own folders and its PARTS' (PRIVATE)
-#   <view>/src/<path>                what each layer in BELOW exports (EXPORTS: files or folders)
+#   <view>/src/<path>                what each layer in BELOW exports (EXPORTS: files or folders),
+#                                    and the files or folders named in SEES: for a part, the few
+#                                    headers of the library around it that it reads
 function(perpdot_layer layer)
-  cmake_parse_arguments(arg "OBJECT" "OUTPUT_NAME" "FOLDERS;PUBLIC_HEADERS;EXPORTS;PARTS;BELOW" ${ARGN})
+  cmake_parse_arguments(arg "OBJECT" "OUTPUT_NAME" "FOLDERS;PUBLIC_HEADERS;EXPORTS;SEES;PARTS;BELOW" ${ARGN})
   set(view ${PROJECT_BINARY_DIR}/layers/${layer})
   file(REMOVE_RECURSE ${view})  # a header may have changed layer since the last configure
   file(MAKE_DIRECTORY ${view}/include/perpdot ${view}/src)
@@ -25,18 +28,33 @@ function(perpdot_layer layer)
     file(CREATE_LINK ${PROJECT_SOURCE_DIR}/include/perpdot/${header} ${view}/include/perpdot/${header} SYMBOLIC)
   endforeach()
 
-  set(visible ${arg_FOLDERS})
+  set(visible ${arg_FOLDERS} ${arg_SEES})
+  set(partFolders)
   foreach(part IN LISTS arg_PARTS)
-    get_property(partFolders GLOBAL PROPERTY perpdot_layer_folders_${part})
-    list(APPEND visible ${partFolders})
+    get_property(folders GLOBAL PROPERTY perpdot_layer_folders_${part})
+    list(APPEND partFolders ${folders})
   endforeach()
+  list(APPEND visible ${partFolders})
   set_property(GLOBAL PROPERTY perpdot_layer_folders_${layer} ${arg_FOLDERS})
   set_property(GLOBAL PROPERTY perpdot_layer_exports_${layer} ${arg_EXPORTS})
   foreach(below IN LISTS arg_BELOW)
     get_property(belowExports GLOBAL PROPERTY perpdot_layer_exports_${below})
     list(APPEND visible ${belowExports})
   endforeach()
+  set(linked)
   foreach(path IN LISTS visible)
+    # A path inside one already linked (a part's folder inside the library's) is there already.
+    set(inside FALSE)
+    foreach(other IN LISTS linked)
+      string(FIND "${path}/" "${other}/" at)
+      if(at EQUAL 0)
+        set(inside TRUE)
+      endif()
+    endforeach()
+    if(inside)
+      continue()
+    endif()
+    list(APPEND linked ${path})
     get_filename_component(parent ${view}/src/${path} DIRECTORY)
     file(MAKE_DIRECTORY ${parent})
     file(CREATE_LINK ${PROJECT_SOURCE_DIR}/src/${path} ${view}/src/${path} SYMBOLIC)
@@ -47,6 +65,12 @@ function(perpdot_layer layer)
     file(GLOB_RECURSE folderSources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/${folder}/*.cpp)
     list(FILTER folderSources EXCLUDE REGEX "/avx2/")
     list(APPEND sources ${folderSources})
+  endforeach()
+  foreach(folder IN LISTS partFolders)  # compiled by the part
+    file(GLOB_RECURSE partSources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/${folder}/*.cpp)
+    if(partSources)
+      list(REMOVE_ITEM sources ${partSources})
+    endif()
   endforeach()
 
   set(target perpdot_${layer})

@@ -2,10 +2,10 @@
 # The layers' include fences (cmake/perpdot_layer.cmake) hold: with a layer's include directories,
 # the preprocessor finds (__has_include) its own headers and what the layers below export, and
 # none of a layer above nor a lower layer's private ones.
-# Usage: layering_test.sh CXX "COLLIDE_DIRS" "CORE_DIRS" "SCENE_DIRS" "CROSSCHECK_DIRS"
+# Usage: layering_test.sh CXX "COLLIDE_DIRS" "SOLVER_DIRS" "CORE_DIRS" "SCENE_DIRS" "CROSSCHECK_DIRS"
 # (each a :-separated list).
 set -u
-cxx=$1 collide=$2 core=$3 scene=$4 crosscheck=$5
+cxx=$1 collide=$2 solver=$3 core=$4 scene=$5 crosscheck=$6
 failed=0
 check() {  # expected(found|missing) layer dirs header
     flags=$(echo "$3" | tr ':' '\n' | sed 's/^/-I/' | tr '\n' ' ')
@@ -24,11 +24,22 @@ done
 for h in perpdot/math.hpp perpdot/shapes.hpp collide/collision.hpp simd/simd.hpp; do
     check found collide "$collide" $h
 done
-# core: the engine, with collide as its part.
+# solver: its own folder, collide's collision and SIMD headers, the engine's public headers and the
+# core headers its view of the world (solver_world.hpp) is made of; not the hub, nor the rest of core.
+for h in core/world/world_impl.hpp core/world/stages.hpp core/contacts/continuous.hpp core/joints/joint_store.hpp \
+         core/shapes/shape_store.hpp collide/time_of_impact.hpp perpdot/scene.hpp scene/build_world.hpp; do
+    check missing solver "$solver" $h
+done
+for h in core/solver/solver_world.hpp core/solver/avx2/contact_solver_avx2.cpp core/world/step_scratch.hpp \
+         core/world/step_context.hpp core/contacts/contact_cache.hpp core/joints/joint.hpp core/bodies/integrate.hpp \
+         core/threads/workers.hpp collide/collision.hpp simd/simd.hpp perpdot/world.hpp; do
+    check found solver "$solver" $h
+done
+# core: the engine, with collide and solver as its parts.
 for h in perpdot/scene.hpp perpdot/feature_scenes.hpp perpdot/crosscheck.hpp scene/build_world.hpp crosscheck/stepper.hpp; do
     check missing core "$core" $h
 done
-for h in perpdot/perpdot.hpp core/world/step_context.hpp collide/pair_set.hpp simd/simd.hpp; do
+for h in perpdot/perpdot.hpp core/world/step_context.hpp core/solver/solver_world.hpp collide/pair_set.hpp simd/simd.hpp; do
     check found core "$core" $h
 done
 # scene: the engine through its public headers.
@@ -45,5 +56,5 @@ done
 for h in perpdot/crosscheck.hpp perpdot/scene.hpp crosscheck/stepper.hpp scene/build_world.hpp collide/polygon_b2.hpp collide/chain_b2.hpp; do
     check found crosscheck "$crosscheck" $h
 done
-[ $failed = 0 ] && echo "layering: collide sees only the math and shape headers; core sees neither scene nor crosscheck; scene sees no engine internals; crosscheck sees of collide only its Box2D adapters"
+[ $failed = 0 ] && echo "layering: collide sees only the math and shape headers; solver sees its view of the world, not the hub; core sees neither scene nor crosscheck; scene sees no engine internals; crosscheck sees of collide only its Box2D adapters"
 exit $failed
