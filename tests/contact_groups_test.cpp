@@ -4,9 +4,13 @@
 // cases check the centred heavy box and the 50-box column; these check what the suite does not.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
+#include "core/solver/cholesky.hpp"
+#include "core/solver/contact_groups.hpp"
 #include "perpdot/world.hpp"
 #include "physics_scenes.hpp"
 
@@ -73,6 +77,40 @@ TEST(ContactGroups, FallenDominoesComeToRestAndSleep) {
     test::run(world, 900);
     EXPECT_GT(std::fabs(world.angle(dominoes.back())), 1.0f) << "the last domino did not fall";
     for (const BodyId d : dominoes) EXPECT_FALSE(world.isAwake(d));
+}
+
+// The factor cost of a group whose constraints, in order, join these slot pairs (0: the static
+// slot, which moves nothing) with two rows each, as findContactGroups counts it.
+int64_t factorCost(const std::vector<std::array<int, 2>>& pairs) {
+    std::vector<int> firstRow(pairs.size() + 2, -1), first;
+    for (const auto [a, b] : pairs) {
+        const int row = static_cast<int>(first.size());
+        const int f = envelopeFirst(firstRow, row, a > 0 ? a : -1, b > 0 ? b : -1);
+        first.insert(first.end(), 2, f);
+    }
+    return envelopeCost(first.data(), static_cast<int>(first.size()));
+}
+
+// A 100-box column is 200 rows, each reaching back to the rows of the interface below: a band
+// of 4 rows, solved directly. A plank on 50 boxes is 200 rows too, but every plank row shares the
+// plank with all the others before it: left row by row, while a plank on 32 boxes (128 rows) is
+// solved directly whatever its envelope.
+TEST(ContactGroups, AdmitsALongGroupOnlyInABand) {
+    std::vector<std::array<int, 2>> column{{0, 1}};
+    for (int box = 1; box < 100; ++box) column.push_back({box, box + 1});
+    EXPECT_EQ(factorCost(column), 1 + 4 + 99 * (9 + 16));  // profiles 1, 2, then 3, 4 at each interface
+    EXPECT_TRUE(admitted(200, factorCost(column)));
+
+    auto plankOn = [](int boxes) {  // the plank is slot 1, the boxes 2 ..
+        std::vector<std::array<int, 2>> pairs;
+        for (int box = 2; box < boxes + 2; ++box) {
+            pairs.push_back({0, box});
+            pairs.push_back({box, 1});
+        }
+        return pairs;
+    };
+    EXPECT_FALSE(admitted(200, factorCost(plankOn(50))));
+    EXPECT_TRUE(admitted(128, factorCost(plankOn(32))));
 }
 
 }  // namespace

@@ -180,7 +180,7 @@ void solveRevoluteTrees(SolverBodies& bodies, RevoluteTrees& t, std::vector<Prep
         const int n = assemble(bodies, t, prepared, tree, [&](const JointPair& p, const JointFrame& f) {
             return relativeVelocity(p, f.rA, f.rB) + soft.biasRate * f.d;  // v_rel + biasRate·C
         });
-        if (!choleskyFactor(t.K.data(), n)) {  // the point rows joint by joint
+        if (!choleskyFactor(t.K.data(), DenseShape{n})) {  // the point rows joint by joint
             for (int i = 0; i < joints; ++i) {
                 PreparedJoint& j = prepared[t.joints[first + i]];
                 JointPair p = pairOf(bodies.states, bodies.stepRotation, j);
@@ -189,7 +189,7 @@ void solveRevoluteTrees(SolverBodies& bodies, RevoluteTrees& t, std::vector<Prep
             }
             continue;
         }
-        choleskySolve(t.K.data(), n, t.x.data());
+        choleskySolve(t.K.data(), DenseShape{n}, t.x.data());
         // Every Δλ from the velocities before any is applied: the solve already couples them.
         for (int i = 0; i < joints; ++i) {
             PreparedJoint& j = prepared[t.joints[first + i]];
@@ -214,8 +214,8 @@ void projectRevoluteTrees(SolverBodies& bodies, RevoluteTrees& t, const std::vec
     for (size_t tree = 0; tree + 1 < t.start.size(); ++tree) {
         const int first = t.start[tree], joints = t.start[tree + 1] - first;
         const int n = assemble(bodies, t, prepared, tree, [](const JointPair&, const JointFrame& f) { return -f.d; });
-        if (!choleskyFactor(t.K.data(), n)) continue;
-        choleskySolve(t.K.data(), n, t.x.data());
+        if (!choleskyFactor(t.K.data(), DenseShape{n})) continue;
+        choleskySolve(t.K.data(), DenseShape{n}, t.x.data());
         for (int i = 0; i < joints; ++i) {
             const PreparedJoint& j = prepared[t.joints[first + i]];
             const Vec2 P = lambdaOf(t.x, i);

@@ -51,9 +51,16 @@ double coupling(const std::array<RowSide, 2>& r, const std::array<RowSide, 2>& s
     return k;
 }
 
+// Group `group`'s K, stored on its envelope.
+EnvelopeShape shapeOf(const ContactGroups& g, int group) {
+    const int first = g.rowStart[group];
+    return {g.rowStart[group + 1] - first, &g.firstColumn[first], &g.lastRow[first], &g.diagonal[first]};
+}
+
 // Rows of group `group` assembled into K and factored into L; false if K is singular.
 bool assemble(const SolverWorld& w, ContactGroups& g, int group) {
     const int first = g.rowStart[group], n = g.rowStart[group + 1] - first;
+    const EnvelopeShape shape = shapeOf(g, group);
     double* K = &g.K[g.matrixStart[group]];
     double* L = &g.L[g.matrixStart[group]];
     auto sides = [&](int row) {
@@ -63,11 +70,11 @@ bool assemble(const SolverWorld& w, ContactGroups& g, int group) {
     };
     for (int r = 0; r < n; ++r) {
         const std::array<RowSide, 2> sr = sides(r);
-        for (int s = 0; s <= r; ++s) K[r * n + s] = K[s * n + r] = coupling(sr, sides(s));
-        K[r * n + r] *= 1.0 + compliance;
+        for (int s = shape.first(r); s <= r; ++s) K[shape.origin(r) + s] = coupling(sr, sides(s));
+        K[shape.origin(r) + r] *= 1.0 + compliance;
     }
-    std::copy(K, K + static_cast<size_t>(n) * n, L);
-    return choleskyFactor(L, n);
+    std::copy(K, &g.K[g.matrixStart[group + 1]], L);
+    return choleskyFactor(L, shape);
 }
 
 // Whether this step's constraints join the same slots with the same point counts, and the slots
@@ -100,6 +107,9 @@ void findContactGroups(const SolverWorld& w, const StepContext& ctx) {
     g.constraints.clear();
     g.start.assign(1, 0);
     g.rows.clear();
+    g.firstColumn.clear();
+    g.lastRow.clear();
+    g.diagonal.clear();
     g.rowStart.assign(1, 0);
     g.matrixStart.assign(1, 0);
     // Loads are measured in g: λn K_ii / hs ≥ loadTrigger·g, i.e. λn ≥ loadTrigger·g·hs·normalMass.
@@ -155,15 +165,29 @@ void findContactGroups(const SolverWorld& w, const StepContext& ctx) {
         g.rowCount[root] += g.rowCount[k];
         g.loaded[root] = std::max(g.loaded[root], g.loaded[k]);
     }
-    bool small = false;  // a group, not jointed, with no more rows than a group may have
-    for (int k = 0; k < slots; ++k)
-        small = small || (g.root[k] == k && g.loaded[k] == 0 && g.rowCount[k] > 0 && g.rowCount[k] <= ContactGroups::maxRows);
-    remember(w.scratch.contacts, g, !small);
-    if (!small) return;  // a settled pile: one group, too large
-    // Per small root: whether one of its rows is loaded (1); larger groups are never direct.
+    // Each group's factor cost, its rows in constraint order: row r's envelope reaches back to the
+    // first row sharing a moving body with it (envelopeFirst), Σ_r p_r² (cholesky.hpp).
+    g.firstRow.assign(static_cast<size_t>(slots), -1);
+    g.placed.assign(static_cast<size_t>(slots), 0);
+    g.cost.assign(static_cast<size_t>(slots), 0);
+    auto moving = [&](int slot) { return g.kind[slot] != Fixed ? slot : -1; };
     for (int k = 0; k < count; ++k) {
         const int root = g.root[slotOf(k)];
-        if (g.loaded[root] == 0 && g.rowCount[root] <= ContactGroups::maxRows && loaded(w.scratch.contacts.constraints[k])) g.loaded[root] = 1;
+        if (g.loaded[root] != 0) continue;  // jointed
+        const auto [a, b] = w.scratch.contacts.constraintSlots[k];
+        const int first = envelopeFirst(g.firstRow, g.placed[root], moving(a), moving(b));
+        for (int i = 0; i < w.scratch.contacts.constraints[k].pointCount; ++i, ++g.placed[root])
+            g.cost[root] += static_cast<int64_t>(g.placed[root] - first + 1) * (g.placed[root] - first + 1);
+    }
+    auto small = [&](int root) { return g.loaded[root] != 2 && admitted(g.rowCount[root], g.cost[root]); };
+    bool anySmall = false;  // a group, not jointed, small or banded enough to solve directly
+    for (int k = 0; k < slots; ++k) anySmall = anySmall || (g.root[k] == k && g.rowCount[k] > 0 && small(k));
+    remember(w.scratch.contacts, g, !anySmall);
+    if (!anySmall) return;  // a settled pile: one group, too large
+    // Per small root: whether one of its rows is loaded (1); costlier groups are never direct.
+    for (int k = 0; k < count; ++k) {
+        const int root = g.root[slotOf(k)];
+        if (g.loaded[root] == 0 && small(root) && loaded(w.scratch.contacts.constraints[k])) g.loaded[root] = 1;
     }
 
     // Groups in the order of their first constraint while the step's rows last; the constraints of
@@ -172,15 +196,15 @@ void findContactGroups(const SolverWorld& w, const StepContext& ctx) {
     int groups = 0, rowsLeft = ContactGroups::maxTotalRows;
     for (int k = 0; k < count; ++k) {
         const int root = g.root[slotOf(k)], n = g.rowCount[root];
-        if (g.loaded[root] != 1 || n > std::min(ContactGroups::maxRows, rowsLeft) || g.groupOf[root] >= 0) continue;
+        if (g.loaded[root] != 1 || n > rowsLeft || g.groupOf[root] >= 0) continue;
         g.groupOf[root] = groups++;
         rowsLeft -= n;
     }
     if (groups == 0) return;
-    for (std::vector<int>* v : {&g.constraints, &g.start, &g.rowStart}) v->reserve(ContactGroups::maxTotalRows + 1);
-    g.matrixStart.reserve(ContactGroups::maxTotalRows + 1);
+    for (std::vector<int>* v : {&g.constraints, &g.start, &g.rowStart, &g.firstColumn, &g.lastRow}) v->reserve(ContactGroups::maxTotalRows + 1);
+    for (std::vector<size_t>* v : {&g.matrixStart, &g.diagonal}) v->reserve(ContactGroups::maxTotalRows + 1);
     g.rows.reserve(ContactGroups::maxTotalRows);
-    for (std::vector<double>* v : {&g.K, &g.L}) v->reserve(static_cast<size_t>(ContactGroups::maxRows) * ContactGroups::maxTotalRows);
+    for (std::vector<double>* v : {&g.K, &g.L}) v->reserve(static_cast<size_t>(ContactGroups::denseRows) * ContactGroups::maxTotalRows);
     g.start.assign(static_cast<size_t>(groups) + 1, 0);
     auto groupOf = [&](int k) { return g.groupOf[g.root[slotOf(k)]]; };
     for (int k = 0; k < count; ++k)
@@ -193,22 +217,38 @@ void findContactGroups(const SolverWorld& w, const StepContext& ctx) {
 
     // Each group's rows, K and factor; a group whose K does not factor stays with the sequential rows.
     for (int k : g.constraints) prepareContactRows(w, ctx, w.scratch.contacts.constraints[k], w.scratch.contacts.constraintRows[k]);
-    int kept = 0;
+    int kept = 0, mostRows = 0;
+    size_t largest = 0;
     for (int group = 0; group < groups; ++group) {
         const int rowsBefore = static_cast<int>(g.rows.size());
-        for (int s = g.start[group]; s < g.start[group + 1]; ++s)
-            for (int i = 0; i < w.scratch.contacts.constraints[g.constraints[s]].pointCount; ++i) g.rows.push_back({g.constraints[s], i});
+        for (int s = g.start[group]; s < g.start[group + 1]; ++s) {
+            const int k = g.constraints[s];
+            const auto [a, b] = w.scratch.contacts.constraintSlots[k];
+            const int first = envelopeFirst(g.firstRow, static_cast<int>(g.rows.size()) - rowsBefore, moving(a), moving(b));
+            for (int i = 0; i < w.scratch.contacts.constraints[k].pointCount; ++i) {
+                g.rows.push_back({k, i});
+                g.firstColumn.push_back(first);
+            }
+        }
         const int n = static_cast<int>(g.rows.size()) - rowsBefore;
+        g.lastRow.resize(g.rows.size());
+        g.diagonal.resize(g.rows.size());
+        envelopeLastRows(&g.firstColumn[rowsBefore], n, &g.lastRow[rowsBefore]);
+        const size_t envelope = envelopeLayout(&g.firstColumn[rowsBefore], n, &g.diagonal[rowsBefore]);
         g.rowStart.push_back(static_cast<int>(g.rows.size()));
-        g.matrixStart.push_back(g.matrixStart.back() + static_cast<size_t>(n) * n);
+        g.matrixStart.push_back(g.matrixStart.back() + envelope);
         g.K.resize(g.matrixStart.back());
         g.L.resize(g.matrixStart.back());
         if (!assemble(w, g, kept)) {
+            for (std::vector<int>* v : {&g.firstColumn, &g.lastRow}) v->resize(static_cast<size_t>(rowsBefore));
+            g.diagonal.resize(static_cast<size_t>(rowsBefore));
             g.rows.resize(static_cast<size_t>(rowsBefore));
             g.rowStart.pop_back();
             g.matrixStart.pop_back();
             continue;
         }
+        mostRows = std::max(mostRows, n);
+        largest = std::max(largest, envelope);
         // Keep the group: its constraints move down to follow the groups kept before it.
         const int size = g.start[group + 1] - g.start[group];
         std::copy(g.constraints.begin() + g.start[group], g.constraints.begin() + g.start[group + 1],
@@ -219,9 +259,12 @@ void findContactGroups(const SolverWorld& w, const StepContext& ctx) {
     }
     g.start.resize(static_cast<size_t>(kept) + 1);
     g.constraints.resize(static_cast<size_t>(g.start.back()));
-    for (std::vector<double>* v : {&g.lambda, &g.y, &g.x, &g.rhs}) v->resize(ContactGroups::maxRows);
-    g.activeK.resize(static_cast<size_t>(ContactGroups::maxRows) * ContactGroups::maxRows);
-    g.active.resize(ContactGroups::maxRows);
+    // The pivoting's scratch, for the most rows and the largest envelope (its active systems' are within).
+    for (std::vector<double>* v : {&g.lambda, &g.y, &g.x, &g.rhs}) v->resize(std::max(v->size(), static_cast<size_t>(mostRows)));
+    for (std::vector<int>* v : {&g.activeIndex, &g.activeFirst, &g.activeLast}) v->resize(std::max(v->size(), static_cast<size_t>(mostRows)));
+    g.activeDiagonal.resize(std::max(g.activeDiagonal.size(), static_cast<size_t>(mostRows)));
+    g.active.resize(std::max(g.active.size(), static_cast<size_t>(mostRows)));
+    g.activeK.resize(std::max(g.activeK.size(), largest));
 }
 
 namespace {
@@ -231,9 +274,10 @@ namespace {
 // than its target). Block principal pivoting (Júdice and Pires): start with every row pushing,
 // solve K_AA Δλ_A = y_A + K_AI λ_I for the pushing rows A (the others drop to λ = 0), then flip
 // every row that breaks its condition and solve again.
-bool solveComplementarity(ContactGroups& g, int n, const double* K, const double* L) {
+bool solveComplementarity(ContactGroups& g, const EnvelopeShape& shape, const double* K, const double* L) {
+    const int n = shape.n;
     std::copy(g.y.begin(), g.y.begin() + n, g.x.begin());
-    choleskySolve(L, n, g.x.data());
+    choleskySolve(L, shape, g.x.data());
     std::fill(g.active.begin(), g.active.begin() + n, 1);
     for (int pivot = 0; pivot < maxPivots; ++pivot) {
         bool flipped = false;
@@ -243,28 +287,34 @@ bool solveComplementarity(ContactGroups& g, int n, const double* K, const double
                 continue;
             }
             double w = -g.y[r];
-            for (int s = 0; s < n; ++s) w += K[r * n + s] * g.x[s];
+            forEachInRow(K, shape, r, [&](int s, double k) { w += k * g.x[s]; });
             if (w < -separationTolerance) g.active[r] = 1, flipped = true;
         }
         if (!flipped) return true;
+        // K_AA keeps K's envelope: an active row starts at the first active column of its own.
         int m = 0;
+        for (int c = 0; c < n; ++c) {
+            g.activeIndex[c] = m;
+            m += g.active[c];
+        }
+        size_t entry = 0;
         for (int r = 0; r < n; ++r) {
             if (!g.active[r]) continue;
-            g.rhs[m] = g.y[r];
-            int column = 0;
-            for (int s = 0; s < n; ++s) {
-                if (g.active[s])
-                    g.activeK[m * n + column++] = K[r * n + s];
-                else
-                    g.rhs[m] += K[r * n + s] * g.lambda[s];
-            }
-            ++m;
+            const int i = g.activeIndex[r];
+            g.activeFirst[i] = g.activeIndex[shape.first(r)];
+            g.rhs[i] = g.y[r];
+            forEachInRow(K, shape, r, [&](int s, double k) {
+                if (!g.active[s])
+                    g.rhs[i] += k * g.lambda[s];
+                else if (s <= r)
+                    g.activeK[entry++] = k;
+            });
         }
-        // activeK holds the m x m system at stride n: packed to stride m for the factor.
-        if (m < n)
-            for (int r = 1; r < m; ++r) std::copy_n(&g.activeK[r * n], m, &g.activeK[r * m]);
-        if (!choleskyFactor(g.activeK.data(), m)) return false;
-        choleskySolve(g.activeK.data(), m, g.rhs.data());
+        envelopeLayout(g.activeFirst.data(), m, g.activeDiagonal.data());
+        envelopeLastRows(g.activeFirst.data(), m, g.activeLast.data());
+        const EnvelopeShape active{m, g.activeFirst.data(), g.activeLast.data(), g.activeDiagonal.data()};
+        if (!choleskyFactor(g.activeK.data(), active)) return false;
+        choleskySolve(g.activeK.data(), active, g.rhs.data());
         for (int r = 0, i = 0; r < n; ++r) g.x[r] = g.active[r] ? g.rhs[i++] : -g.lambda[r];
     }
     return false;
@@ -276,6 +326,7 @@ bool solveComplementarity(ContactGroups& g, int n, const double* K, const double
 // False, and nothing applied, when its complementarity problem did not settle.
 bool solveGroupNormals(ContactScratch& contacts, SolverBodies& bodies, ContactGroups& g, int group, const StepContext& ctx, bool useBias) {
     const int first = g.rowStart[group], n = g.rowStart[group + 1] - first;
+    const EnvelopeShape shape = shapeOf(g, group);
     const double* K = &g.K[g.matrixStart[group]];
     const double* L = &g.L[g.matrixStart[group]];
     const Softness& soft = ctx.contactSoftness;  // one softness for all rows: the rest state C = K F / ω²
@@ -292,14 +343,14 @@ bool solveGroupNormals(ContactScratch& contacts, SolverBodies& bodies, ContactGr
             g.y[r] = -(vn + s * ctx.invHs);
         } else if (useBias) {
             double kLambda = 0.0;  // (K λ)_r, λ from before the pass
-            for (int q = 0; q < n; ++q) kLambda += K[r * n + q] * g.lambda[q];
+            forEachInRow(K, shape, r, [&](int q, double k) { kLambda += k * g.lambda[q]; });
             const float push = std::max(soft.biasRate * std::min(s + ctx.pushSlop, 0.0f), -ctx.maxBiasVelocity);
             g.y[r] = -soft.massScale * (vn + push) - soft.impulseScale * kLambda;
         } else {
             g.y[r] = -vn;
         }
     }
-    if (!solveComplementarity(g, n, K, L)) return false;
+    if (!solveComplementarity(g, shape, K, L)) return false;
     for (int r = 0; r < n; ++r) {
         const auto [k, i] = g.rows[first + r];
         const ContactConstraint& c = contacts.constraints[k];

@@ -9,18 +9,22 @@
 // between bodies at rest on each other, whatever their masses (docs/stress.md).
 //
 // A group is the touching contacts joined through dynamic bodies (static and kinematic bodies join
-// nothing). It is solved directly when it has at most maxRows normal rows, none of its bodies has
-// a joint (joint rows stay sequential between the passes, and the anvil of a jointed bridge is
-// already held by them), and one of its rows carried, last step, a load that would sink it one at
-// a time more than loadTrigger times the direct solve's g/ω²; groups in constraint order, while
-// the step's maxTotalRows last. Its normal rows then take the block solve as a linear
-// complementarity problem (λn ≥ 0, block principal pivoting), K raised by 0.1 % on its diagonal;
-// its friction and rolling rows stay sequential, after them. A pass whose pivoting does not settle
-// is solved row by row.
+// nothing). Its rows are in constraint order, and K is stored and factored on its envelope
+// (cholesky.hpp): row r from the first row that shares a moving body with it. It is solved
+// directly when it has at most denseRows normal rows, or more in a band (a column of boxes, each
+// touching two others: a few multiply-adds a row; admitted), none of its bodies has a joint (joint
+// rows stay sequential between the passes, and the anvil of a jointed bridge is already held by
+// them), and one of its rows carried, last step, a load that would sink it one at a time more than
+// loadTrigger times the direct solve's g/ω²; groups in constraint order, while the step's
+// maxTotalRows last. Its normal rows then take the block solve as a linear complementarity problem
+// (λn ≥ 0, block principal pivoting), K raised by 0.1 % on its diagonal; its friction and rolling
+// rows stay sequential, after them. A pass whose pivoting does not settle is solved row by row.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
+#include <initializer_list>
 #include <vector>
 
 #include "core/world/step_context.hpp"
@@ -33,21 +37,33 @@ struct SolverBodies;
 struct SolverWorld;     // solver_world.hpp
 
 struct ContactGroups {
-    static constexpr int maxRows = 128;        // K is n x n: about n³/6 multiply-adds to factor, once a step
+    // A group of at most denseRows rows is solved whatever its envelope: at most n³/6 multiply-adds
+    // to factor, once a step. A longer one when its factor costs no more than a band of bandRows
+    // rows, Σ_r p_r² ≤ n·bandRows² (cholesky.hpp); a larger pile, its rows reaching far back, stays
+    // row by row (the card_house scene's group of 160 rows costs 1,480 a row, not 256, and the
+    // house collapses when it is solved directly).
+    static constexpr int denseRows = 128;
+    static constexpr int bandRows = 16;
     static constexpr int maxTotalRows = 1024;  // all groups of a step: bounds their work and storage
     static constexpr float loadTrigger = 8;    // in g: λn K_ii / hs of the most loaded row
     std::vector<int> constraints;            // indices into ContactScratch::constraints, group by group
     std::vector<int> start;                  // group g is constraints[start[g] .. start[g + 1])
     std::vector<std::array<int, 2>> rows;    // (constraint, point) of each normal row, group by group
     std::vector<int> rowStart;               // group g's rows are rows[rowStart[g] .. rowStart[g + 1])
-    std::vector<size_t> matrixStart;         // group g's K and L at K[matrixStart[g]], n² each
+    std::vector<int> firstColumn, lastRow;   // by row, group by group: K's envelope (EnvelopeShape)
+    std::vector<size_t> diagonal;
+    std::vector<size_t> matrixStart;         // group g's K and L envelopes at K[matrixStart[g]]
     std::vector<double> K, L;                // K = J M⁻¹ Jᵀ of the normal rows and its Cholesky factor
     std::vector<uint8_t> direct;             // by constraint: 1 if a group solves it
-    // Scratch, kept to reuse its memory: by solver slot its kind and union-find root, by root its
-    // rows, load and group; per pass the impulses, targets and active rows of the pivoting.
-    std::vector<int> root, rowCount, groupOf;
+    // Scratch, kept to reuse its memory: by solver slot its kind, union-find root and first row
+    // (envelopeFirst), by root its rows, load, rows placed, factor cost and group; per pass the
+    // impulses, targets and active rows of the pivoting and the envelope of their system.
+    std::vector<int> root, rowCount, firstRow, placed, groupOf;
+    std::vector<int64_t> cost;
     std::vector<uint8_t> kind, loaded, active;
     std::vector<double> lambda, y, x, rhs, activeK;
+    std::vector<int> activeIndex, activeFirst, activeLast;
+    std::vector<size_t> activeDiagonal;
     // The inputs of the last search that got as far as the group sizes: the constraints' slots and
     // point counts, the slots' kinds, and whether no group was small enough to solve directly.
     std::vector<std::array<int, 2>> lastSlots;
@@ -55,6 +71,24 @@ struct ContactGroups {
     std::vector<uint8_t> lastKind;
     bool noneSmall = false;
 };
+
+// Whether a group of n rows whose factor costs Σ_r p_r² = cost is solved directly.
+inline bool admitted(int n, int64_t cost) {
+    return n <= ContactGroups::denseRows || cost <= int64_t{n} * ContactGroups::bandRows * ContactGroups::bandRows;
+}
+
+// The first column of a group's next rows, at `row`, coupling slots a and b (−1: a slot that moves
+// nothing): the first row that touched either. firstRow, by slot, is the group's first row touching
+// it, −1 before; the rows' slots are entered.
+inline int envelopeFirst(std::vector<int>& firstRow, int row, int a, int b) {
+    int first = row;
+    for (const int slot : {a, b}) {
+        if (slot < 0) continue;
+        if (firstRow[slot] < 0) firstRow[slot] = row;
+        first = std::min(first, firstRow[slot]);
+    }
+    return first;
+}
 
 // The groups of this step's constraints to solve directly (after the select of prepareContacts), their
 // rows prepared and K factored.
