@@ -105,7 +105,7 @@ void gatherLanes(const World::Impl& w, const ContactConstraint* const (&constrai
         for (int i = 0; i < 2; ++i) points[i][lane] = &contacts[lane]->points[i].anchorA.x;
     }
     gatherRuns(block, head, points, present);
-    gatherOtherFields(w, constraints, contacts, used, block.rowData());
+    gatherOtherFields(w, constraints, contacts, used, block.rows.data);
 }
 
 }  // namespace

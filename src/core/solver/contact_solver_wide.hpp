@@ -16,6 +16,7 @@
 #include "collide/collision.hpp"
 #include "core/contacts/contact_cache.hpp"
 #include "core/solver/body_lanes.hpp"
+#include "core/solver/lane_block.hpp"
 #include "core/solver/row_lanes.hpp"
 
 namespace perpdot {
@@ -132,7 +133,7 @@ void deriveContactRows(ContactRows<F>& c, const BodyLanes<F>& a, const BodyLanes
     }
 }
 
-// The uses of a block's `used` lanes, from its rows (rowData(), `lanes` wide).
+// The uses of a block's `used` lanes, from its rows (`lanes` wide).
 inline RowUses rowUses(const float* rows, int lanes, int used) {
     auto any = [&](std::size_t offset, auto test) {
         const float* field = rows + offset / sizeof(float) * static_cast<std::size_t>(lanes);
@@ -413,24 +414,19 @@ inline constexpr auto storedRowFields = [] {
     return stored;
 }();
 
-// N constraints of one graph colour (no two share a dynamic body) as the lanes of one row set:
-// N = 4 (simd::Float4) or, for CPUs with AVX2, 8 (Float8, contact_solver_avx2.cpp). The rows are
-// ContactRows<F> of an N-lane F (LaneRows, row_lanes.hpp).
+// N constraints of one graph colour as the lanes of one row set (LaneBlock, lane_block.hpp): N = 4
+// (simd::Float4) or, for CPUs with AVX2, 8 (Float8, contact_solver_avx2.cpp). The rows are
+// ContactRows<F> of an N-lane F; the head is the lanes' RowUses (rowUses), the fields after the
+// points they read; item[l] is lane l's contact, -1 for an empty lane (layOutBlocks).
 template <std::size_t N>
-struct alignas(64) ContactBlock {
-    static constexpr int lanes = static_cast<int>(N);
-    int bodyA[N] = {}, bodyB[N] = {};  // solver slots; an empty lane uses the static slot 0
-    RowUses uses;                      // of its lanes (rowUses): the fields after the points they read
-    LaneRows<N, rowFloats> rows;
-    int contact[N] = {};  // index in World::Impl::contacts, -1 for an empty lane (layOutBlocks); read by layout and store only
-    const float* rowData() const { return rows.data; }
-    float* rowData() { return rows.data; }
-    template <class F>
-    ContactRows<F>& rowsAs() {
-        static_assert(sizeof(ContactRows<F>) == sizeof rows, "F must be N lanes wide");
-        return rows.template as<ContactRows<F>>();
-    }
-};
+using ContactBlock = LaneBlock<N, rowFloats, RowUses>;
+
+// A block's rows as ContactRows<F>, F N lanes wide.
+template <class F, std::size_t N>
+ContactRows<F>& contactRowsOf(ContactBlock<N>& block) {
+    static_assert(sizeof(ContactRows<F>) == sizeof block.rows, "F must be N lanes wide");
+    return block.rows.template as<ContactRows<F>>();
+}
 // What a pass over blocks of flat, plain contacts reads: whole cache lines, 13 of them.
 static_assert(offsetof(ContactBlock<8>, rows) + offsetof(ContactRows<float>, turnsA) * 8 == 13 * 64);
 
@@ -509,7 +505,7 @@ void deriveContactBlock(ContactBlock<N>& block, const BodyState* freeVelocities,
     const BodyLanes<F> a = LaneBodies<F>::gather(freeVelocities, block.bodyA);
     const BodyLanes<F> b = LaneBodies<F>::gather(freeVelocities, block.bodyB);
     const F points[2] = {F::load(present[0]), F::load(present[1])};
-    deriveContactRows(block.template rowsAs<F>(), a, b, points, ctx);
+    deriveContactRows(contactRowsOf<F>(block), a, b, points, ctx);
 }
 
 // One pass over the blocks [begin, end) of N lanes of F (forBlocks, body_lanes.hpp).
@@ -520,9 +516,9 @@ void contactBlockRows(ContactBlock<N>* blocks, int begin, int end, BodyState* st
         forBlocks<F, bodiesAhead>(
             blocks, begin, end, states,
             [&](ContactBlock<N>& block, BodyLanes<F>& a, BodyLanes<F>& b) {
-                rows(block.template rowsAs<F>(), a, b, block.bodyA, block.bodyB, block.uses);
+                rows(contactRowsOf<F>(block), a, b, block.bodyA, block.bodyB, block.head);
             },
-            [](const ContactBlock<N>& block) { return !decltype(elasticOnly)::value || block.uses.elastic; });
+            [](const ContactBlock<N>& block) { return !decltype(elasticOnly)::value || block.head.elastic; });
     });
 }
 
