@@ -9,7 +9,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <type_traits>
-#include <utility>
 
 #include "core/solver/contact_prepare.hpp"
 #include "core/world/world_impl.hpp"
@@ -211,11 +210,9 @@ void storeRowField(RowLane<lanes, const float> rows, Contact& contact, int point
 // point's largest push), from its lane `rows`, into its contact.
 template <std::size_t lanes>
 void storeContactRows(RowLane<lanes, const float> rows, Contact& contact) {
-    [&]<std::size_t... k>(std::index_sequence<k...>) {
-        (storeRowField<storedRowFields[k]>(rows, contact, -1), ...);
-        for (int i = 0; i < 2; ++i)
-            if (i < contact.pointCount) (storeRowField<storedRowFields[k]>(rows, contact, i), ...);
-    }(std::make_index_sequence<storedRowFields.size()>());
+    forEachRowField<storedRowFields>([&](auto field) { storeRowField<decltype(field)::value>(rows, contact, -1); });
+    for (int i = 0; i < 2; ++i)
+        if (i < contact.pointCount) forEachRowField<storedRowFields>([&](auto field) { storeRowField<decltype(field)::value>(rows, contact, i); });
 }
 
 // A block's accumulated impulses straight from its lanes into its contacts.
