@@ -145,8 +145,8 @@ void forJointUnits(JointScratch& d, SolverBodies& bodies, int color, int begin, 
     JointBlock* colorBlocks = d.blocks.data() + d.blockStart[color];
     for (int unit = begin, last = std::min(end, blocks); unit < last;) {
         const JointBlock& block = colorBlocks[unit];
-        const int run = std::min(last, block.typeEnd - d.blockStart[color]);
-        wide(*stagesOf(block.type).lanes, colorBlocks + unit, run - unit);
+        const int run = std::min(last, block.head.typeEnd - d.blockStart[color]);
+        wide(*stagesOf(block.head.type).lanes, colorBlocks + unit, run - unit);
         unit = run;
     }
     // The static slot 0 is shared by the colour's joints: each run writes (nothing) to its own copy.
@@ -291,7 +291,7 @@ void colorJoints(World::Impl& w, const StepContext& ctx) {
         const int type = static_cast<int>(d.keys[k].type);
         const int lane = d.laneRows[k] > 0 ? nextOptional[color][type]++ : nextPlain[color][type]++;
         d.blockLanes[lane / 4][lane % 4] = k;
-        d.blocks[lane / 4].typeEnd = typeEnd[color][type];
+        d.blocks[lane / 4].head.typeEnd = typeEnd[color][type];
     }
     w.workers.parallelFor(blocks, 16, [&](int begin, int end, int) {
         for (int block = begin; block < end; ++block) {
@@ -337,7 +337,7 @@ void storeJointImpulses(World::Impl& w, const StepContext&) {
     JointStore& s = store(w);
     JointScratch& d = jointScratch(w);
     w.workers.parallelFor(static_cast<int>(d.blocks.size()), 64, [&](int begin, int end, int) {
-        for (int block = begin; block < end; ++block) stagesOf(d.blocks[block].type).lanes->store(d.blocks[block], s.joints.slots());
+        for (int block = begin; block < end; ++block) stagesOf(d.blocks[block].head.type).lanes->store(d.blocks[block], s.joints.slots());
     });
     for (int position : d.scalarOrder) s.joints[d.awake[position]].data = d.prepared[position].data;
     for (int position : d.trees.joints) s.joints[d.awake[position]].data = d.prepared[position].data;

@@ -34,21 +34,6 @@
 
 namespace perpdot {
 
-// Four joints of one type and one graph colour (no two share a dynamic body) as the lanes of the
-// type's row set.
-struct JointBlock {
-    static constexpr std::size_t rowCapacity = 21;  // floats of the largest row set (the prismatic joint's)
-    JointMassT<simd::Float4> mass;
-    int joint[4] = {-1, -1, -1, -1};   // index in JointStore::joints; -1: an empty lane
-    int bodyA[4] = {}, bodyB[4] = {};  // solver slots; an empty lane uses the static slot 0
-    int typeEnd = 0;  // where the colour's blocks of this type end (index in JointScratch::blocks)
-    JointType type = JointType::Revolute;
-    bool optionalRows = false;  // whether a lane's joint has rows others of its type lack
-    // The row set's Rows<Float4>, field i of lane l at float 4i + l; last, so that a block reads
-    // only the fields its type gathered.
-    LaneRows<4, rowCapacity> rows;
-};
-
 // What the joint store calls for a type's blocks (JointStages::lanes; null for a scalar type).
 struct JointLaneStages {
     bool (*optionalRows)(const PreparedJoint& joint);
@@ -132,8 +117,8 @@ using WideRows = typename RowSet::template Rows<simd::Float4>;
 
 template <class RowSet>
 void gather(JointBlock& block, const std::array<const PreparedJoint*, 4>& lanes) {
-    static_assert(rowFloatsOf<RowSet::template Rows>() <= JointBlock::rowCapacity, "a row set must fit: raise JointBlock::rowCapacity");
-    for (int lane = 0; lane < 4; ++lane) RowSet::gather(*lanes[lane], RowLane<4>{block.rows.data + lane}, block.optionalRows);
+    static_assert(rowFloatsOf<RowSet::template Rows>() <= jointRowCapacity, "a row set must fit: raise jointRowCapacity");
+    for (int lane = 0; lane < 4; ++lane) RowSet::gather(*lanes[lane], RowLane<4>{block.rows.data + lane}, block.head.optionalRows);
 }
 
 // `rows(rows, pair, block)` on each block (forBlocks, body_lanes.hpp), its bodies in lanes.
@@ -142,7 +127,7 @@ void forJointBlocks(JointBlock* blocks, int count, std::vector<BodyState>& state
     forBlocks<simd::Float4, 0>(
         blocks, 0, count, states.data(),
         [&](JointBlock& block, BodyLanes<simd::Float4>& a, BodyLanes<simd::Float4>& b) {
-            JointPairT<simd::Float4> p{a, b, block.mass};
+            JointPairT<simd::Float4> p{a, b, block.head.mass};
             rows(block.rows.as<WideRows<RowSet>>(), p, block);
         },
         EveryBlock{});
@@ -159,16 +144,16 @@ template <class RowSet>
 void solve(JointBlock* blocks, int count, std::vector<BodyState>& states, const std::vector<float>& stepRotation,
            const StepContext& ctx, bool useBias) {
     forJointBlocks<RowSet>(blocks, count, states, [&](WideRows<RowSet>& rows, JointPairT<simd::Float4>& p, const JointBlock& block) {
-        if (RowSet::usesRotation(block.optionalRows)) p.rotation = laneRotation(block, stepRotation);
-        RowSet::solve(rows, p, ctx, useBias, block.optionalRows);
+        if (RowSet::usesRotation(block.head.optionalRows)) p.rotation = laneRotation(block, stepRotation);
+        RowSet::solve(rows, p, ctx, useBias, block.head.optionalRows);
     });
 }
 
 template <class RowSet>
 void store(const JointBlock& block, std::span<Joint> joints) {
     for (int lane = 0; lane < 4; ++lane)
-        if (block.joint[lane] >= 0)
-            RowSet::store(RowLane<4, const float>{block.rows.data + lane}, joints[block.joint[lane]].data, block.optionalRows);
+        if (block.item[lane] >= 0)
+            RowSet::store(RowLane<4, const float>{block.rows.data + lane}, joints[block.item[lane]].data, block.head.optionalRows);
 }
 
 }  // namespace joint_lanes

@@ -17,6 +17,7 @@
 
 #include "core/bodies/edge_list.hpp"
 #include "core/solver/graph_color.hpp"
+#include "core/solver/lane_block.hpp"
 #include "core/joints/joint.hpp"
 #include "core/joints/joint_tree.hpp"
 #include "core/base/pool.hpp"
@@ -136,7 +137,18 @@ struct JointReaction {
     float angular = 0;
 };
 
-struct JointBlock;  // four joints of one type in SIMD lanes (joint_solver_wide.hpp)
+// Four joints of one type and one graph colour as the lanes of the type's row set (LaneBlock,
+// lane_block.hpp; solved in joint_solver_wide.hpp), the head holding what the passes read besides
+// the rows; item[l] is lane l's joint, -1 for an empty lane. Only item (read by store) comes after
+// the rows, so that a pass reads only the fields its type gathered.
+struct JointHead {
+    JointMassT<simd::Float4> mass;
+    int typeEnd = 0;  // where the colour's blocks of this type end (index in JointScratch::blocks)
+    JointType type = JointType::Revolute;
+    bool optionalRows = false;  // whether a lane's joint has rows others of its type lack
+};
+inline constexpr std::size_t jointRowCapacity = 21;  // floats of the largest row set (the prismatic joint's)
+using JointBlock = LaneBlock<4, jointRowCapacity, JointHead>;
 
 struct JointStore {
     Pool<Joint> joints;

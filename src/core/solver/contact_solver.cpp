@@ -3,6 +3,7 @@
 // restitution) are in contact_solver_wide.{hpp,cpp}.
 #include <cstddef>
 #include <cstring>
+#include <span>
 
 #include "core/solver/contact_prepare.hpp"
 #include "core/solver/contact_solver.hpp"
@@ -26,18 +27,32 @@ BodyState velocityWithoutContact(const SolverWorld& w, const StepContext& ctx, i
     return s;
 }
 
-// The Solver fields of contactRowFields (contact_solver_wide.hpp): the bodies' 1/I, whether the anchors turn.
+// The value of a Solver field (SolverValue, contact_solver_wide.hpp) for constraint c of `contact`;
+// inverseInertias: the bodies' 1/I by solver slot.
+template <SolverValue value>
+float solverFieldValue(std::span<const float> inverseInertias, const ContactConstraint& c, const Contact& contact) {
+    if constexpr (value == SolverValue::InverseInertiaA) {
+        return inverseInertias[c.indexA];
+    } else if constexpr (value == SolverValue::InverseInertiaB) {
+        return inverseInertias[c.indexB];
+    } else if constexpr (value == SolverValue::TurnsA) {
+        return contact.turnsA ? 1.0f : 0.0f;
+    } else {
+        static_assert(value == SolverValue::TurnsB, "a SolverValue needs its case in solverFieldValue");
+        return contact.turnsB ? 1.0f : 0.0f;
+    }
+}
+
+// The Solver fields of contactRowFields (solverRowFields) of a block's `used` lanes, `lanes` wide.
 template <std::size_t lanes>
-void gatherOtherFields(const SolverWorld& w, const ContactConstraint* const (&constraints)[lanes], const Contact* const (&contacts)[lanes],
-                       int used, float* rows) {
-    using Rows = ContactRows<float>;
+void gatherOtherFields(std::span<const float> inverseInertias, const ContactConstraint* const (&constraints)[lanes],
+                       const Contact* const (&contacts)[lanes], int used, float* rows) {
     for (int lane = 0; lane < used; ++lane) {
-        const ContactConstraint& c = *constraints[lane];
         const RowLane<lanes> at{rows + lane};
-        at.set(offsetof(Rows, invIA), w.scratch.bodies.inverseInertias[c.indexA]);
-        at.set(offsetof(Rows, invIB), w.scratch.bodies.inverseInertias[c.indexB]);
-        at.set(offsetof(Rows, turnsA), contacts[lane]->turnsA ? 1.0f : 0.0f);
-        at.set(offsetof(Rows, turnsB), contacts[lane]->turnsB ? 1.0f : 0.0f);
+        forEachRowField<solverRowFields>([&](auto field) {
+            constexpr ContactRowField f = decltype(field)::value;
+            at.set(f.row, solverFieldValue<f.solverValue>(inverseInertias, *constraints[lane], *contacts[lane]));
+        });
     }
 }
 
@@ -62,7 +77,7 @@ void gatherRows(const SolverWorld& w, const ContactConstraint& c, ContactRows<fl
     }
     const ContactConstraint* const constraints[1] = {&c};
     const Contact* const contacts[1] = {&contact};
-    gatherOtherFields(w, constraints, contacts, 1, rows);
+    gatherOtherFields(w.scratch.bodies.inverseInertias, constraints, contacts, 1, rows);
 }
 
 }  // namespace
@@ -105,7 +120,7 @@ void gatherLanes(const SolverWorld& w, const ContactConstraint* const (&constrai
         for (int i = 0; i < 2; ++i) points[i][lane] = &contacts[lane]->points[i].anchorA.x;
     }
     gatherRuns(block, head, points, present);
-    gatherOtherFields(w, constraints, contacts, used, block.rowData());
+    gatherOtherFields(w.scratch.bodies.inverseInertias, constraints, contacts, used, block.rows.data);
 }
 
 }  // namespace

@@ -9,13 +9,16 @@
 #pragma once
 
 #include <array>
+#include <bit>
 #include <cstddef>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "collide/collision.hpp"
 #include "core/contacts/contact_cache.hpp"
 #include "core/solver/body_lanes.hpp"
+#include "core/solver/lane_block.hpp"
 #include "core/solver/row_lanes.hpp"
 
 namespace perpdot {
@@ -130,22 +133,6 @@ void deriveContactRows(ContactRows<F>& c, const BodyLanes<F>& a, const BodyLanes
         cp.normalMass = select(point, effectiveMass<F>(m, rA, rB, n), F(0.0f));
         cp.tangentMass = select(point, effectiveMass<F>(m, rA, rB, t), F(0.0f));
     }
-}
-
-// The uses of a block's `used` lanes, from its rows (rowData(), `lanes` wide).
-inline RowUses rowUses(const float* rows, int lanes, int used) {
-    auto any = [&](std::size_t offset, auto test) {
-        const float* field = rows + offset / sizeof(float) * static_cast<std::size_t>(lanes);
-        for (int lane = 0; lane < used; ++lane)
-            if (test(field[lane])) return true;
-        return false;
-    };
-    auto zero = [](float value) { return value == 0.0f; };
-    auto nonzero = [](float value) { return value != 0.0f; };
-    return {.roundSurface = any(offsetof(ContactRows<float>, turnsA), zero) || any(offsetof(ContactRows<float>, turnsB), zero),
-            .conveyor = any(offsetof(ContactRows<float>, tangentSpeed), nonzero),
-            .rolling = any(offsetof(ContactRows<float>, rollingResistance), [](float value) { return value > 0.0f; }),
-            .elastic = any(offsetof(ContactRows<float>, restitution), nonzero)};
 }
 
 // Re-apply last step's accumulated impulses: λn n + λt perp(n) at each point, λr on the angle.
@@ -302,15 +289,27 @@ void restituteContact(ContactRows<F>& c, BodyLanes<F>& a, BodyLanes<F>& b, Vec2T
 // N floats each, in the same order: field i of lane l is float i·N + l of the rows (row_lanes.hpp).
 constexpr std::size_t rowFloats = rowFloatsOf<ContactRows>();
 
-// The one table of the contact rows' fields: where each float of ContactRows<float> comes from
-// and whether it goes back into the contact. The gathers read the runs it makes (contactRunFields,
-// pointRunFields) and the stores its stored fields (storeContactRows, contact_solver_wide.cpp);
-// everyRowFloatOnce checks at compile time that it names every float of the rows once.
+// The one table of the contact rows' fields: where each float of ContactRows<float> comes from,
+// whether it goes back into the contact, and which RowUses flag it sets. The gathers read the runs
+// it makes (contactRunFields, pointRunFields) and its Solver fields (solverRowFields, gathered by
+// gatherOtherFields, contact_solver.cpp), the stores its stored fields (storeContactRows,
+// contact_solver_wide.cpp), rowUses its gating fields; checks at compile time below fail the build
+// where a field lacks a line or a line lacks what its source needs.
 enum class RowSource : unsigned char {
     Run,      // in one of the contact's runs of floats: from Contact::friction, or from a point's anchorA
-    Solver,   // from the solver's slots and the contact's flags (gatherOtherFields, contact_solver.cpp)
+    Solver,   // from the solver's slots and the contact's flags: its SolverValue
     Derived,  // computed from the others (deriveContactRows)
 };
+// The value of a Solver field (solverFieldValue, contact_solver.cpp).
+enum class SolverValue : unsigned char {
+    None,             // not a Solver field
+    InverseInertiaA,  // 1/I of body A (SolverBodies::inverseInertias by its solver slot)
+    InverseInertiaB,
+    TurnsA,           // 1 where A's surface is flat (Contact::turnsA), else 0
+    TurnsB,
+};
+// The test a lane's value passes where it uses the RowUses flag its field gates.
+enum class LaneTest : unsigned char { Zero, Nonzero, Positive };
 struct ContactRowField {
     std::size_t row;          // offsetof in ContactRows<float> (a point field: point 0's)
     std::size_t floats;       // 1, or 2 for a Vec2
@@ -319,6 +318,9 @@ struct ContactRowField {
     std::size_t contact;  // offsetof in Contact (a point field: in ContactPointState) it is read from
                           // (Run) or stored to; 0 for neither
     bool stored;          // written back into the contact after the step (storeContactRows)
+    SolverValue solverValue = SolverValue::None;  // a Solver field's
+    bool RowUses::*gates = nullptr;               // the flag a lane sets where its value passes usedWhen (rowUses)
+    LaneTest usedWhen = LaneTest::Nonzero;
 };
 
 namespace contact_rows {
@@ -331,8 +333,8 @@ constexpr std::size_t point = sizeof(P), each = sizeof(float);  // the strides o
 
 // clang-format off
 inline constexpr ContactRowField contactRowFields[] = {
-    {offsetof(contact_rows::R, invIA),             1, 0, RowSource::Solver,  0, false},
-    {offsetof(contact_rows::R, invIB),             1, 0, RowSource::Solver,  0, false},
+    {offsetof(contact_rows::R, invIA),             1, 0, RowSource::Solver,  0, false, SolverValue::InverseInertiaA},
+    {offsetof(contact_rows::R, invIB),             1, 0, RowSource::Solver,  0, false, SolverValue::InverseInertiaB},
     {offsetof(contact_rows::R, normal),            2, 0, RowSource::Run,     offsetof(contact_rows::C, normal), false},
     {offsetof(contact_rows::R, friction),          1, 0, RowSource::Run,     offsetof(contact_rows::C, friction), false},
     {offsetof(contact_rows::R, points[0].anchorA), 2, contact_rows::point, RowSource::Run, offsetof(contact_rows::S, anchorA), false},
@@ -342,13 +344,13 @@ inline constexpr ContactRowField contactRowFields[] = {
     {offsetof(contact_rows::R, points[0].tangentImpulse), 1, contact_rows::point, RowSource::Run, offsetof(contact_rows::S, tangentImpulse), true},
     {offsetof(contact_rows::R, points[0].normalMass),     1, contact_rows::point, RowSource::Derived, 0, false},
     {offsetof(contact_rows::R, points[0].tangentMass),    1, contact_rows::point, RowSource::Derived, 0, false},
-    {offsetof(contact_rows::R, turnsA),            1, 0, RowSource::Solver,  0, false},
-    {offsetof(contact_rows::R, turnsB),            1, 0, RowSource::Solver,  0, false},
-    {offsetof(contact_rows::R, tangentSpeed),      1, 0, RowSource::Run,     offsetof(contact_rows::C, tangentSpeed), false},
-    {offsetof(contact_rows::R, rollingResistance), 1, 0, RowSource::Run,     offsetof(contact_rows::C, rollingResistance), false},
+    {offsetof(contact_rows::R, turnsA),            1, 0, RowSource::Solver,  0, false, SolverValue::TurnsA, &RowUses::roundSurface, LaneTest::Zero},
+    {offsetof(contact_rows::R, turnsB),            1, 0, RowSource::Solver,  0, false, SolverValue::TurnsB, &RowUses::roundSurface, LaneTest::Zero},
+    {offsetof(contact_rows::R, tangentSpeed),      1, 0, RowSource::Run,     offsetof(contact_rows::C, tangentSpeed), false, SolverValue::None, &RowUses::conveyor, LaneTest::Nonzero},
+    {offsetof(contact_rows::R, rollingResistance), 1, 0, RowSource::Run,     offsetof(contact_rows::C, rollingResistance), false, SolverValue::None, &RowUses::rolling, LaneTest::Positive},
     {offsetof(contact_rows::R, rollingMass),       1, 0, RowSource::Derived, 0, false},
     {offsetof(contact_rows::R, rollingImpulse),    1, 0, RowSource::Run,     offsetof(contact_rows::C, rollingImpulse), true},
-    {offsetof(contact_rows::R, restitution),       1, 0, RowSource::Run,     offsetof(contact_rows::C, restitution), false},
+    {offsetof(contact_rows::R, restitution),       1, 0, RowSource::Run,     offsetof(contact_rows::C, restitution), false, SolverValue::None, &RowUses::elastic, LaneTest::Nonzero},
     {offsetof(contact_rows::R, maxNormalImpulse),  1, contact_rows::each, RowSource::Derived, offsetof(contact_rows::S, maxNormalImpulse), true},
     {offsetof(contact_rows::R, relativeVelocity),  1, contact_rows::each, RowSource::Derived, 0, false},
 };
@@ -399,38 +401,94 @@ constexpr std::array<std::size_t, 7> runFields() {
 inline constexpr std::array<std::size_t, 7> contactRunFields = runFields<false>();
 inline constexpr std::array<std::size_t, 7> pointRunFields = runFields<true>();
 
-// The fields stored back into the contact, in order of the table.
-constexpr std::size_t storedFieldCount() {
+// Each Solver field one float of the contact's with its SolverValue, and no other field with one.
+constexpr bool everySolverFieldValued() {
+    for (const ContactRowField& f : contactRowFields) {
+        const bool solver = f.source == RowSource::Solver;
+        if (solver != (f.solverValue != SolverValue::None) || (solver && (f.floats != 1 || f.pointStride != 0))) return false;
+    }
+    return true;
+}
+static_assert(everySolverFieldValued(), "a Solver field is one float of the contact's and names its SolverValue; no other field names one");
+
+// Every flag of RowUses (bools only) gated by a field of the contact's, one float.
+constexpr bool everyUseGated() {
+    RowUses ungated{};
+    for (const ContactRowField& f : contactRowFields) {
+        if (f.gates == nullptr) continue;
+        if (f.floats != 1 || f.pointStride != 0) return false;
+        ungated.*f.gates = false;
+    }
+    for (bool flag : std::bit_cast<std::array<bool, sizeof(RowUses)>>(ungated))
+        if (flag) return false;
+    return true;
+}
+static_assert(everyUseGated(), "every RowUses flag must be gated by a field of contactRowFields (a contact's float)");
+
+// The lines of contactRowFields that `keep`, in order of the table.
+constexpr std::size_t rowFieldCount(bool (*keep)(const ContactRowField&)) {
     std::size_t count = 0;
-    for (const ContactRowField& f : contactRowFields) count += f.stored ? 1 : 0;
+    for (const ContactRowField& f : contactRowFields) count += keep(f) ? 1 : 0;
     return count;
 }
-inline constexpr auto storedRowFields = [] {
-    std::array<ContactRowField, storedFieldCount()> stored{};
+template <bool (*keep)(const ContactRowField&)>
+inline constexpr auto rowFieldsWhere = [] {
+    std::array<ContactRowField, rowFieldCount(keep)> kept{};
     std::size_t n = 0;
     for (const ContactRowField& f : contactRowFields)
-        if (f.stored) stored[n++] = f;
-    return stored;
+        if (keep(f)) kept[n++] = f;
+    return kept;
 }();
+constexpr bool isStored(const ContactRowField& f) { return f.stored; }
+constexpr bool isSolver(const ContactRowField& f) { return f.source == RowSource::Solver; }
+constexpr bool isGating(const ContactRowField& f) { return f.gates != nullptr; }
+inline constexpr auto storedRowFields = rowFieldsWhere<isStored>;  // stored back into the contact
+inline constexpr auto solverRowFields = rowFieldsWhere<isSolver>;  // gathered by gatherOtherFields
+inline constexpr auto gatingRowFields = rowFieldsWhere<isGating>;  // read by rowUses
 
-// N constraints of one graph colour (no two share a dynamic body) as the lanes of one row set:
-// N = 4 (simd::Float4) or, for CPUs with AVX2, 8 (Float8, contact_solver_avx2.cpp). The rows are
-// ContactRows<F> of an N-lane F (LaneRows, row_lanes.hpp).
+// fn(field) on each line of `fields` (one of the arrays above), unrolled: field is a
+// std::integral_constant, and decltype(field)::value the line as a constant expression.
+template <const auto& fields, class Fn>
+[[gnu::always_inline]] inline void forEachRowField(Fn&& fn) {
+    [&]<std::size_t... k>(std::index_sequence<k...>) {
+        (fn(std::integral_constant<ContactRowField, fields[k]>{}), ...);
+    }(std::make_index_sequence<fields.size()>());
+}
+
+// The uses of a block's `used` lanes, from its rows (`lanes` wide): each flag set where a lane's
+// value of a field that gates it passes the field's test.
+inline RowUses rowUses(const float* rows, int lanes, int used) {
+    RowUses uses{};
+    forEachRowField<gatingRowFields>([&](auto field) { uses.*decltype(field)::value.gates = false; });
+    forEachRowField<gatingRowFields>([&](auto field) {
+        constexpr LaneTest test = decltype(field)::value.usedWhen;
+        bool& flag = uses.*decltype(field)::value.gates;
+        if (flag) return;  // set by an earlier field
+        const float* values = rows + decltype(field)::value.row / sizeof(float) * static_cast<std::size_t>(lanes);
+        for (int lane = 0; lane < used; ++lane) {
+            const float value = values[lane];
+            if (test == LaneTest::Zero ? value == 0.0f : test == LaneTest::Nonzero ? value != 0.0f : value > 0.0f) {
+                flag = true;
+                return;
+            }
+        }
+    });
+    return uses;
+}
+
+// N constraints of one graph colour as the lanes of one row set (LaneBlock, lane_block.hpp): N = 4
+// (simd::Float4) or, for CPUs with AVX2, 8 (Float8, contact_solver_avx2.cpp). The rows are
+// ContactRows<F> of an N-lane F; the head is the lanes' RowUses (rowUses), the fields after the
+// points they read; item[l] is lane l's contact, -1 for an empty lane (layOutBlocks).
 template <std::size_t N>
-struct alignas(64) ContactBlock {
-    static constexpr int lanes = static_cast<int>(N);
-    int bodyA[N] = {}, bodyB[N] = {};  // solver slots; an empty lane uses the static slot 0
-    RowUses uses;                      // of its lanes (rowUses): the fields after the points they read
-    LaneRows<N, rowFloats> rows;
-    int contact[N] = {};  // index in World::Impl::contacts, -1 for an empty lane (layOutBlocks); read by layout and store only
-    const float* rowData() const { return rows.data; }
-    float* rowData() { return rows.data; }
-    template <class F>
-    ContactRows<F>& rowsAs() {
-        static_assert(sizeof(ContactRows<F>) == sizeof rows, "F must be N lanes wide");
-        return rows.template as<ContactRows<F>>();
-    }
-};
+using ContactBlock = LaneBlock<N, rowFloats, RowUses>;
+
+// A block's rows as ContactRows<F>, F N lanes wide.
+template <class F, std::size_t N>
+ContactRows<F>& contactRowsOf(ContactBlock<N>& block) {
+    static_assert(sizeof(ContactRows<F>) == sizeof block.rows, "F must be N lanes wide");
+    return block.rows.template as<ContactRows<F>>();
+}
 // What a pass over blocks of flat, plain contacts reads: whole cache lines, 13 of them.
 static_assert(offsetof(ContactBlock<8>, rows) + offsetof(ContactRows<float>, turnsA) * 8 == 13 * 64);
 
@@ -509,7 +567,7 @@ void deriveContactBlock(ContactBlock<N>& block, const BodyState* freeVelocities,
     const BodyLanes<F> a = LaneBodies<F>::gather(freeVelocities, block.bodyA);
     const BodyLanes<F> b = LaneBodies<F>::gather(freeVelocities, block.bodyB);
     const F points[2] = {F::load(present[0]), F::load(present[1])};
-    deriveContactRows(block.template rowsAs<F>(), a, b, points, ctx);
+    deriveContactRows(contactRowsOf<F>(block), a, b, points, ctx);
 }
 
 // One pass over the blocks [begin, end) of N lanes of F (forBlocks, body_lanes.hpp).
@@ -520,9 +578,9 @@ void contactBlockRows(ContactBlock<N>* blocks, int begin, int end, BodyState* st
         forBlocks<F, bodiesAhead>(
             blocks, begin, end, states,
             [&](ContactBlock<N>& block, BodyLanes<F>& a, BodyLanes<F>& b) {
-                rows(block.template rowsAs<F>(), a, b, block.bodyA, block.bodyB, block.uses);
+                rows(contactRowsOf<F>(block), a, b, block.bodyA, block.bodyB, block.head);
             },
-            [](const ContactBlock<N>& block) { return !decltype(elasticOnly)::value || block.uses.elastic; });
+            [](const ContactBlock<N>& block) { return !decltype(elasticOnly)::value || block.head.elastic; });
     });
 }
 

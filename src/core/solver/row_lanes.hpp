@@ -50,7 +50,7 @@ struct RowLane {
     }
 };
 
-// The rows of a block of N constraints (ContactBlock, JointBlock): a row set Rows<F> of an N-lane
+// The rows of a block of N constraints (LaneBlock, lane_block.hpp): a row set Rows<F> of an N-lane
 // F, at most `floats` floats a lane, kept as floats because only the AVX2 file may name its F, and
 // read as the row set by as<Rows>().
 template <std::size_t N, std::size_t floats>
