@@ -8,6 +8,7 @@
 #include "core/joints/joint_revolute.hpp"
 #include "core/joints/joint_solver_wide.hpp"
 #include "core/joints/joint_tree_stiffness.hpp"
+#include "core/solver/solver_world.hpp"
 #include "core/world/world_impl.hpp"
 
 namespace perpdot {
@@ -26,6 +27,9 @@ namespace {
 JointStore& store(World::Impl& w) { return *w.joints; }
 const JointStore& store(const World::Impl& w) { return *w.joints; }
 JointScratch& jointScratch(World::Impl& w) { return *w.scratch.joints; }
+// The same parts through the solver's view, for the solver stages.
+JointStore& store(const SolverWorld& w) { return w.joints; }
+JointScratch& jointScratch(const SolverWorld& w) { return w.scratch.joints; }
 
 // A joint that forbids collision between its bodies removes their contacts.
 void destroyContactsBetween(World::Impl& w, int bodyA, int bodyB) {
@@ -104,7 +108,7 @@ JointId jointId(const World::Impl& w, const Joint& joint) {
 namespace {
 
 // The frame at step start and a working copy of the type data, then the type's own prepare.
-void prepareJoint(PreparedJoint& j, const World::Impl& w, const Joint& joint, const StepContext& ctx) {
+void prepareJoint(PreparedJoint& j, const SolverWorld& w, const Joint& joint, const StepContext& ctx) {
     const Body& a = w.bodies[joint.bodyA];
     const Body& b = w.bodies[joint.bodyB];
     j.type = joint.type;
@@ -204,7 +208,7 @@ int8_t laneRowsOf(int color, const JointKey& j, bool breakable) {
 
 // Store order, the order of the joints' and bodies' memory, throughout. The workers select the
 // awake joints and prepare them.
-void prepareJoints(World::Impl& w, const StepContext& ctx) {
+void prepareJoints(const SolverWorld& w, const StepContext& ctx) {
     JointStore& s = store(w);
     JointScratch& d = jointScratch(w);
     s.invHs = ctx.invHs;
@@ -234,7 +238,7 @@ void prepareJoints(World::Impl& w, const StepContext& ctx) {
 // type can share SIMD lanes), the revolute trees leave the colours, and each joint is sent to the
 // next lane of its colour and type or to its colour's next scalar slot (within a colour the order
 // is free); the workers pack the blocks' lanes.
-void colorJoints(World::Impl& w, const StepContext& ctx) {
+void colorJoints(const SolverWorld& w, const StepContext& ctx) {
     constexpr int overflow = GraphColoring::overflow;
     JointScratch& d = jointScratch(w);
     const int count = static_cast<int>(d.keys.size());
@@ -333,7 +337,7 @@ void projectJoints(JointScratch& d, SolverBodies& bodies) {
 }
 
 // The accumulated impulses go back to the joints, ready for the next step's warm start.
-void storeJointImpulses(World::Impl& w, const StepContext&) {
+void storeJointImpulses(const SolverWorld& w, const StepContext&) {
     JointStore& s = store(w);
     JointScratch& d = jointScratch(w);
     w.workers.parallelFor(static_cast<int>(d.blocks.size()), 64, [&](int begin, int end, int) {

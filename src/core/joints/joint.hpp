@@ -19,17 +19,19 @@ JointStorePtr makeJointStore();
 // The joints' per-step arrays (joint_store.hpp), for the step scratch.
 struct JointScratch;
 struct SolverBodies;  // step_scratch.hpp
+struct SolverWorld;   // solver_world.hpp
 struct JointScratchDeleter {
     void operator()(JointScratch* scratch) const;
 };
 using JointScratchPtr = std::unique_ptr<JointScratch, JointScratchDeleter>;
 JointScratchPtr makeJointScratch();
 
-// Solver stages, run by World::step (step.cpp, solver_stages.cpp) like the contact stages.
+// Solver stages, run by World::step (step.cpp, solver_stages.cpp) like the contact stages; they read
+// the world through the solver's view (solver_world.hpp).
 // prepareJoints: the awake joints, each prepared (anchors, effective masses) on the workers;
 // colorJoints: then coloured, the revolute trees found (and stiffened), and laid out in blocks and slots.
-void prepareJoints(World::Impl& world, const StepContext& ctx);
-void colorJoints(World::Impl& world, const StepContext& ctx);
+void prepareJoints(const SolverWorld& world, const StepContext& ctx);
+void colorJoints(const SolverWorld& world, const StepContext& ctx);
 // The work of colour `color` (below GraphColoring::overflow) in a pass: units that share no
 // moving body, to be run in any order or side by side.
 int jointUnitCount(const JointScratch& joints, int color);
@@ -37,12 +39,13 @@ void jointRows(JointScratch& joints, SolverBodies& bodies, const StepContext& ct
 // The joints no colour could take, then the revolute trees: one after another.
 int serialJointCount(const JointScratch& joints);
 void serialJointRows(JointScratch& joints, SolverBodies& bodies, const StepContext& ctx, RowPass pass);
-void storeJointImpulses(World::Impl& world, const StepContext& ctx);
+void storeJointImpulses(const SolverWorld& world, const StepContext& ctx);
 // After the substeps: a Newton step on the positions of each revolute tree (joint_tree.hpp).
 void projectJoints(JointScratch& joints, SolverBodies& bodies);
 
 // Reports (and destroys, where asked) the joints whose reaction, averaged over the step, passed
-// their break limits; run after storeJointImpulses.
+// their break limits; run after storeJointImpulses. A world stage: it removes joints, records
+// events and wakes bodies, so it takes the hub.
 void breakJoints(World::Impl& world, const StepContext& ctx);
 
 // False when a joint between the two bodies has collideConnected == false.

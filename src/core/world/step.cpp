@@ -38,6 +38,7 @@ SolverWorld solverWorld(World::Impl& w) {
     StepScratch& s = w.scratch;
     return {.bodies = w.bodies,
             .contactCache = w.contactCache,
+            .joints = *w.joints,
             .scratch = {.bodies = s.bodies, .contacts = s.contacts, .coloring = s.coloring, .joints = *s.joints},
             .workers = w.workers,
             .gravity = w.def.gravity,
@@ -75,10 +76,10 @@ void World::step(float timeStep) {
 
     StepContext ctx = makeStepContext(w, timeStep);
     integrateVelocities(w, ctx);
-    prepareJoints(w, ctx);   // prepare: effective masses, anchors, warm-start impulses
-    startTreeRefit(w, ctx);  // the broadphase follows the predicted poses on a worker of its own,
-    colorJoints(w, ctx);     // beside the joints' serial colouring
     const SolverWorld solver = solverWorld(w);
+    prepareJoints(solver, ctx);  // prepare: effective masses, anchors, warm-start impulses
+    startTreeRefit(w, ctx);      // the broadphase follows the predicted poses on a worker of its own,
+    colorJoints(solver, ctx);    // beside the joints' serial colouring
     prepareContacts(solver, ctx);
     // Per substep: its forces, warm start, solve with soft bias, x += hs v, relax without bias;
     // then restitution, Hecker's bounce, once (solver_stages.hpp: the rows colour by colour, on
@@ -87,7 +88,7 @@ void World::step(float timeStep) {
     w.scratch.solverStages.run(solver, ctx);
     projectJoints(*w.scratch.joints, w.scratch.bodies);         // project: the anchors of revolute trees meet again
     storeContactImpulses(w.scratch.contacts, w.contactCache);  // store: impulses for the next step's warm start (the lanes' stored by the solver)
-    storeJointImpulses(w, ctx);
+    storeJointImpulses(solver, ctx);
     reportHitEvents(w);
     finishTreeRefit(w);
     finalizeBodies(w, ctx);  // positions back into the bodies; continuous collision
