@@ -8,7 +8,8 @@
 // keeps manifolds the same way ("contact recycling").
 #pragma once
 
-#include "core/world/world_impl.hpp"
+#include "core/bodies/body_store.hpp"
+#include "core/contacts/contact_cache.hpp"
 
 namespace perpdot {
 

@@ -10,9 +10,14 @@
 
 #include <tuple>
 
-#include "core/snapshot/math_fields.hpp"
+#include "collide/collision.hpp"
+#include "core/bodies/body_store.hpp"
+#include "core/contacts/contact_cache.hpp"
 #include "core/joints/joint_store.hpp"
-#include "core/world/world_impl.hpp"
+#include "core/shapes/shape_store.hpp"
+#include "core/snapshot/math_fields.hpp"
+#include "perpdot/events.hpp"
+#include "perpdot/world.hpp"
 
 namespace perpdot {
 
