@@ -103,6 +103,10 @@ JointId jointId(const World::Impl& w, const Joint& joint) {
     return {static_cast<int32_t>(&joint - store(w).joints.slots().data()), joint.generation, w.identity.issued};
 }
 
+const Body& checkedBody(const World::Impl& w, BodyId id, const char* call) { return w.body(id, call); }
+const Body& bodyAt(const World::Impl& w, int index) { return w.bodies[index]; }
+BodyId bodyIdAt(const World::Impl& w, int index) { return w.bodyId(index); }
+
 // --- Solver stages ---
 
 namespace {

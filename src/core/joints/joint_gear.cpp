@@ -6,10 +6,10 @@
 #include <cmath>
 #include <string>
 
+#include "core/bodies/body_store.hpp"
 #include "core/joints/joint_coupled_row.hpp"
 #include "core/joints/joint_prismatic.hpp"
 #include "core/joints/joint_type.hpp"
-#include "core/world/world_impl.hpp"
 
 namespace perpdot {
 
@@ -60,8 +60,8 @@ GearSide gearSide(const World::Impl& w, const Joint& joint, const char* which) {
     const std::string name = std::string("GearJointDef.") + which;
     if (joint.type != JointType::Revolute && joint.type != JointType::Prismatic)
         throw Error(name + " must be a revolute or prismatic joint");
-    const Body& base = w.bodies[joint.bodyA];
-    const Body& moving = w.bodies[joint.bodyB];
+    const Body& base = bodyAt(w, joint.bodyA);
+    const Body& moving = bodyAt(w, joint.bodyB);
     if (base.type != BodyType::Static)
         throw Error(name + "'s body A must be static (perpdot's gear couples the two joints' bodies B)");
     GearSide side{.kind = joint.type};
@@ -105,7 +105,7 @@ Joint& makeJoint(World::Impl& w, const GearJointDef& def) {
     const int bodyA = jointA.bodyB, bodyB = jointB.bodyB;
     const Vec2 anchorA = jointA.localAnchorB, anchorB = jointB.localAnchorB;
     if (bodyA == bodyB) throw Error("GearJointDef: the two joints move the same body");
-    Joint& j = addJoint(w, JointType::Gear, w.bodyId(bodyA), w.bodyId(bodyB), anchorA, anchorB, 0.0f,
+    Joint& j = addJoint(w, JointType::Gear, bodyIdAt(w, bodyA), bodyIdAt(w, bodyB), anchorA, anchorB, 0.0f,
                         def.collideConnected, def.userData);
     GearJoint& g = j.data.emplace<GearJoint>();
     g.sideA = sideA;

@@ -3,10 +3,10 @@
 // The target is anchor A, so it stays put in A's frame (A is normally static).
 #include <cmath>
 
+#include "core/bodies/body_store.hpp"
 #include "core/joints/joint_mouse.hpp"
 #include "core/joints/joint_rows.hpp"
 #include "core/joints/joint_type.hpp"
-#include "core/world/world_impl.hpp"
 
 namespace perpdot {
 
@@ -16,7 +16,7 @@ Joint& makeJoint(World::Impl& w, const MouseJointDef& def) {
                   "MouseJointDef spring");
     if (!(def.hertz > 0.0f) || def.dampingRatio < 0.0f || def.maxForce < 0.0f)
         throw Error("MouseJointDef: need hertz > 0, dampingRatio >= 0 and maxForce >= 0");
-    const Transform xfA = w.body(def.bodyA, "createJoint").xf, xfB = w.body(def.bodyB, "createJoint").xf;
+    const Transform xfA = checkedBody(w, def.bodyA, "createJoint").xf, xfB = checkedBody(w, def.bodyB, "createJoint").xf;
     Joint& j = addJoint(w, JointType::Mouse, def.bodyA, def.bodyB, invTransformPoint(xfA, def.target),
                         invTransformPoint(xfB, def.target), 0.0f, def.collideConnected, def.userData);
     MouseJoint& s = j.data.emplace<MouseJoint>();

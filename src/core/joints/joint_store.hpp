@@ -184,6 +184,8 @@ struct JointScratch {
     std::vector<JointReaction> stepImpulse;
 };
 
+struct Body;  // body_store.hpp
+
 // The common part of createJoint: checks the bodies, links the joint, wakes the bodies and,
 // unless collideConnected, removes their contacts. Returns the new joint (type data unset).
 Joint& addJoint(World::Impl& world, JointType type, BodyId bodyA, BodyId bodyB, Vec2 localAnchorA,
@@ -193,13 +195,18 @@ JointId jointId(const World::Impl& world, const Joint& joint);
 void shiftPulleyGround(Joint& pulley, Vec2 newOrigin);
 // The live joint of `id`; Error naming `call` (by default the caller) for a null, stale or foreign id.
 Joint& checkedJoint(const World::Impl& world, JointId id, const char* call = __builtin_FUNCTION());
+// The bodies as a joint type reads them when it creates a joint (the gear and mouse joints): the
+// live body of `id` (Error naming `call` as checkedJoint does), the body at pool index `index` and
+// its id.
+const Body& checkedBody(const World::Impl& world, BodyId id, const char* call = __builtin_FUNCTION());
+const Body& bodyAt(const World::Impl& world, int index);
+BodyId bodyIdAt(const World::Impl& world, int index);
 void requireFinite(bool ok, const char* what);  // Error "<what> must be finite" unless ok
 
 // A joint type's solver stages. prepare runs after the common frame (anchors, masses, deltaCenter,
 // deltaAngle) is set, with the two bodies as the step starts.
 // lanes: the stages of the type's blocks of four (joint_solver_wide.hpp), null for a type solved
 // one joint at a time.
-struct Body;
 struct JointLaneStages;
 struct JointStages {
     void (*prepare)(PreparedJoint& joint, const StepContext& ctx, const Body& a, const Body& b);
