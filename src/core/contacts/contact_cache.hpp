@@ -108,7 +108,7 @@ struct ContactCache {
     std::vector<int> unquiet;                      // and the contacts it has more to do for, in pool order;
     std::vector<int> apart;                        // of those, the ones whose boxes parted (releaseApartContacts)
     // By contact slot, what updateContacts passes over contacts whose bodies both sleep with, and
-    // markTouching and prepareContacts select constraints by, without reading the contacts' cache
+    // markTouching and selectContacts select constraints by, without reading the contacts' cache
     // lines (a pool of 58,000 contacts is 13 MB): its two bodies (they never change) and the
     // manifold points of a touching contact (0: free or not touching). bindShapes sets both as a
     // contact is created or restored; updateContacts keeps the points in step with the contact

@@ -229,6 +229,7 @@ void prepareJoints(const SolverWorld& w, const StepContext& ctx) {
             d.prepared.resize(total);
             d.keys.resize(total);
             d.stepImpulse.assign(total, {});
+            d.direct.assign(total, 0);
         },
         [&](int k, int index) {
             d.awake[k] = index;
@@ -261,7 +262,7 @@ void colorJoints(const SolverWorld& w, const StepContext& ctx) {
     std::array<std::array<int, types>, overflow + 1> plainLanes{}, optionalLanes{};
     std::array<int, overflow + 1> scalarCount{};
     for (int k = 0; k < count; ++k) {
-        if (d.trees.inTree[k]) continue;
+        if (d.trees.inTree[k] || d.direct[k]) continue;
         const JointKey& j = d.keys[k];
         const int color = d.colors[k] = coloring.assign(j.indexA, j.indexB);
         const int8_t rows = d.laneRows[k] = laneRowsOf(color, j, d.prepared[k].breakable);
@@ -291,7 +292,7 @@ void colorJoints(const SolverWorld& w, const StepContext& ctx) {
     ColorStarts nextScalar = d.scalarStart;
     for (int k = 0; k < count; ++k) {
         const int color = d.colors[k];
-        if (d.trees.inTree[k]) continue;
+        if (d.trees.inTree[k] || d.direct[k]) continue;
         if (d.laneRows[k] < 0) {
             d.scalarOrder[nextScalar[color]++] = k;
             continue;
@@ -349,6 +350,8 @@ void storeJointImpulses(const SolverWorld& w, const StepContext&) {
     });
     for (int position : d.scalarOrder) s.joints[d.awake[position]].data = d.prepared[position].data;
     for (int position : d.trees.joints) s.joints[d.awake[position]].data = d.prepared[position].data;
+    for (int k = 0; k < static_cast<int>(d.direct.size()); ++k)
+        if (d.direct[k]) s.joints[d.awake[k]].data = d.prepared[k].data;
 }
 
 bool jointAllowsCollision(const World::Impl& w, int bodyA, int bodyB) {

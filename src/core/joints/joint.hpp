@@ -43,6 +43,28 @@ void storeJointImpulses(const SolverWorld& world, const StepContext& ctx);
 // After the substeps: a Newton step on the positions of each revolute tree (joint_tree.hpp).
 void projectJoints(JointScratch& joints, SolverBodies& bodies);
 
+// A joint's rows in a contact group's direct solve (contact_groups.hpp): row i measures
+// Ċ = n·(vB − vA) + sB ωB − sA ωA with the arms at step start; λ is free on an equality row and
+// λ ≥ 0 on a one-sided row (a limit, speculative while its C > 0).
+struct DirectJointRow {
+    Vec2 n;
+    float sA = 0, sB = 0;
+    bool oneSided = false;
+};
+constexpr int maxDirectJointRows = 4;  // a revolute joint's point rows and limits; a prismatic's perpendicular, angle and limits
+int awakeJointCount(const JointScratch& joints);
+std::pair<int, int> jointSlots(const JointScratch& joints, int k);  // of the k-th awake joint
+// The rows of the k-th awake joint a direct solve takes (revolute, rigid weld and prismatic joints
+// without a motor or break limits): their count, 0 for a joint that stays sequential.
+int directJointRows(const JointScratch& joints, int k, DirectJointRow* rows);
+// Their position errors C now, in the same order.
+void directJointErrors(const JointScratch& joints, SolverBodies& bodies, int k, float* C);
+// The k-th awake joint solved by a contact group this step: no colour, no tree, its λ the group's.
+void solveJointDirectly(JointScratch& joints, int k);
+// The accumulated λ of its row `row` (the warm start), and the group's λ written back.
+float directJointImpulse(const JointScratch& joints, int k, int row);
+void setDirectJointImpulse(JointScratch& joints, int k, int row, float impulse);
+
 // Reports (and destroys, where asked) the joints whose reaction, averaged over the step, passed
 // their break limits; run after storeJointImpulses. A world stage: it removes joints, records
 // events and wakes bodies, so it takes the hub.

@@ -182,6 +182,7 @@ struct JointScratch {
     // Of prepared[k] where breakable: the impulses on B summed over the step's substeps (each
     // substep's accumulated λ after its relax pass), zero elsewhere.
     std::vector<JointReaction> stepImpulse;
+    std::vector<uint8_t> direct;  // of prepared[k]: 1 where a contact group solves it (solveJointDirectly)
 };
 
 struct Body;  // body_store.hpp

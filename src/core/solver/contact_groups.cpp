@@ -33,12 +33,45 @@ struct RowSide {
 };
 
 // −n, −perpDot(rA, n) for A; n, perpDot(rB, n) for B.
-std::array<RowSide, 2> sidesOf(const SolverWorld& w, const ContactConstraint& c, const ContactRows<float>& rows,
+std::array<RowSide, 2> sidesOf(const SolverBodies& bodies, const ContactConstraint& c, const ContactRows<float>& rows,
                                const ContactPointRows<float>& cp) {
     const Vec2 n = rows.normal;
-    const RowMasses m = rowMasses(w.scratch.bodies, c.indexA, c.indexB);
+    const RowMasses m = rowMasses(bodies, c.indexA, c.indexB);
     return {RowSide{c.indexA, -n, -perpDot(cp.anchorA, n), m.invMassA, m.invIA},
             RowSide{c.indexB, n, perpDot(cp.anchorB, n), m.invMassB, m.invIB}};
+}
+
+// A joint row's: −n, −sA for A; n, sB for B (joint_rows.hpp).
+std::array<RowSide, 2> sidesOf(const SolverBodies& bodies, const JointScratch& joints, const ContactGroups::JointRow& row) {
+    const auto [a, b] = jointSlots(joints, row.joint);
+    const RowMasses m = rowMasses(bodies, a, b);
+    const DirectJointRow& j = row.jacobian;
+    return {RowSide{a, -j.n, -j.sA, m.invMassA, m.invIA}, RowSide{b, j.n, j.sB, m.invMassB, m.invIB}};
+}
+
+// Row `row` of the groups (an index into g.rows): a contact's normal row or a joint's row.
+std::array<RowSide, 2> sidesOf(const ContactScratch& contacts, const SolverBodies& bodies, const JointScratch& joints, int row) {
+    const auto [k, i] = contacts.groups.rows[row];
+    if (k < 0) return sidesOf(bodies, joints, contacts.groups.jointRows[i]);
+    const ContactRows<float>& rows = contacts.constraintRows[k];
+    return sidesOf(bodies, contacts.constraints[k], rows, rows.points[i]);
+}
+
+// J v of a row: Σ over its sides lin·v + ang ω.
+float rowVelocity(const std::array<RowSide, 2>& sides, const SolverBodies& bodies) {
+    float v = 0.0f;
+    for (const RowSide& p : sides) v += dot(p.lin, bodies.states[p.slot].v) + p.ang * bodies.states[p.slot].w;
+    return v;
+}
+
+// λ along a row: each side's body moves by M⁻¹ Jᵀ λ.
+void applyRow(const std::array<RowSide, 2>& sides, SolverBodies& bodies, float impulse) {
+    for (const RowSide& p : sides) {
+        if (p.slot == 0) continue;
+        BodyState& s = bodies.states[p.slot];
+        s.v = s.v + (p.invMass * impulse) * p.lin;
+        s.w += p.invInertia * impulse * p.ang;
+    }
 }
 
 // K_rs = Σ over the bodies rows r and s share: lin_r·lin_s / m + ang_r ang_s / I.
@@ -63,11 +96,7 @@ bool assemble(const SolverWorld& w, ContactGroups& g, int group) {
     const EnvelopeShape shape = shapeOf(g, group);
     double* K = &g.K[g.matrixStart[group]];
     double* L = &g.L[g.matrixStart[group]];
-    auto sides = [&](int row) {
-        const auto [k, i] = g.rows[first + row];
-        const ContactRows<float>& rows = w.scratch.contacts.constraintRows[k];
-        return sidesOf(w, w.scratch.contacts.constraints[k], rows, rows.points[i]);
-    };
+    auto sides = [&](int row) { return sidesOf(w.scratch.contacts, w.scratch.bodies, w.scratch.joints, first + row); };
     for (int r = 0; r < n; ++r) {
         const std::array<RowSide, 2> sr = sides(r);
         for (int s = shape.first(r); s <= r; ++s) K[shape.origin(r) + s] = coupling(sr, sides(s));
@@ -107,6 +136,8 @@ void findContactGroups(const SolverWorld& w, const StepContext& ctx) {
     g.constraints.clear();
     g.start.assign(1, 0);
     g.rows.clear();
+    g.jointRows.clear();
+    g.freeRow.clear();
     g.firstColumn.clear();
     g.lastRow.clear();
     g.diagonal.clear();
@@ -125,16 +156,44 @@ void findContactGroups(const SolverWorld& w, const StepContext& ctx) {
         }
         return false;
     };
-    if (!(loadImpulse > 0.0f) || std::none_of(w.scratch.contacts.constraints.begin(), w.scratch.contacts.constraints.end(), loaded)) return;
+    // A hit: a point closing faster than hitSpeed on a body with joints from one hitRatio times
+    // heavier; its group is solved only where that body is anchored (Free below).
+    auto struck = [&](const ContactConstraint& c) {
+        const BodyState &a = w.scratch.bodies.states[c.indexA], &b = w.scratch.bodies.states[c.indexB];
+        const float lighter = std::max(a.invMass, b.invMass), heavier = std::min(a.invMass, b.invMass);
+        if (!(heavier > 0.0f) || lighter < ContactGroups::hitRatio * heavier) return false;
+        if (w.bodies[w.scratch.bodies.awakeBodies[(a.invMass > b.invMass ? c.indexA : c.indexB) - 1]].jointCount == 0) return false;
+        const Contact& contact = w.contactCache.contacts[c.contact];
+        for (int i = 0; i < c.pointCount; ++i) {
+            const ContactPointState& p = contact.points[i];
+            if (dot(relativeVelocity(a, b, p.anchorA, p.anchorB), contact.normal) < -ContactGroups::hitSpeed) return true;
+        }
+        return false;
+    };
+    auto triggers = [&](const ContactConstraint& c) { return (loadImpulse > 0.0f && loaded(c)) || struck(c); };
+    if (std::none_of(w.scratch.contacts.constraints.begin(), w.scratch.contacts.constraints.end(), triggers)) return;
 
     // Each solver slot's kind: Fixed (the static slot, kinematic bodies: they join nothing),
-    // Free (dynamic), Jointed (dynamic with joints: its joint rows stay sequential between the
-    // group's passes, so its group is not solved directly).
+    // Free (dynamic, anchored or without joints: each of its joints ties it to a Fixed slot with
+    // rows its group takes), Jointed (dynamic with a joint to another dynamic body, or one whose
+    // rows stay sequential: its group is not solved directly, so chains keep their revolute trees).
+    JointScratch& joints = w.scratch.joints;
+    const int jointCount = awakeJointCount(joints);
+    std::array<DirectJointRow, maxDirectJointRows> jointRows;
+    g.jointRowCount.resize(static_cast<size_t>(jointCount));
     g.kind.resize(static_cast<size_t>(slots));
     g.kind[0] = Fixed;
-    for (int k = 1; k < slots; ++k) {
-        const Body& b = w.bodies[w.scratch.bodies.awakeBodies[k - 1]];
-        g.kind[k] = b.type != BodyType::Dynamic ? Fixed : b.jointCount > 0 ? Jointed : Free;
+    for (int k = 1; k < slots; ++k) g.kind[k] = w.bodies[w.scratch.bodies.awakeBodies[k - 1]].type != BodyType::Dynamic ? Fixed : Free;
+    for (int j = 0; j < jointCount; ++j) {
+        const auto [a, b] = jointSlots(joints, j);
+        g.jointRowCount[j] = directJointRows(joints, j, jointRows.data());
+        if (g.jointRowCount[j] > 0 && (g.kind[a] == Fixed || g.kind[b] == Fixed)) continue;
+        for (const int slot : {a, b})
+            if (g.kind[slot] == Free) g.kind[slot] = Jointed;
+    }
+    for (int j = 0; j < jointCount; ++j) {  // the rows of an anchored body's joints only
+        const auto [a, b] = jointSlots(joints, j);
+        if (g.kind[a] != Free && g.kind[b] != Free) g.jointRowCount[j] = 0;
     }
     // A settled pile keeps its constraints from step to step: with last step's slots, point counts
     // and kinds, the groups are last step's, and if none was small enough then, none is now.
@@ -150,13 +209,18 @@ void findContactGroups(const SolverWorld& w, const StepContext& ctx) {
         const auto [a, b] = w.scratch.contacts.constraintSlots[k];
         return g.kind[a] != Fixed ? a : b;
     };
+    auto jointSlotOf = [&](int j) {
+        const auto [a, b] = jointSlots(joints, j);
+        return g.kind[a] != Fixed ? a : b;
+    };
     for (int k = 0; k < count; ++k) {
         const auto [a, b] = w.scratch.contacts.constraintSlots[k];
         if (g.kind[a] != Fixed && g.kind[b] != Fixed) unite(g.root, a, b);
-        const int slot = slotOf(k);
-        g.rowCount[slot] += w.scratch.contacts.constraints[k].pointCount;
-        if (g.kind[a] == Jointed || g.kind[b] == Jointed) g.loaded[slot] = 2;
+        g.rowCount[slotOf(k)] += w.scratch.contacts.constraints[k].pointCount;
     }
+    for (int j = 0; j < jointCount; ++j) g.rowCount[jointSlotOf(j)] += g.jointRowCount[j];  // an anchored body's joints
+    for (int k = 0; k < slots; ++k)
+        if (g.kind[k] == Jointed) g.loaded[k] = 2;
     // unite keeps the smaller slot as the root, so every parent precedes its child: one sweep in
     // slot order points every slot at its root and sums the rows there, jointed if any slot is.
     for (int k = 0; k < slots; ++k) {
@@ -165,6 +229,9 @@ void findContactGroups(const SolverWorld& w, const StepContext& ctx) {
         g.rowCount[root] += g.rowCount[k];
         g.loaded[root] = std::max(g.loaded[root], g.loaded[k]);
     }
+    g.withJoints.assign(static_cast<size_t>(slots), 0);  // by root: the group takes joint rows
+    for (int j = 0; j < jointCount; ++j)
+        if (g.jointRowCount[j] > 0) g.withJoints[g.root[jointSlotOf(j)]] = 1;
     // Each group's factor cost, its rows in constraint order: row r's envelope reaches back to the
     // first row sharing a moving body with it (envelopeFirst), Σ_r p_r² (cholesky.hpp).
     g.firstRow.assign(static_cast<size_t>(slots), -1);
@@ -179,15 +246,26 @@ void findContactGroups(const SolverWorld& w, const StepContext& ctx) {
         for (int i = 0; i < w.scratch.contacts.constraints[k].pointCount; ++i, ++g.placed[root])
             g.cost[root] += static_cast<int64_t>(g.placed[root] - first + 1) * (g.placed[root] - first + 1);
     }
+    for (int j = 0; j < jointCount; ++j) {  // a group's joint rows follow its contacts', in joint order
+        const int root = g.root[jointSlotOf(j)];
+        if (g.loaded[root] != 0 || g.jointRowCount[j] == 0) continue;
+        const auto [a, b] = jointSlots(joints, j);
+        const int first = envelopeFirst(g.firstRow, g.placed[root], moving(a), moving(b));
+        for (int i = 0; i < g.jointRowCount[j]; ++i, ++g.placed[root])
+            g.cost[root] += static_cast<int64_t>(g.placed[root] - first + 1) * (g.placed[root] - first + 1);
+    }
     auto small = [&](int root) { return g.loaded[root] != 2 && admitted(g.rowCount[root], g.cost[root]); };
     bool anySmall = false;  // a group, not jointed, small or banded enough to solve directly
     for (int k = 0; k < slots; ++k) anySmall = anySmall || (g.root[k] == k && g.rowCount[k] > 0 && small(k));
     remember(w.scratch.contacts, g, !anySmall);
     if (!anySmall) return;  // a settled pile: one group, too large
-    // Per small root: whether one of its rows is loaded (1); costlier groups are never direct.
+    // Per small root: whether one of its rows is loaded or struck (1); costlier groups are never
+    // direct. A group with joint rows is solved on a hit only: under a steady load its joints keep
+    // their sequential passes.
     for (int k = 0; k < count; ++k) {
         const int root = g.root[slotOf(k)];
-        if (g.loaded[root] == 0 && small(root) && loaded(w.scratch.contacts.constraints[k])) g.loaded[root] = 1;
+        const ContactConstraint& c = w.scratch.contacts.constraints[k];
+        if (g.loaded[root] == 0 && small(root) && (struck(c) || (!g.withJoints[root] && loadImpulse > 0.0f && loaded(c)))) g.loaded[root] = 1;
     }
 
     // Groups in the order of their first constraint while the step's rows last; the constraints of
@@ -220,13 +298,26 @@ void findContactGroups(const SolverWorld& w, const StepContext& ctx) {
     int kept = 0, mostRows = 0;
     size_t largest = 0;
     for (int group = 0; group < groups; ++group) {
-        const int rowsBefore = static_cast<int>(g.rows.size());
+        const int rowsBefore = static_cast<int>(g.rows.size()), jointRowsBefore = static_cast<int>(g.jointRows.size());
         for (int s = g.start[group]; s < g.start[group + 1]; ++s) {
             const int k = g.constraints[s];
             const auto [a, b] = w.scratch.contacts.constraintSlots[k];
             const int first = envelopeFirst(g.firstRow, static_cast<int>(g.rows.size()) - rowsBefore, moving(a), moving(b));
             for (int i = 0; i < w.scratch.contacts.constraints[k].pointCount; ++i) {
                 g.rows.push_back({k, i});
+                g.freeRow.push_back(0);
+                g.firstColumn.push_back(first);
+            }
+        }
+        for (int j = 0; j < jointCount; ++j) {
+            if (g.jointRowCount[j] == 0 || g.groupOf[g.root[jointSlotOf(j)]] != group) continue;
+            const auto [a, b] = jointSlots(joints, j);
+            const int first = envelopeFirst(g.firstRow, static_cast<int>(g.rows.size()) - rowsBefore, moving(a), moving(b));
+            directJointRows(joints, j, jointRows.data());
+            for (int i = 0; i < g.jointRowCount[j]; ++i) {
+                g.rows.push_back({-1, static_cast<int>(g.jointRows.size())});
+                g.jointRows.push_back({j, i, jointRows[i], directJointImpulse(joints, j, i)});
+                g.freeRow.push_back(jointRows[i].oneSided ? 0 : 1);
                 g.firstColumn.push_back(first);
             }
         }
@@ -243,6 +334,8 @@ void findContactGroups(const SolverWorld& w, const StepContext& ctx) {
             for (std::vector<int>* v : {&g.firstColumn, &g.lastRow}) v->resize(static_cast<size_t>(rowsBefore));
             g.diagonal.resize(static_cast<size_t>(rowsBefore));
             g.rows.resize(static_cast<size_t>(rowsBefore));
+            g.freeRow.resize(static_cast<size_t>(rowsBefore));
+            g.jointRows.resize(static_cast<size_t>(jointRowsBefore));
             g.rowStart.pop_back();
             g.matrixStart.pop_back();
             continue;
@@ -255,6 +348,8 @@ void findContactGroups(const SolverWorld& w, const StepContext& ctx) {
                   g.constraints.begin() + g.start[kept]);
         g.start[kept + 1] = g.start[kept] + size;
         for (int s = g.start[kept]; s < g.start[kept + 1]; ++s) g.direct[g.constraints[s]] = 1;
+        for (int j = jointRowsBefore; j < static_cast<int>(g.jointRows.size()); ++j)
+            if (g.jointRows[j].row == 0) solveJointDirectly(joints, g.jointRows[j].joint);
         ++kept;
     }
     g.start.resize(static_cast<size_t>(kept) + 1);
@@ -269,12 +364,12 @@ void findContactGroups(const SolverWorld& w, const StepContext& ctx) {
 
 namespace {
 
-// x = Δλ, the solution of the linear complementarity problem of the normal rows: K Δλ − y = w
+// x = Δλ, the solution of the linear complementarity problem of the one-sided rows: K Δλ − y = w
 // with λ + Δλ ≥ 0, w ≥ 0 and (λ + Δλ)·w = 0 (a row either pushes or is left separating faster
-// than its target). Block principal pivoting (Júdice and Pires): start with every row pushing,
+// than its target); a free row (freeRow: a joint's equality row) keeps w = 0, λ of either sign. Block principal pivoting (Júdice and Pires): start with every row pushing,
 // solve K_AA Δλ_A = y_A + K_AI λ_I for the pushing rows A (the others drop to λ = 0), then flip
 // every row that breaks its condition and solve again.
-bool solveComplementarity(ContactGroups& g, const EnvelopeShape& shape, const double* K, const double* L) {
+bool solveComplementarity(ContactGroups& g, const EnvelopeShape& shape, const double* K, const double* L, const uint8_t* freeRow) {
     const int n = shape.n;
     std::copy(g.y.begin(), g.y.begin() + n, g.x.begin());
     choleskySolve(L, shape, g.x.data());
@@ -283,7 +378,7 @@ bool solveComplementarity(ContactGroups& g, const EnvelopeShape& shape, const do
         bool flipped = false;
         for (int r = 0; r < n; ++r) {
             if (g.active[r]) {
-                if (g.lambda[r] + g.x[r] < 0.0) g.active[r] = 0, flipped = true;
+                if (!freeRow[r] && g.lambda[r] + g.x[r] < 0.0) g.active[r] = 0, flipped = true;
                 continue;
             }
             double w = -g.y[r];
@@ -320,39 +415,77 @@ bool solveComplementarity(ContactGroups& g, const EnvelopeShape& shape, const do
     return false;
 }
 
-// One pass of a group's normal rows as one system, the targets from the velocities before any
-// impulse of the pass: v_rel·n → −s/hs for a speculative row (rigid, it may close the gap); with
-// bias, the soft step K Δλ = −massScale·(v + biasRate·C) − impulseScale·K λ; without, v → 0.
-// False, and nothing applied, when its complementarity problem did not settle.
-bool solveGroupNormals(ContactScratch& contacts, SolverBodies& bodies, ContactGroups& g, int group, const StepContext& ctx, bool useBias) {
+// One pass of a group's rows as one system, the targets from the velocities before any impulse of
+// the pass: a speculative one-sided row (a contact point or a limit with C > 0) rigid, v → −C/hs
+// (it may close the gap); with bias, the soft step K Δλ = −massScale·(v + bias) − impulseScale·K λ,
+// each row with its softness (contacts: the contact softness and push limits; joints: the joint
+// softness, bias = biasRate·C); without, v → 0. False when its complementarity problem did not
+// settle: then only the joint rows are solved, one by one (projected Gauss-Seidel on the same
+// targets), and the caller solves the contact rows as the sequential passes do.
+bool solveGroupRows(ContactScratch& contacts, SolverBodies& bodies, JointScratch& joints, int group, const StepContext& ctx, bool useBias) {
+    ContactGroups& g = contacts.groups;
     const int first = g.rowStart[group], n = g.rowStart[group + 1] - first;
     const EnvelopeShape shape = shapeOf(g, group);
     const double* K = &g.K[g.matrixStart[group]];
     const double* L = &g.L[g.matrixStart[group]];
-    const Softness& soft = ctx.contactSoftness;  // one softness for all rows: the rest state C = K F / ω²
-    for (int r = 0; r < n; ++r) g.lambda[r] = contacts.constraintRows[g.rows[first + r][0]].points[g.rows[first + r][1]].normalImpulse;
+    std::array<float, maxDirectJointRows> errors{};
     for (int r = 0; r < n; ++r) {
         const auto [k, i] = g.rows[first + r];
-        const ContactConstraint& c = contacts.constraints[k];
-        const ContactRows<float>& rows = contacts.constraintRows[k];
-        const ContactPointRows<float>& cp = rows.points[i];
-        const BodyState &a = bodies.states[c.indexA], &b = bodies.states[c.indexB];
-        const float s = currentSeparation(rows, cp, a, b);
-        const float vn = dot(relativeVelocity(a, b, cp.anchorA, cp.anchorB), rows.normal);
-        if (s > 0.0f) {
-            g.y[r] = -(vn + s * ctx.invHs);
-        } else if (useBias) {
-            double kLambda = 0.0;  // (K λ)_r, λ from before the pass
-            forEachInRow(K, shape, r, [&](int q, double k) { kLambda += k * g.lambda[q]; });
-            const float push = std::max(soft.biasRate * std::min(s + ctx.pushSlop, 0.0f), -ctx.maxBiasVelocity);
-            g.y[r] = -soft.massScale * (vn + push) - soft.impulseScale * kLambda;
-        } else {
-            g.y[r] = -vn;
+        if (k >= 0) {
+            g.lambda[r] = contacts.constraintRows[k].points[i].normalImpulse;
+            continue;
         }
+        ContactGroups::JointRow& row = g.jointRows[i];
+        if (row.row == 0) directJointErrors(joints, bodies, row.joint, errors.data());
+        row.C = errors[row.row];
+        g.lambda[r] = row.lambda;
     }
-    if (!solveComplementarity(g, shape, K, L)) return false;
+    auto target = [&](int r) {  // y_r from the velocities now
+        const auto [k, i] = g.rows[first + r];
+        float v = 0.0f, C = 0.0f, bias = 0.0f;
+        Softness soft = ctx.jointSoftness;
+        if (k >= 0) {
+            const ContactRows<float>& rows = contacts.constraintRows[k];
+            const ContactPointRows<float>& cp = rows.points[i];
+            const BodyState &a = bodies.states[contacts.constraints[k].indexA], &b = bodies.states[contacts.constraints[k].indexB];
+            v = dot(relativeVelocity(a, b, cp.anchorA, cp.anchorB), rows.normal);
+            C = currentSeparation(rows, cp, a, b);
+            soft = ctx.contactSoftness;  // one softness for all contact rows: the rest state C = K F / ω²
+            bias = std::max(soft.biasRate * std::min(C + ctx.pushSlop, 0.0f), -ctx.maxBiasVelocity);
+        } else {
+            v = rowVelocity(sidesOf(contacts, bodies, joints, first + r), bodies);
+            C = g.jointRows[i].C;
+            bias = soft.biasRate * C;
+        }
+        if (!g.freeRow[first + r] && C > 0.0f) return -static_cast<double>(v + C * ctx.invHs);
+        if (!useBias) return -static_cast<double>(v);
+        double kLambda = 0.0;  // (K λ)_r
+        forEachInRow(K, shape, r, [&](int q, double kq) { kLambda += kq * g.lambda[q]; });
+        return -soft.massScale * (v + bias) - soft.impulseScale * kLambda;
+    };
+    auto applyJointRow = [&](int r, double impulse) {
+        ContactGroups::JointRow& row = g.jointRows[g.rows[first + r][1]];
+        row.lambda += impulse;
+        setDirectJointImpulse(joints, row.joint, row.row, static_cast<float>(row.lambda));
+        applyRow(sidesOf(contacts, bodies, joints, first + r), bodies, static_cast<float>(impulse));
+    };
+    for (int r = 0; r < n; ++r) g.y[r] = target(r);
+    if (!solveComplementarity(g, shape, K, L, &g.freeRow[first])) {
+        for (int r = 0; r < n; ++r) {
+            if (g.rows[first + r][0] >= 0) continue;
+            double impulse = target(r) / K[shape.origin(r) + r];  // K_rr Δλ = y_r
+            if (!g.freeRow[first + r]) impulse = std::max(g.lambda[r] + impulse, 0.0) - g.lambda[r];
+            g.lambda[r] += impulse;
+            applyJointRow(r, impulse);
+        }
+        return false;
+    }
     for (int r = 0; r < n; ++r) {
         const auto [k, i] = g.rows[first + r];
+        if (k < 0) {
+            applyJointRow(r, g.x[r]);
+            continue;
+        }
         const ContactConstraint& c = contacts.constraints[k];
         ContactRows<float>& rows = contacts.constraintRows[k];
         ContactPointRows<float>& cp = rows.points[i];
@@ -367,7 +500,7 @@ bool solveGroupNormals(ContactScratch& contacts, SolverBodies& bodies, ContactGr
 
 }  // namespace
 
-void contactGroupRows(ContactScratch& contacts, SolverBodies& bodies, const StepContext& ctx, RowPass pass) {
+void contactGroupRows(ContactScratch& contacts, SolverBodies& bodies, JointScratch& joints, const StepContext& ctx, RowPass pass) {
     ContactGroups& g = contacts.groups;
     if (pass == RowPass::Restitution) {  // the bounce is row by row, as for every constraint
         const std::vector<SubstepForces>& forces = bodies.substepForces;
@@ -380,7 +513,10 @@ void contactGroupRows(ContactScratch& contacts, SolverBodies& bodies, const Step
     }
     for (int group = 0; group + 1 < static_cast<int>(g.start.size()); ++group) {
         const bool useBias = pass == RowPass::Solve;
-        const bool solved = pass != RowPass::WarmStart && solveGroupNormals(contacts, bodies, g, group, ctx, useBias);
+        if (pass == RowPass::WarmStart)  // the group's joint rows re-apply their λ of this step
+            for (int row = g.rowStart[group]; row < g.rowStart[group + 1]; ++row)
+                if (g.rows[row][0] < 0) applyRow(sidesOf(contacts, bodies, joints, row), bodies, static_cast<float>(g.jointRows[g.rows[row][1]].lambda));
+        const bool solved = pass != RowPass::WarmStart && solveGroupRows(contacts, bodies, joints, group, ctx, useBias);
         for (int s = g.start[group]; s < g.start[group + 1]; ++s) {
             const ContactConstraint& c = contacts.constraints[g.constraints[s]];
             ContactRows<float>& rows = contacts.constraintRows[g.constraints[s]];

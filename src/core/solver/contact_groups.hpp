@@ -12,13 +12,22 @@
 // nothing). Its rows are in constraint order, and K is stored and factored on its envelope
 // (cholesky.hpp): row r from the first row that shares a moving body with it. It is solved
 // directly when it has at most denseRows normal rows, or more in a band (a column of boxes, each
-// touching two others: a few multiply-adds a row; admitted), none of its bodies has a joint (joint
-// rows stay sequential between the passes, and the anvil of a jointed bridge is already held by
-// them), and one of its rows carried, last step, a load that would sink it one at a time more than
-// loadTrigger times the direct solve's g/ω²; groups in constraint order, while the step's
-// maxTotalRows last. Its normal rows then take the block solve as a linear complementarity problem
-// (λn ≥ 0, block principal pivoting), K raised by 0.1 % on its diagonal; its friction and rolling
-// rows stay sequential, after them. A pass whose pivoting does not settle is solved row by row.
+// touching two others: a few multiply-adds a row; admitted), none of its bodies is jointed to
+// another dynamic body or by a joint with a motor, spring or break limit (such rows stay sequential
+// between the passes: chains keep their revolute trees, and the anvil of a jointed bridge is
+// already held by them), and
+//   - without joints, one of its rows carried, last step, a load that would sink it one at a time
+//     more than loadTrigger times the direct solve's g/ω²;
+//   - with an anchored body (every joint of it revolute, rigid weld or prismatic, to a static or
+//     kinematic body), a hit: a point closing faster than hitSpeed on it from a body hitRatio
+//     times heavier. The group then takes its joints' rows (joint.hpp DirectJointRow: equality rows
+//     with free λ, limits as one-sided rows, speculative while C > 0) into K, so the blow meets the
+//     ground through the joint in one solve (a 0.1 kg hinged arm struck by 5 kg at 10 m/s holds its
+//     ±0.05 rad limit, where the sequential passes let it reach −0.37 rad; docs/stress.md).
+// Groups in constraint order, while the step's maxTotalRows last. Its normal (and joint) rows then
+// take the block solve as a linear complementarity problem (λn ≥ 0, block principal pivoting), K
+// raised by 0.1 % on its diagonal; its friction and rolling rows stay sequential, after them. A
+// pass whose pivoting does not settle is solved row by row.
 #pragma once
 
 #include <algorithm>
@@ -27,6 +36,7 @@
 #include <initializer_list>
 #include <vector>
 
+#include "core/joints/joint.hpp"
 #include "core/world/step_context.hpp"
 #include "perpdot/world.hpp"
 
@@ -46,9 +56,22 @@ struct ContactGroups {
     static constexpr int bandRows = 16;
     static constexpr int maxTotalRows = 1024;  // all groups of a step: bounds their work and storage
     static constexpr float loadTrigger = 8;    // in g: λn K_ii / hs of the most loaded row
+    // A hit: a contact point closing faster than hitSpeed (m/s) between two moving bodies whose
+    // inverse masses differ by hitRatio or more; it has no load yet.
+    static constexpr float hitSpeed = 1;
+    static constexpr float hitRatio = 10;
     std::vector<int> constraints;            // indices into ContactScratch::constraints, group by group
     std::vector<int> start;                  // group g is constraints[start[g] .. start[g + 1])
-    std::vector<std::array<int, 2>> rows;    // (constraint, point) of each normal row, group by group
+    std::vector<std::array<int, 2>> rows;    // (constraint, point) of each normal row, group by group; (-1, j): jointRows[j]
+    // The joint rows the groups take: the awake joint, its row, its Jacobian, its λ this step and C this pass.
+    struct JointRow {
+        int joint, row;
+        DirectJointRow jacobian;
+        double lambda = 0;
+        float C = 0;
+    };
+    std::vector<JointRow> jointRows;
+    std::vector<uint8_t> freeRow;            // by row: an equality row, λ of either sign
     std::vector<int> rowStart;               // group g's rows are rows[rowStart[g] .. rowStart[g + 1])
     std::vector<int> firstColumn, lastRow;   // by row, group by group: K's envelope (EnvelopeShape)
     std::vector<size_t> diagonal;
@@ -58,9 +81,9 @@ struct ContactGroups {
     // Scratch, kept to reuse its memory: by solver slot its kind, union-find root and first row
     // (envelopeFirst), by root its rows, load, rows placed, factor cost and group; per pass the
     // impulses, targets and active rows of the pivoting and the envelope of their system.
-    std::vector<int> root, rowCount, firstRow, placed, groupOf;
+    std::vector<int> root, rowCount, firstRow, placed, groupOf, jointRowCount;
     std::vector<int64_t> cost;
-    std::vector<uint8_t> kind, loaded, active;
+    std::vector<uint8_t> kind, loaded, withJoints, active;
     std::vector<double> lambda, y, x, rhs, activeK;
     std::vector<int> activeIndex, activeFirst, activeLast;
     std::vector<size_t> activeDiagonal;
@@ -90,10 +113,10 @@ inline int envelopeFirst(std::vector<int>& firstRow, int row, int a, int b) {
     return first;
 }
 
-// The groups of this step's constraints to solve directly (after the select of prepareContacts), their
-// rows prepared and K factored.
+// The groups of this step's constraints to solve directly (by selectContacts, after its
+// select, before colorJoints: the joints they take get no colour), their rows prepared and K factored.
 void findContactGroups(const SolverWorld& world, const StepContext& ctx);
 // A pass of every group: warm start, or its normal rows as one system then its tangent rows.
-void contactGroupRows(ContactScratch& contacts, SolverBodies& bodies, const StepContext& ctx, RowPass pass);
+void contactGroupRows(ContactScratch& contacts, SolverBodies& bodies, JointScratch& joints, const StepContext& ctx, RowPass pass);
 
 }  // namespace perpdot

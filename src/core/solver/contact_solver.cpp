@@ -140,7 +140,7 @@ void gatherContactLanes(const SolverWorld& w, const ContactConstraint* const (&c
 // The touching contacts with an awake body, in pool order, selected by the workers: their
 // contacts and bodies' solver slots. Their rows are prepared once their place is known: in a block
 // (prepareContactBlocks), with the overflow or in a contact group.
-void prepareContacts(const SolverWorld& w, const StepContext& ctx) {
+void selectContacts(const SolverWorld& w, const StepContext& ctx) {
     const SolverWorld::Scratch& s = w.scratch;
     // A body is awake this step where it has a solver slot (a static one never is).
     // Contacts are not read: updateContacts left their points and bodies in dense arrays.
@@ -174,7 +174,6 @@ void prepareContacts(const SolverWorld& w, const StepContext& ctx) {
     });
     propagateImpacts(w, ctx);  // simultaneous impacts, pair by pair, before the substeps
     findContactGroups(w, ctx);
-    prepareContactBlocks(w, ctx);
 }
 
 }  // namespace perpdot

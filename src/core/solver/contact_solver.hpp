@@ -9,9 +9,10 @@
 
 namespace perpdot {
 
-// The step's contact constraints selected, their impacts propagated, their groups found and their
-// rows prepared or their blocks sized (after colorJoints).
-void prepareContacts(const SolverWorld& world, const StepContext& ctx);
+// The step's contact constraints selected, their impacts propagated and their groups found, which
+// take the joints of their bodies (before colorJoints: those joints take no colour).
+void selectContacts(const SolverWorld& world, const StepContext& ctx);
+// Then their rows prepared or their blocks sized (after colorJoints).
 void prepareContactBlocks(const SolverWorld& world, const StepContext& ctx);
 // The blocks of colour `color` (below GraphColoring::overflow), laid out (the solver's first
 // stages) and then in a pass: they share no moving body, so they run in any order or side by

@@ -65,7 +65,7 @@ void SolverStages::execute(const SolverWorld& w, const StepContext& ctx, const S
         case Work::SerialJoints: serialJointRows(w.scratch.joints, w.scratch.bodies, ctx, stage.pass); break;
         case Work::Contacts: contactRows(w.scratch.contacts, w.scratch.bodies, ctx, stage.pass, stage.color, begin, end); break;
         case Work::SerialContacts: serialContactRows(w.scratch.contacts, w.scratch.bodies, ctx, stage.pass); break;
-        case Work::ContactGroups: contactGroupRows(w.scratch.contacts, w.scratch.bodies, ctx, stage.pass); break;
+        case Work::ContactGroups: contactGroupRows(w.scratch.contacts, w.scratch.bodies, w.scratch.joints, ctx, stage.pass); break;
         case Work::IntegratePositions: integratePositions(w.scratch.bodies, ctx, begin + 1, end + 1); break;
         case Work::StoreContacts: storeContactBlocks(w.scratch.contacts, w.contactCache, stage.color, begin, end); break;
     }

@@ -32,7 +32,7 @@ struct SolverStage {
 
 class SolverStages {
 public:
-    // The stages of one substep for this step's colours (after colorJoints and prepareContacts),
+    // The stages of one substep for this step's colours (after colorJoints and prepareContactBlocks),
     // after those run once before the substeps (the contact blocks laid out, colour by colour, by
     // the workers that solve them), and those run once after: restitution's, then the contact
     // blocks' impulses stored (by the workers that solved them last).

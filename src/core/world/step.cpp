@@ -77,10 +77,11 @@ void World::step(float timeStep) {
     StepContext ctx = makeStepContext(w, timeStep);
     integrateVelocities(w, ctx);
     const SolverWorld solver = solverWorld(w);
-    prepareJoints(solver, ctx);  // prepare: effective masses, anchors, warm-start impulses
-    startTreeRefit(w, ctx);      // the broadphase follows the predicted poses on a worker of its own,
-    colorJoints(solver, ctx);    // beside the joints' serial colouring
-    prepareContacts(solver, ctx);
+    prepareJoints(solver, ctx);   // prepare: effective masses, anchors, warm-start impulses
+    startTreeRefit(w, ctx);       // the broadphase follows the predicted poses on a worker of its own,
+    selectContacts(solver, ctx);  // beside the touching contacts, their groups (which take their bodies' joints)
+    colorJoints(solver, ctx);     // and the joints' serial colouring
+    prepareContactBlocks(solver, ctx);
     // Per substep: its forces, warm start, solve with soft bias, x += hs v, relax without bias;
     // then restitution, Hecker's bounce, once (solver_stages.hpp: the rows colour by colour, on
     // the workers).
