@@ -238,21 +238,20 @@ void findContactGroups(const SolverWorld& w, const StepContext& ctx) {
     g.placed.assign(static_cast<size_t>(slots), 0);
     g.cost.assign(static_cast<size_t>(slots), 0);
     auto moving = [&](int slot) { return g.kind[slot] != Fixed ? slot : -1; };
-    for (int k = 0; k < count; ++k) {
-        const int root = g.root[slotOf(k)];
-        if (g.loaded[root] != 0) continue;  // jointed
-        const auto [a, b] = w.scratch.contacts.constraintSlots[k];
+    // `rows` rows between slots a and b placed next in root's group: each adds its profile².
+    auto place = [&](int root, int a, int b, int rows) {
+        if (g.loaded[root] != 0) return;  // jointed
         const int first = envelopeFirst(g.firstRow, g.placed[root], moving(a), moving(b));
-        for (int i = 0; i < w.scratch.contacts.constraints[k].pointCount; ++i, ++g.placed[root])
+        for (int i = 0; i < rows; ++i, ++g.placed[root])
             g.cost[root] += static_cast<int64_t>(g.placed[root] - first + 1) * (g.placed[root] - first + 1);
+    };
+    for (int k = 0; k < count; ++k) {
+        const auto [a, b] = w.scratch.contacts.constraintSlots[k];
+        place(g.root[slotOf(k)], a, b, w.scratch.contacts.constraints[k].pointCount);
     }
     for (int j = 0; j < jointCount; ++j) {  // a group's joint rows follow its contacts', in joint order
-        const int root = g.root[jointSlotOf(j)];
-        if (g.loaded[root] != 0 || g.jointRowCount[j] == 0) continue;
         const auto [a, b] = jointSlots(joints, j);
-        const int first = envelopeFirst(g.firstRow, g.placed[root], moving(a), moving(b));
-        for (int i = 0; i < g.jointRowCount[j]; ++i, ++g.placed[root])
-            g.cost[root] += static_cast<int64_t>(g.placed[root] - first + 1) * (g.placed[root] - first + 1);
+        if (g.jointRowCount[j] > 0) place(g.root[jointSlotOf(j)], a, b, g.jointRowCount[j]);
     }
     auto small = [&](int root) { return g.loaded[root] != 2 && admitted(g.rowCount[root], g.cost[root]); };
     bool anySmall = false;  // a group, not jointed, small or banded enough to solve directly
