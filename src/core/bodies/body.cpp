@@ -40,13 +40,9 @@ Body& World::Impl::body(BodyId id, const char* call) {
 
 const Body& World::Impl::body(BodyId id, const char* call) const { return checkedItem(bodies, id, identity, "BodyId", call); }
 
-void World::Impl::checkUnlocked(const char* what) const {
-    if (locked) throw Error(std::string(what) + ": the world cannot be changed during step()");
-}
-
 // m, c and I from the shapes' area integrals, combined with the parallel-axis theorem.
 void World::Impl::updateMass(int index) {
-    forgetBoxRoom(index);  // the centre of mass or the shapes changed
+    broadphase.forgetBoxRoom(index);  // the centre of mass or the shapes changed
     Body& b = bodies[index];
     const Vec2 oldCenter = b.center;
     b.mass = b.invMass = b.inertia = b.invInertia = 0.0f;
@@ -75,21 +71,6 @@ void World::Impl::updateMass(int index) {
     b.v += b.w * perp(b.center - oldCenter);
 }
 
-void World::Impl::wake(int index) {
-    // Bodies that fell asleep together form a ring through islandNext; waking one wakes them all.
-    int i = index;
-    do {
-        Body& b = bodies[i];
-        const int next = b.islandNext;
-        b.islandNext = -1;
-        if (b.type != BodyType::Static && b.enabled) {
-            b.awake = true;
-            b.sleepTime = 0.0f;
-        }
-        i = next;
-    } while (i >= 0 && i != index);
-}
-
 void World::Impl::freeze(int index) {
     Body& b = bodies[index];
     b.v = {};
@@ -101,7 +82,7 @@ void World::Impl::freeze(int index) {
 
 BodyId World::createBody(const BodyDef& def) {
     Impl& w = *impl_;
-    w.checkUnlocked("createBody");
+    checkUnlocked(w.locked, "createBody");
     requireFinite(isFinite(def.position), "position");
     requireFinite(std::isfinite(def.angle), "angle");
     requireFinite(isFinite(def.linearVelocity), "linearVelocity");
@@ -134,14 +115,14 @@ BodyId World::createBody(const BodyDef& def) {
 
 void World::destroyBody(BodyId id) {
     Impl& w = *impl_;
-    w.checkUnlocked("destroyBody");
+    checkUnlocked(w.locked, "destroyBody");
     Body& b = w.body(id);
     const std::vector<std::pair<JointId, void*>> goodbyes = destroyJointsOf(w, id.index);
-    w.wake(id.index);  // its island mates lose a support
+    wakeIsland(w.bodies, id.index);  // its island mates lose a support
     destroyContactsOf(w, id.index, -1);
     for (int s : b.shapes) {
-        w.destroyProxies(s);
-        w.collision.clearGeometry(s);
+        w.broadphase.destroyProxies(w.shapes, s);
+        w.broadphase.collision.clearGeometry(s);
         w.shapes.destroy(s);
     }
     b.shapes.clear();
@@ -180,39 +161,39 @@ Vec2 World::pointVelocity(BodyId id, Vec2 worldPoint) const {
 
 void World::setTransform(BodyId id, Vec2 position, float angle) {
     Impl& w = *impl_;
-    w.checkUnlocked("setTransform");
+    checkUnlocked(w.locked, "setTransform");
     if (!isFinite(position) || !std::isfinite(angle)) throw Error("setTransform: position and angle must be finite");
     Body& b = w.body(id);
     b.xf = {position, Rot::fromAngle(angle)};
     b.angle = angle;
     b.center = transformPoint(b.xf, b.localCenter);
-    w.synchronizeProxies(id.index, b.xf, {});
-    w.wake(id.index);
+    w.broadphase.synchronizeProxies(w.shapes, w.bodies, id.index, b.xf, {});
+    wakeIsland(w.bodies, id.index);
 }
 
 void World::setLinearVelocity(BodyId id, Vec2 v) {
-    impl_->checkUnlocked("setLinearVelocity");
+    checkUnlocked(impl_->locked, "setLinearVelocity");
     if (!isFinite(v)) throw Error("setLinearVelocity: velocity must be finite");
     Body& b = impl_->body(id);
     if (b.type == BodyType::Static) return;
     b.v = v;
-    if (dot(v, v) > 0.0f) impl_->wake(id.index);
+    if (dot(v, v) > 0.0f) wakeIsland(impl_->bodies, id.index);
 }
 
 void World::setAngularVelocity(BodyId id, float omega) {
-    impl_->checkUnlocked("setAngularVelocity");
+    checkUnlocked(impl_->locked, "setAngularVelocity");
     if (!std::isfinite(omega)) throw Error("setAngularVelocity: ω must be finite");
     Body& b = impl_->body(id);
     if (b.type == BodyType::Static || b.fixedRotation) return;
     b.w = omega;
-    if (omega != 0.0f) impl_->wake(id.index);
+    if (omega != 0.0f) wakeIsland(impl_->bodies, id.index);
 }
 
 void World::setAwake(BodyId id, bool awake) {
-    impl_->checkUnlocked("setAwake");
+    checkUnlocked(impl_->locked, "setAwake");
     Body& b = impl_->body(id);
     if (awake) {
-        impl_->wake(id.index);
+        wakeIsland(impl_->bodies, id.index);
     } else if (b.type != BodyType::Static) {
         b.awake = false;
         b.v = {};
@@ -222,30 +203,30 @@ void World::setAwake(BodyId id, bool awake) {
 }
 
 void World::setGravityScale(BodyId id, float scale) {
-    impl_->checkUnlocked("setGravityScale");
+    checkUnlocked(impl_->locked, "setGravityScale");
     if (!std::isfinite(scale)) throw Error("setGravityScale: scale must be finite");
     impl_->body(id).gravityScale = scale;
 }
 
 void World::setLinearDamping(BodyId id, float damping) {
-    impl_->checkUnlocked("setLinearDamping");
+    checkUnlocked(impl_->locked, "setLinearDamping");
     if (!(damping >= 0.0f && std::isfinite(damping))) throw Error("setLinearDamping: damping must be finite and >= 0");
     impl_->body(id).linearDamping = damping;
 }
 
 void World::setAngularDamping(BodyId id, float damping) {
-    impl_->checkUnlocked("setAngularDamping");
+    checkUnlocked(impl_->locked, "setAngularDamping");
     if (!(damping >= 0.0f && std::isfinite(damping))) throw Error("setAngularDamping: damping must be finite and >= 0");
     impl_->body(id).angularDamping = damping;
 }
 
 // Forces accumulate until the next step: F, and τ = perpDot(P - CM, F) about the centre of mass.
 void World::applyForce(BodyId id, Vec2 force, Vec2 worldPoint) {
-    impl_->checkUnlocked("applyForce");
+    checkUnlocked(impl_->locked, "applyForce");
     if (!isFinite(force) || !isFinite(worldPoint)) throw Error("applyForce: force and point must be finite");
     Body& b = impl_->body(id);
     if (b.type != BodyType::Dynamic) return;
-    impl_->wake(id.index);
+    wakeIsland(impl_->bodies, id.index);
     b.force += force;
     b.torque += perpDot(worldPoint - b.center, force);
 }
@@ -253,21 +234,21 @@ void World::applyForce(BodyId id, Vec2 force, Vec2 worldPoint) {
 void World::applyForceToCenter(BodyId id, Vec2 force) { applyForce(id, force, impl_->body(id).center); }
 
 void World::applyTorque(BodyId id, float torque) {
-    impl_->checkUnlocked("applyTorque");
+    checkUnlocked(impl_->locked, "applyTorque");
     if (!std::isfinite(torque)) throw Error("applyTorque: torque must be finite");
     Body& b = impl_->body(id);
     if (b.type != BodyType::Dynamic) return;
-    impl_->wake(id.index);
+    wakeIsland(impl_->bodies, id.index);
     b.torque += torque;
 }
 
 // An impulse J at P changes momentum at once: Δv = J/m, Δω = perpDot(P - CM, J)/I.
 void World::applyLinearImpulse(BodyId id, Vec2 impulse, Vec2 worldPoint) {
-    impl_->checkUnlocked("applyLinearImpulse");
+    checkUnlocked(impl_->locked, "applyLinearImpulse");
     if (!isFinite(impulse) || !isFinite(worldPoint)) throw Error("applyLinearImpulse: impulse and point must be finite");
     Body& b = impl_->body(id);
     if (b.type != BodyType::Dynamic) return;
-    impl_->wake(id.index);
+    wakeIsland(impl_->bodies, id.index);
     b.v += b.invMass * impulse;
     b.w += b.invInertia * perpDot(worldPoint - b.center, impulse);
 }
@@ -277,11 +258,11 @@ void World::applyLinearImpulseToCenter(BodyId id, Vec2 impulse) {
 }
 
 void World::applyAngularImpulse(BodyId id, float impulse) {
-    impl_->checkUnlocked("applyAngularImpulse");
+    checkUnlocked(impl_->locked, "applyAngularImpulse");
     if (!std::isfinite(impulse)) throw Error("applyAngularImpulse: impulse must be finite");
     Body& b = impl_->body(id);
     if (b.type != BodyType::Dynamic) return;
-    impl_->wake(id.index);
+    wakeIsland(impl_->bodies, id.index);
     b.w += b.invInertia * impulse;
 }
 

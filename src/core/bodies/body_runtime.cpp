@@ -13,14 +13,14 @@ namespace perpdot {
 // shapes, and it wakes (made static, it stops).
 void World::setType(BodyId id, BodyType type) {
     Impl& w = *impl_;
-    w.checkUnlocked("World::setType");
+    checkUnlocked(w.locked, "World::setType");
     Body& b = w.body(id);
     if (b.type == type) return;
-    w.wake(id.index);  // leaves the island ring it slept in
+    wakeIsland(w.bodies, id.index);  // leaves the island ring it slept in
     destroyContactsOf(w, id.index, -1);
-    for (int s : b.shapes) w.destroyProxies(s);
+    for (int s : b.shapes) w.broadphase.destroyProxies(w.shapes, s);
     b.type = type;
-    for (int s : b.shapes) w.createProxies(s);
+    for (int s : b.shapes) w.broadphase.createProxies(w.shapes, w.bodies, s);
     b.force = {};
     b.torque = 0.0f;
     if (type == BodyType::Static) {
@@ -34,27 +34,27 @@ void World::setType(BodyId id, BodyType type) {
 
 void World::setFixedRotation(BodyId id, bool fixedRotation) {
     Impl& w = *impl_;
-    w.checkUnlocked("World::setFixedRotation");
+    checkUnlocked(w.locked, "World::setFixedRotation");
     Body& b = w.body(id);
     b.fixedRotation = fixedRotation;
     if (fixedRotation) b.w = 0.0f;
     w.updateMass(id.index);
-    w.wake(id.index);
+    wakeIsland(w.bodies, id.index);
 }
 
 bool World::isFixedRotation(BodyId id) const { return impl_->body(id).fixedRotation; }
 
 void World::setBullet(BodyId id, bool bullet) {
-    impl_->checkUnlocked("World::setBullet");
+    checkUnlocked(impl_->locked, "World::setBullet");
     impl_->body(id).bullet = bullet;
 }
 
 bool World::isBullet(BodyId id) const { return impl_->body(id).bullet; }
 
 void World::setAllowSleep(BodyId id, bool allowSleep) {
-    impl_->checkUnlocked("World::setAllowSleep");
+    checkUnlocked(impl_->locked, "World::setAllowSleep");
     impl_->body(id).allowSleep = allowSleep;
-    if (!allowSleep) impl_->wake(id.index);
+    if (!allowSleep) wakeIsland(impl_->bodies, id.index);
 }
 
 bool World::allowsSleep(BodyId id) const { return impl_->body(id).allowSleep; }
@@ -68,13 +68,13 @@ MassData World::massData(BodyId id) const {
 // velocity: v_newCM = v + ω perp(Δc).
 void World::setMassData(BodyId id, const MassData& m) {
     Impl& w = *impl_;
-    w.checkUnlocked("World::setMassData");
+    checkUnlocked(w.locked, "World::setMassData");
     Body& b = w.body(id);
     if (!std::isfinite(m.mass) || !isFinite(m.center) || !std::isfinite(m.rotationalInertia) || m.mass < 0.0f ||
         m.rotationalInertia < 0.0f)
         throw Error("World::setMassData: mass and rotational inertia must be finite and >= 0, the centre finite");
     if (b.type != BodyType::Dynamic) return;
-    w.forgetBoxRoom(id.index);
+    w.broadphase.forgetBoxRoom(id.index);
     b.mass = m.mass > 0.0f ? m.mass : 1.0f;
     b.invMass = 1.0f / b.mass;
     b.inertia = b.invInertia = 0.0f;
@@ -86,11 +86,11 @@ void World::setMassData(BodyId id, const MassData& m) {
     b.localCenter = m.center;
     b.center = transformPoint(b.xf, b.localCenter);
     b.v += b.w * perp(b.center - oldCenter);
-    w.wake(id.index);
+    wakeIsland(w.bodies, id.index);
 }
 
 void World::resetMassData(BodyId id) {
-    impl_->checkUnlocked("World::resetMassData");
+    checkUnlocked(impl_->locked, "World::resetMassData");
     impl_->body(id);
     impl_->updateMass(id.index);
 }
@@ -119,7 +119,7 @@ std::vector<JointId> World::bodyJoints(BodyId id) const {
 // target in one step of h: v = (c_target − c)/h, ω = (θ_target − θ)/h.
 void World::setTargetTransform(BodyId id, Vec2 position, float angle, float timeStep) {
     Impl& w = *impl_;
-    w.checkUnlocked("World::setTargetTransform");
+    checkUnlocked(w.locked, "World::setTargetTransform");
     if (!isFinite(position) || !std::isfinite(angle)) throw Error("World::setTargetTransform: position and angle must be finite");
     if (!(timeStep > 0.0f) || !std::isfinite(timeStep))
         throw Error("World::setTargetTransform: the time step must be finite and > 0, not " + std::to_string(timeStep));
@@ -129,7 +129,7 @@ void World::setTargetTransform(BodyId id, Vec2 position, float angle, float time
     const float invH = 1.0f / timeStep;
     b.v = invH * (targetCenter - b.center);
     b.w = b.fixedRotation ? 0.0f : invH * (angle - b.angle);
-    w.wake(id.index);
+    wakeIsland(w.bodies, id.index);
 }
 
 void World::setUserData(BodyId id, void* userData) { impl_->body(id).userData = userData; }
@@ -138,22 +138,22 @@ void World::setUserData(BodyId id, void* userData) { impl_->body(id).userData = 
 // it by), its joints not solved; its pose and velocity wait for it to come back.
 void World::setEnabled(BodyId id, bool enabled) {
     Impl& w = *impl_;
-    w.checkUnlocked("World::setEnabled");
+    checkUnlocked(w.locked, "World::setEnabled");
     Body& b = w.body(id);
     if (b.enabled == enabled) return;
     if (enabled) {
         b.enabled = true;
-        for (int s : b.shapes) w.createProxies(s);
-        w.wake(id.index);
+        for (int s : b.shapes) w.broadphase.createProxies(w.shapes, w.bodies, s);
+        wakeIsland(w.bodies, id.index);
         return;
     }
-    w.wake(id.index);  // leaves the island ring it slept in; its joint partners lose it
+    wakeIsland(w.bodies, id.index);  // leaves the island ring it slept in; its joint partners lose it
     for (JointId joint : bodyJoints(id)) {
         const BodyId a = jointBodyA(joint), other = a == id ? jointBodyB(joint) : a;
-        w.wake(other.index);
+        wakeIsland(w.bodies, other.index);
     }
     destroyContactsOf(w, id.index, -1);
-    for (int s : b.shapes) w.destroyProxies(s);
+    for (int s : b.shapes) w.broadphase.destroyProxies(w.shapes, s);
     b.enabled = false;
     b.awake = false;
     b.sleepTime = 0.0f;

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/base/pool.hpp"
 #include "perpdot/world.hpp"
 
 namespace perpdot {
@@ -52,5 +53,21 @@ struct Body {
         return {center - rotate(q, localCenter), q};
     }
 };
+
+// Wakes the body and the island it fell asleep with: bodies that slept together form a ring
+// through islandNext (sleep.cpp), undone as they wake.
+inline void wakeIsland(Pool<Body>& bodies, int index) {
+    int i = index;
+    do {
+        Body& b = bodies[i];
+        const int next = b.islandNext;
+        b.islandNext = -1;
+        if (b.type != BodyType::Static && b.enabled) {
+            b.awake = true;
+            b.sleepTime = 0.0f;
+        }
+        i = next;
+    } while (i >= 0 && i != index);
+}
 
 }  // namespace perpdot

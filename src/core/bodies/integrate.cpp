@@ -175,7 +175,7 @@ void finalizeBodies(World::Impl& w, const StepContext& ctx) {
         const BodyState& s = w.scratch.bodies.states[k + 1];
         if (w.scratch.bodies.bodyMotion[k] == NonFinite) {
             w.freeze(index);                            // where it was before the step,
-            w.synchronizeProxies(index, b.xf, {});  // perhaps outside the boxes re-fitted ahead
+            w.broadphase.synchronizeProxies(w.shapes, w.bodies, index, b.xf, {});  // perhaps outside the boxes re-fitted ahead
             continue;
         }
         if (w.scratch.bodies.bodyMotion[k] == Moved) {

@@ -53,8 +53,8 @@ void takeManifold(Contact& c, const collide::Manifold& m, const Body& ba, const 
 // Whether two overlapping proxies may have a contact (bodies, sensors, shape types, filters,
 // joints); reads only, so the pair-finding workers ask it.
 bool pairWanted(const World::Impl& w, int proxyA, int proxyB) {
-    const ShapeData& sa = w.shapes[w.collision.proxyKey(proxyA).shape];
-    const ShapeData& sb = w.shapes[w.collision.proxyKey(proxyB).shape];
+    const ShapeData& sa = w.shapes[w.broadphase.collision.proxyKey(proxyA).shape];
+    const ShapeData& sb = w.shapes[w.broadphase.collision.proxyKey(proxyB).shape];
     if (sa.body == sb.body) return false;
     const BodyType ta = w.bodies[sa.body].type, tb = w.bodies[sb.body].type;
     // A contact needs a dynamic body; a sensor also sees a kinematic one (a character mover
@@ -107,7 +107,7 @@ Narrowphase collideContact(World::Impl& w, int index) {
     Contact& c = w.contactCache.contacts[index];
     const Body& ba = w.bodies[c.bodyA];
     const Body& bb = w.bodies[c.bodyB];
-    const collide::CollisionSystem& collision = w.collision;
+    const collide::CollisionSystem& collision = w.broadphase.collision;
     if (!overlaps(collision.fatAABB(c.proxyA), collision.fatAABB(c.proxyB))) return Narrowphase::Apart;
     if (c.sensor) return collision.testOverlap(c.a, ba.xf, c.b, bb.xf) ? Narrowphase::Overlapping : Narrowphase::Separate;
     const bool wasTouching = c.touching;
@@ -159,12 +159,12 @@ uint32_t cellOf(float v) { return v >= 0.0f ? (v < 65535.0f ? static_cast<uint32
 // their boxes' centres, the next proxy joins the group while the union box stays within twice
 // the members' own area.
 void groupMovedProxies(const World::Impl& w, ContactCache& cache) {
-    const collide::CollisionSystem& collision = w.collision;
+    const collide::CollisionSystem& collision = w.broadphase.collision;
     std::vector<std::pair<uint32_t, int>>& order = cache.mortonOrder;
     order.clear();
-    order.reserve(w.movedProxies.size());
+    order.reserve(w.broadphase.movedProxies.size());
     AABB bounds{};
-    for (int proxy : w.movedProxies) {
+    for (int proxy : w.broadphase.movedProxies) {
         if (w.shapes.pairsWithNothing(w.shapes[collision.proxyKey(proxy).shape].filter)) continue;
         const AABB box = collision.fatAABB(proxy);
         bounds = order.empty() ? box : combine(bounds, box);
@@ -208,7 +208,7 @@ void groupMovedProxies(const World::Impl& w, ContactCache& cache) {
 
 void updatePairs(World::Impl& w) {
     ContactCache& cache = w.contactCache;
-    collide::CollisionSystem& collision = w.collision;
+    collide::CollisionSystem& collision = w.broadphase.collision;
     groupMovedProxies(w, cache);
     // The workers query the tree side by side, each into its own list.
     // Their lists hold as many pairs as the contact pool has slots: more would grow the pool anyway.
@@ -244,8 +244,8 @@ void updatePairs(World::Impl& w) {
     newPairs.clear();
     newPairs.reserve(most);
     for (const std::vector<NewPair>& found : cache.newPairsOf) newPairs.insert(newPairs.end(), found.begin(), found.end());
-    for (int proxy : w.movedProxies) collision.clearMoved(proxy);
-    w.movedProxies.clear();
+    for (int proxy : w.broadphase.movedProxies) collision.clearMoved(proxy);
+    w.broadphase.movedProxies.clear();
     // The tree's internal shape and the workers' split decide the order pairs are found in.
     // Contacts are created in the order of their child keys instead, so that contact order (and
     // the solver's) depends on the world's state alone: a world restored from a snapshot, with a
@@ -357,7 +357,7 @@ void destroyContactsOf(World::Impl& w, int bodyIndex, int shapeIndex) {
         if (shapeIndex < 0 || c.a.shape == shapeIndex || c.b.shape == shapeIndex) {
             // The other body loses a support: wake it.
             const int other = c.bodyA == bodyIndex ? c.bodyB : c.bodyA;
-            if (c.touching) w.wake(other);
+            if (c.touching) wakeIsland(w.bodies, other);
             destroyContact(w, index);
         }
     });
@@ -442,8 +442,8 @@ void updateContacts(World::Impl& w) {
         if (c.touching != (result == Narrowphase::WasTouching)) w.reportTouch(c, c.touching);
         // An awake body touching a sleeping one wakes the sleeper's island.
         if (c.touching) {
-            if (!ba.awake && ba.type != BodyType::Static && bb.awake) w.wake(c.bodyA);
-            if (!bb.awake && bb.type != BodyType::Static && ba.awake) w.wake(c.bodyB);
+            if (!ba.awake && ba.type != BodyType::Static && bb.awake) wakeIsland(w.bodies, c.bodyA);
+            if (!bb.awake && bb.type != BodyType::Static && ba.awake) wakeIsland(w.bodies, c.bodyB);
         }
     }
 }

@@ -69,9 +69,9 @@ float staticImpact(const World::Impl& w, int index, const collide::Sweep& sweep)
     for (int s : b.shapes) {
         const ShapeData& shape = w.shapes[s];
         if (!sweeps(shape)) continue;
-        const AABB start = w.collision.computeAABB(s, 0, xf0), end = w.collision.computeAABB(s, 0, xf1);
-        w.collision.queryStatic(combine(start, end), [&](int proxy) {
-            const collide::ChildKey key = w.collision.proxyKey(proxy);
+        const AABB start = w.broadphase.collision.computeAABB(s, 0, xf0), end = w.broadphase.collision.computeAABB(s, 0, xf1);
+        w.broadphase.collision.queryStatic(combine(start, end), [&](int proxy) {
+            const collide::ChildKey key = w.broadphase.collision.proxyKey(proxy);
             const ShapeData& other = w.shapes[key.shape];
             const Body& ob = w.bodies[other.body];
             if (other.sensor || !collide::CollisionSystem::canCollide(shape.type, other.type) ||
@@ -84,13 +84,13 @@ float staticImpact(const World::Impl& w, int index, const collide::Sweep& sweep)
                 if (pass == SegmentPass::Misses) return true;
             }
             const collide::Sweep still{ob.localCenter, ob.center, ob.center, ob.angle, ob.angle};
-            float toi = w.collision.timeOfImpact({s, 0}, sweep, key, still);
+            float toi = w.broadphase.collision.timeOfImpact({s, 0}, sweep, key, still);
             // The shape's core (a circle of a quarter of its extent, which turning does not change)
             // must still not pass when the shape was already touching at the start, or when the
             // centre crossed the segment but the time of impact saw none: a shape turning by
             // radians in one step can defeat its separating-axis advance.
             if (toi == 0.0f || (toi >= 1.0f && pass == SegmentPass::Crosses))
-                toi = w.collision.coreTimeOfImpact(s, 0.25f * shape.minExtent, sweep, key, still);
+                toi = w.broadphase.collision.coreTimeOfImpact(s, 0.25f * shape.minExtent, sweep, key, still);
             if (toi > 0.0f && toi < t) t = toi;
             return true;
         });

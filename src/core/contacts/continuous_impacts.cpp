@@ -101,8 +101,8 @@ void collectMoverPairs(World::Impl& w) {
         const Transform xf0{m.c0 - rotate(q0, b.localCenter), q0};
         bool first = true;
         for (int s : b.shapes)
-            for (int child = 0; child < w.collision.childCount(s); ++child) {
-                const AABB box = combine(w.collision.computeAABB(s, child, xf0), w.collision.computeAABB(s, child, b.xf));
+            for (int child = 0; child < w.broadphase.collision.childCount(s); ++child) {
+                const AABB box = combine(w.broadphase.collision.computeAABB(s, child, xf0), w.broadphase.collision.computeAABB(s, child, b.xf));
                 m.swept = first ? box : combine(m.swept, box);
                 first = false;
             }
@@ -112,8 +112,8 @@ void collectMoverPairs(World::Impl& w) {
         if (w.bodies[movers[i].body].shapes.empty()) continue;
         const bool bullet = w.bodies[movers[i].body].bullet;
         // Slower bodies: their fat boxes in the tree hold their whole (short) paths.
-        w.collision.query(movers[i].swept, [&](int proxy) {
-            const int other = w.shapes[w.collision.proxyKey(proxy).shape].body;
+        w.broadphase.collision.query(movers[i].swept, [&](int proxy) {
+            const int other = w.shapes[w.broadphase.collision.proxyKey(proxy).shape].body;
             const Body& o = w.bodies[other];
             if (other == movers[i].body || o.type == BodyType::Static || !(bullet || o.bullet)) return true;
             int m = moverOfBody[other];
@@ -156,11 +156,11 @@ void pairImpact(const World::Impl& w, MoverPair& pair, float t) {
     float first = 1.0f;
     // The swept shape `s` (of the body moving along `sweep`) against every child of `other`.
     const auto sweepShape = [&](int s, const collide::Sweep& sweep, int other, const collide::Sweep& otherSweep, bool isA) {
-        for (int child = 0; child < w.collision.childCount(other); ++child) {
+        for (int child = 0; child < w.broadphase.collision.childCount(other); ++child) {
             const collide::ChildKey key{other, child};
-            float toi = w.collision.timeOfImpact({s, 0}, sweep, key, otherSweep);
+            float toi = w.broadphase.collision.timeOfImpact({s, 0}, sweep, key, otherSweep);
             // Touching at the start: the shape's core must still not pass through.
-            if (toi == 0.0f) toi = w.collision.coreTimeOfImpact(s, coreFraction * w.shapes[s].minExtent, sweep, key, otherSweep);
+            if (toi == 0.0f) toi = w.broadphase.collision.coreTimeOfImpact(s, coreFraction * w.shapes[s].minExtent, sweep, key, otherSweep);
             if (toi > 0.0f && toi < first) {
                 first = toi;
                 pair.keyA = isA ? collide::ChildKey{s, 0} : key;
@@ -198,7 +198,7 @@ void resolveImpact(World::Impl& w, const MoverPair& pair, float t, const StepCon
     // going back by the skin overlap leaves the pair a skin apart, never inside each other.
     constexpr collide::Skin skin = collide::Skin::Box2D;
     const collide::Manifold manifold =
-        swap ? w.collision.collide(pair.keyB, xfB, pair.keyA, xfA, skin) : w.collision.collide(pair.keyA, xfA, pair.keyB, xfB, skin);
+        swap ? w.broadphase.collision.collide(pair.keyB, xfB, pair.keyA, xfA, skin) : w.broadphase.collision.collide(pair.keyA, xfA, pair.keyB, xfB, skin);
     if (manifold.pointCount == 0) {  // nothing to push on: both wait at the impact (continuous.cpp's answer)
         for (Mover* m : {&a, &b}) {
             restartAt(*m, t);
@@ -314,14 +314,14 @@ void solveMovingImpacts(World::Impl& w, const StepContext& ctx) {
     for (const Mover& m : movers) {
         Body& b = w.bodies[m.body];
         if (!m.moved && !(m.fast && b.bullet)) continue;
-        if (m.moved && !b.awake) w.wake(m.body);
+        if (m.moved && !b.awake) wakeIsland(w.bodies, m.body);
         b.center = m.c1;
         b.angle = m.a1;
         b.xf = b.derivedTransform();
         b.v = m.v;
         b.w = m.w;
         if (m.frozen) w.freeze(m.body);
-        w.synchronizeProxies(m.body, b.xf, b.center - m.stepStart);
+        w.broadphase.synchronizeProxies(w.shapes, w.bodies, m.body, b.xf, b.center - m.stepStart);
     }
 }
 

@@ -49,14 +49,14 @@ void removeJoint(World::Impl& w, int index) {
     Body& b = w.bodies[j.bodyB];
     --a.jointCount;
     --b.jointCount;
-    w.wake(j.bodyA);
-    w.wake(j.bodyB);
+    wakeIsland(w.bodies, j.bodyA);
+    wakeIsland(w.bodies, j.bodyB);
     // The broadphase skipped this pair while the joint forbade it: let it look again.
     if (!j.collideConnected)
         for (int shape : b.shapes)
             for (int proxy : w.shapes[shape].proxies) {
-                w.collision.requery(proxy);
-                w.movedProxies.push_back(proxy);
+                w.broadphase.collision.requery(proxy);
+                w.broadphase.movedProxies.push_back(proxy);
             }
     s.joints.destroy(index);
 }
@@ -67,7 +67,7 @@ JointReaction reactionOf(const Joint& j) { return stagesOf(j.type).reaction(j.da
 
 Joint& addJoint(World::Impl& w, JointType type, BodyId bodyA, BodyId bodyB, Vec2 localAnchorA, Vec2 localAnchorB,
                 float referenceAngle, bool collideConnected, void* userData) {
-    w.checkUnlocked("createJoint");
+    checkUnlocked(w.locked, "createJoint");
     w.body(bodyA, "createJoint");
     w.body(bodyB, "createJoint");
     if (bodyA.index == bodyB.index) throw Error("a joint needs two different bodies");
@@ -90,8 +90,8 @@ Joint& addJoint(World::Impl& w, JointType type, BodyId bodyA, BodyId bodyB, Vec2
     ++w.bodies[j.bodyA].jointCount;
     ++w.bodies[j.bodyB].jointCount;
     if (!collideConnected) destroyContactsBetween(w, j.bodyA, j.bodyB);
-    w.wake(j.bodyA);
-    w.wake(j.bodyB);
+    wakeIsland(w.bodies, j.bodyA);
+    wakeIsland(w.bodies, j.bodyB);
     return j;
 }
 
@@ -384,7 +384,7 @@ void forEachJointPair(const World::Impl& w, void (*visit)(void* context, int bod
 // --- World API ---
 
 void World::destroyJoint(JointId id) {
-    impl_->checkUnlocked("destroyJoint");
+    checkUnlocked(impl_->locked, "destroyJoint");
     checkedJoint(*impl_, id);
     removeJoint(*impl_, id.index);
 }
@@ -423,7 +423,7 @@ float World::jointReactionTorque(JointId id) const {
 }
 
 void World::setJointBreakLimits(JointId id, float maxForce, float maxTorque, bool destroy) {
-    impl_->checkUnlocked("setJointBreakLimits");
+    checkUnlocked(impl_->locked, "setJointBreakLimits");
     Joint& j = checkedJoint(*impl_, id);
     if (!(maxForce >= 0.0f)) throw Error("setJointBreakLimits: maxForce must be >= 0 (infinity: never breaks)");
     if (!(maxTorque >= 0.0f)) throw Error("setJointBreakLimits: maxTorque must be >= 0 (infinity: never breaks)");
@@ -464,23 +464,23 @@ void breakJoints(World::Impl& w, const StepContext& ctx) {
 }
 
 void World::setMouseTarget(JointId id, Vec2 target) {
-    impl_->checkUnlocked("setMouseTarget");
+    checkUnlocked(impl_->locked, "setMouseTarget");
     Joint& j = checkedJoint(*impl_, id);
     if (j.type != JointType::Mouse) throw Error("setMouseTarget: not a mouse joint");
     requireFinite(isFinite(target), "setMouseTarget: target");
     j.localAnchorA = invTransformPoint(impl_->bodies[j.bodyA].xf, target);
-    impl_->wake(j.bodyB);
+    wakeIsland(impl_->bodies, j.bodyB);
 }
 
 void World::setMotorSpeed(JointId id, float speed) {
-    impl_->checkUnlocked("setMotorSpeed");
+    checkUnlocked(impl_->locked, "setMotorSpeed");
     Joint& j = checkedJoint(*impl_, id);
     requireFinite(std::isfinite(speed), "setMotorSpeed: speed");
     float* (*motorSpeed)(JointData&) = kindOf(j.type)->motorSpeed;
     if (!motorSpeed) throw Error("setMotorSpeed: the joint's type has no motor");
     *motorSpeed(j.data) = speed;
-    impl_->wake(j.bodyA);
-    impl_->wake(j.bodyB);
+    wakeIsland(impl_->bodies, j.bodyA);
+    wakeIsland(impl_->bodies, j.bodyB);
 }
 
 }  // namespace perpdot

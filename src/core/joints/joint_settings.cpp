@@ -28,10 +28,10 @@ void requireAtLeastZero(float value, const char* call, const char* what) {
 
 // The live joint of `id` for a setter: the world must not be stepping; its bodies wake.
 Joint& jointToChange(World::Impl& w, JointId id, const char* call) {
-    w.checkUnlocked(call);
+    checkUnlocked(w.locked, call);
     Joint& j = checkedJoint(w, id);
-    w.wake(j.bodyA);
-    w.wake(j.bodyB);
+    wakeIsland(w.bodies, j.bodyA);
+    wakeIsland(w.bodies, j.bodyB);
     return j;
 }
 

@@ -51,7 +51,7 @@ public:
 
     Gap gap(Vec2 center, collide::ChildKey other) const {
         const collide::CoreDistance d =
-            w_.collision.coreDistance({shape_, 0}, Transform{center, Rot{}}, other, w_.bodies[w_.shapes[other.shape].body].xf);
+            w_.broadphase.collision.coreDistance({shape_, 0}, Transform{center, Rot{}}, other, w_.bodies[w_.shapes[other.shape].body].xf);
         if (d.distance <= 0.0f) return {};
         const Vec2 n = (1.0f / d.distance) * (d.pointA - d.pointB);
         return {true, d.distance - d.radiusA - d.radiusB, n, d.pointB + d.radiusB * n};
@@ -60,8 +60,8 @@ public:
     // Calls visit(key) for every solid child near `box` that the capsule collides with.
     template <class Visit>
     void forEachNear(const AABB& box, Visit&& visit) const {
-        w_.collision.query(box, [&](int proxy) {
-            const collide::ChildKey key = w_.collision.proxyKey(proxy);
+        w_.broadphase.collision.query(box, [&](int proxy) {
+            const collide::ChildKey key = w_.broadphase.collision.proxyKey(proxy);
             const ShapeData& s = w_.shapes[key.shape];
             if (s.body != body_ && !s.sensor && shouldCollide(def_.filter, s.filter)) visit(key);
             return true;
@@ -137,7 +137,7 @@ public:
         const float impulse = std::min(b.mass * closing, def_.maxPushForce * dt);
         const Vec2 j = -impulse * hit.normal;
         Body& body = w_.bodies[index];
-        w_.wake(index);
+        wakeIsland(w_.bodies, index);
         body.v += b.invMass * j;
         body.w += b.invInertia * perpDot(r, j);
     }
@@ -148,12 +148,12 @@ public:
         const Vec2 p1 = center - Vec2{0.0f, def_.halfHeight + def_.radius - def_.skin};
         const Vec2 p2 = p1 - Vec2{0.0f, reach + 2.0f * def_.skin};
         bool found = false;
-        w_.collision.rayCastTree(p1, p2, [&](int proxy, float maxFraction) {
-            const collide::ChildKey key = w_.collision.proxyKey(proxy);
+        w_.broadphase.collision.rayCastTree(p1, p2, [&](int proxy, float maxFraction) {
+            const collide::ChildKey key = w_.broadphase.collision.proxyKey(proxy);
             const ShapeData& s = w_.shapes[key.shape];
             if (s.body == body_ || s.sensor || !shouldCollide(def_.filter, s.filter)) return -1.0f;
             collide::RayCastResult result;
-            if (!w_.collision.rayCast(key, w_.bodies[s.body].xf, p1, p2, maxFraction, result)) return -1.0f;
+            if (!w_.broadphase.collision.rayCast(key, w_.bodies[s.body].xf, p1, p2, maxFraction, result)) return -1.0f;
             found = walkable(result.normal);
             return result.fraction;
         });
@@ -291,7 +291,7 @@ MoverState World::createMover(const MoverDef& def, Vec2 position) {
 
 void World::moveMover(const MoverDef& def, MoverState& s, const MoverInput& input, float dt) {
     Impl& w = *impl_;
-    w.checkUnlocked("moveMover");
+    checkUnlocked(w.locked, "moveMover");
     validate(def);
     if (!(std::isfinite(dt) && dt > 0.0f)) throw Error("moveMover: dt must be finite and > 0");
     if (!std::isfinite(input.walkSpeed)) throw Error("moveMover: walkSpeed must be finite");

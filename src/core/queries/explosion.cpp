@@ -22,12 +22,12 @@ struct Reached {
 bool hiddenByStatic(const World::Impl& w, Vec2 centre, Vec2 point) {
     if (!(lengthSquared(point - centre) > 0.0f)) return false;
     bool hidden = false;
-    w.collision.rayCastTree(centre, point, [&](int proxy, float maxFraction) {
-        const collide::ChildKey key = w.collision.proxyKey(proxy);
+    w.broadphase.collision.rayCastTree(centre, point, [&](int proxy, float maxFraction) {
+        const collide::ChildKey key = w.broadphase.collision.proxyKey(proxy);
         const ShapeData& s = w.shapes[key.shape];
         if (s.sensor || w.bodies[s.body].type != BodyType::Static) return -1.0f;
         collide::RayCastResult result;
-        if (w.collision.rayCast(key, w.bodies[s.body].xf, centre, point, maxFraction, result) && result.fraction < 1.0f) {
+        if (w.broadphase.collision.rayCast(key, w.bodies[s.body].xf, centre, point, maxFraction, result) && result.fraction < 1.0f) {
             hidden = true;
             return 0.0f;  // one is enough
         }
@@ -40,7 +40,7 @@ bool hiddenByStatic(const World::Impl& w, Vec2 centre, Vec2 point) {
 
 int World::explode(const ExplosionDef& def) {
     Impl& w = *impl_;
-    w.checkUnlocked("explode");
+    checkUnlocked(w.locked, "explode");
     if (!isFinite(def.position)) throw Error("ExplosionDef.position must be finite");
     if (!(def.radius > 0.0f) || !std::isfinite(def.radius)) throw Error("ExplosionDef.radius must be > 0 and finite");
     if (!(def.impulse >= 0.0f) || !std::isfinite(def.impulse)) throw Error("ExplosionDef.impulse must be >= 0 and finite");
@@ -48,12 +48,12 @@ int World::explode(const ExplosionDef& def) {
     // Nearest surface point of every dynamic shape within the radius (of its nearest child).
     std::vector<Reached> reached;
     const Vec2 extent{def.radius, def.radius};
-    w.collision.query({def.position - extent, def.position + extent}, [&](int proxy) {
-        const collide::ChildKey key = w.collision.proxyKey(proxy);
+    w.broadphase.collision.query({def.position - extent, def.position + extent}, [&](int proxy) {
+        const collide::ChildKey key = w.broadphase.collision.proxyKey(proxy);
         const ShapeData& s = w.shapes[key.shape];
         const Body& b = w.bodies[s.body];
         if (b.type != BodyType::Dynamic || s.sensor || !shouldCollide(def.filter, s.filter)) return true;
-        const auto nearest = w.collision.closestSurfacePoint(key, b.xf, def.position);
+        const auto nearest = w.broadphase.collision.closestSurfacePoint(key, b.xf, def.position);
         if (!(nearest.distance < def.radius)) return true;
         const auto same = std::find_if(reached.begin(), reached.end(), [&](const Reached& r) { return r.shape == key.shape; });
         if (same == reached.end()) reached.push_back({key.shape, nearest});

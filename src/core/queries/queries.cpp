@@ -17,8 +17,8 @@ namespace {
 // Calls visit(key) for each shape child whose fat AABB overlaps `box` and whose filter passes.
 template <class Visit>
 void forEachChild(const World::Impl& w, const AABB& box, const Filter& filter, Visit&& visit) {
-    w.collision.query(box, [&](int proxy) {
-        const collide::ChildKey key = w.collision.proxyKey(proxy);
+    w.broadphase.collision.query(box, [&](int proxy) {
+        const collide::ChildKey key = w.broadphase.collision.proxyKey(proxy);
         if (shouldCollide(filter, w.shapes[key.shape].filter)) visit(key);
         return true;
     });
@@ -69,7 +69,7 @@ std::vector<ShapeId> overlapQuery(const World::Impl& w, const QueryShape& query,
     std::vector<ShapeId> out;
     forEachChild(w, boundsOf(query, xf), filter, [&](collide::ChildKey key) {
         const Transform& shapeXf = w.bodies[w.shapes[key.shape].body].xf;
-        if (w.collision.testOverlap(key, shapeXf, query, xf)) addUnique(out, w.shapeId(key.shape));
+        if (w.broadphase.collision.testOverlap(key, shapeXf, query, xf)) addUnique(out, w.shapeId(key.shape));
     });
     return out;
 }
@@ -89,7 +89,7 @@ void shapeCast(const World::Impl& w, const CastShape& shape, const Transform& xf
                             {std::max(start.upper.x, start.upper.x + translation.x), std::max(start.upper.y, start.upper.y + translation.y)}};
             forEachChild(w, path, filter, [&](collide::ChildKey key) {
                 collide::ShapeCastResult result;
-                if (w.collision.shapeCast(key, w.bodies[w.shapes[key.shape].body].xf, query, xf, translation, result))
+                if (w.broadphase.collision.shapeCast(key, w.bodies[w.shapes[key.shape].body].xf, query, xf, translation, result))
                     onHit(ShapeCastHit{w.shapeId(key.shape), result.point, result.normal, result.fraction});
             });
         },
@@ -101,12 +101,12 @@ template <class OnHit>
 void rayCast(const World::Impl& w, Vec2 origin, Vec2 translation, const Filter& filter, OnHit&& onHit) {
     if (!isFinite(origin) || !isFinite(translation)) throw Error("castRay: origin and translation must be finite");
     const Vec2 p2 = origin + translation;
-    w.collision.rayCastTree(origin, p2, [&](int proxy, float maxFraction) {
-        const collide::ChildKey key = w.collision.proxyKey(proxy);
+    w.broadphase.collision.rayCastTree(origin, p2, [&](int proxy, float maxFraction) {
+        const collide::ChildKey key = w.broadphase.collision.proxyKey(proxy);
         const ShapeData& s = w.shapes[key.shape];
         if (!shouldCollide(filter, s.filter)) return -1.0f;
         collide::RayCastResult result;
-        if (!w.collision.rayCast(key, w.bodies[s.body].xf, origin, p2, maxFraction, result)) return -1.0f;
+        if (!w.broadphase.collision.rayCast(key, w.bodies[s.body].xf, origin, p2, maxFraction, result)) return -1.0f;
         return onHit(RayHit{w.shapeId(key.shape), origin + result.fraction * translation, result.normal, result.fraction});
     });
 }
@@ -153,7 +153,7 @@ std::vector<ShapeId> World::overlapAABB(const AABB& box, const Filter& filter) c
     std::vector<ShapeId> out;
     forEachChild(*impl_, box, filter, [&](collide::ChildKey key) {
         const Transform& xf = impl_->bodies[impl_->shapes[key.shape].body].xf;
-        if (overlaps(impl_->collision.computeAABB(key.shape, key.child, xf), box)) addUnique(out, impl_->shapeId(key.shape));
+        if (overlaps(impl_->broadphase.collision.computeAABB(key.shape, key.child, xf), box)) addUnique(out, impl_->shapeId(key.shape));
     });
     return out;
 }
@@ -162,7 +162,7 @@ std::vector<ShapeId> World::overlapPoint(Vec2 point, const Filter& filter) const
     std::vector<ShapeId> out;
     forEachChild(*impl_, AABB{point, point}, filter, [&](collide::ChildKey key) {
         const Transform& xf = impl_->bodies[impl_->shapes[key.shape].body].xf;
-        if (impl_->collision.testPoint(key.shape, xf, point)) addUnique(out, impl_->shapeId(key.shape));
+        if (impl_->broadphase.collision.testPoint(key.shape, xf, point)) addUnique(out, impl_->shapeId(key.shape));
     });
     return out;
 }

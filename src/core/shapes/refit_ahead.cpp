@@ -46,14 +46,14 @@ constexpr float most = std::numeric_limits<float>::max();
 }  // namespace
 
 BoxRoom& knownShapes(World::Impl& w, int body) {
-    BoxRoom& known = w.boxRooms[body];
+    BoxRoom& known = w.broadphase.boxRooms[body];
     if (known.reach >= 0.0f) return known;
     // Forgotten: the shapes or the centre of mass changed.
     const Body& b = w.bodies[body];
     known.reach = 0.0f;
     float minExtent = most, maxExtent = 0.0f;
     for (int s : b.shapes) {
-        known.reach = std::max(known.reach, w.collision.turningReach(s, b.localCenter));
+        known.reach = std::max(known.reach, w.broadphase.collision.turningReach(s, b.localCenter));
         if (!sweeps(w.shapes[s])) continue;
         minExtent = std::min(minExtent, w.shapes[s].minExtent);
         maxExtent = std::max(maxExtent, w.shapes[s].maxExtent);
@@ -82,9 +82,9 @@ bool measureBoxes(World::Impl& w, int body, Vec2 center, const Transform& xf, co
     for (int s : b.shapes) {
         const std::vector<int>& proxies = w.shapes[s].proxies;
         for (int child = 0; child < static_cast<int>(proxies.size()); ++child) {
-            const AABB box = w.collision.computeAABB(s, child, xf);
-            if (refitAlong != nullptr && w.collision.room(proxies[child], box) < 0.0f) w.refitProxy(proxies[child], box, *refitAlong);
-            foldRoom(below, above, box, w.collision.fatAABB(proxies[child]));
+            const AABB box = w.broadphase.collision.computeAABB(s, child, xf);
+            if (refitAlong != nullptr && w.broadphase.collision.room(proxies[child], box) < 0.0f) w.broadphase.refitProxy(proxies[child], box, *refitAlong);
+            foldRoom(below, above, box, w.broadphase.collision.fatAABB(proxies[child]));
             if (sole != nullptr) *sole = {b.shapes.size() == 1 && proxies.size() == 1 ? proxies[0] : -1, box};
         }
     }
@@ -97,11 +97,11 @@ bool measureBoxes(World::Impl& w, int body, Vec2 center, const Transform& xf, co
 void planInPlaceMove(World::Impl& w, int body, PredictedPose& p, const SoleBox& sole) {
     p.inPlace.proxy = -1;
     if (sole.proxy < 0) return;
-    const std::optional<AABB> fat = w.collision.inPlaceFat(sole.proxy, sole.box, p.displacement);
+    const std::optional<AABB> fat = w.broadphase.collision.inPlaceFat(sole.proxy, sole.box, p.displacement);
     if (!fat) return;
     Vec2 below{most, most}, above{most, most};
     foldRoom(below, above, sole.box, *fat);
-    rememberRoom(w.boxRooms[body], p.center, p.xf.q, below, above);
+    rememberRoom(w.broadphase.boxRooms[body], p.center, p.xf.q, below, above);
     p.inPlace = {sole.proxy, *fat};
 }
 
@@ -115,17 +115,17 @@ void refitPredicted(int, int, int, void* world) {
     for (size_t k = 0; k < poses.size(); ++k) {
         const PredictedPose& p = poses[k];
         if (!p.refit) continue;
-        if (p.inPlace.proxy >= 0) w.moveInPlace(p.inPlace.proxy, p.inPlace.fat);
+        if (p.inPlace.proxy >= 0) w.broadphase.moveInPlace(p.inPlace.proxy, p.inPlace.fat);
         else refitEscaped(w, w.scratch.bodies.awakeBodies[k], p.center, p.xf, p.displacement);
     }
     // A worn tree is built anew here too, beside the solver rather than before the next queries.
-    w.collision.rebuildTreeIfWorn();
+    w.broadphase.collision.rebuildTreeIfWorn();
 }
 
 }  // namespace
 
 bool boxesInside(World::Impl& w, int body, Vec2 center, const Transform& xf) {
-    return w.boxRooms[body].holds(center, xf.q) || measureBoxes(w, body, center, xf, nullptr);
+    return w.broadphase.boxRooms[body].holds(center, xf.q) || measureBoxes(w, body, center, xf, nullptr);
 }
 
 void refitEscaped(World::Impl& w, int body, Vec2 center, const Transform& xf, Vec2 displacement) {
@@ -135,7 +135,7 @@ void refitEscaped(World::Impl& w, int body, Vec2 center, const Transform& xf, Ve
 void startTreeRefit(World::Impl& w, const StepContext& ctx) {
     const int count = static_cast<int>(w.scratch.bodies.awakeBodies.size());
     w.scratch.bodies.predictedPoses.resize(static_cast<size_t>(count));
-    w.boxRooms.resize(static_cast<size_t>(w.bodies.capacity()));
+    w.broadphase.boxRooms.resize(static_cast<size_t>(w.bodies.capacity()));
     w.workers.parallelFor(count, 256, [&](int begin, int end, int) {
         for (int k = begin; k < end; ++k) {
             const int index = w.scratch.bodies.awakeBodies[k];
@@ -155,7 +155,7 @@ void startTreeRefit(World::Impl& w, const StepContext& ctx) {
             // A body without shapes is never measured, so its box room never holds: its shape list
             // (the body's last cache line) is read only then.
             SoleBox sole;
-            p.refit = !w.boxRooms[index].holds(p.center, p.xf.q) && !b.shapes.empty() &&
+            p.refit = !w.broadphase.boxRooms[index].holds(p.center, p.xf.q) && !b.shapes.empty() &&
                       !measureBoxes(w, index, p.center, p.xf, nullptr, &sole);
             if (p.refit) planInPlaceMove(w, index, p, sole);
         }

@@ -76,17 +76,17 @@ void requireFiniteMass(const ShapeData::Geometry& geometry, float density) {
 
 template <class Geometry>
 ShapeId create(World::Impl& w, BodyId bodyId, const ShapeDef& def, const Geometry& geometry) {
-    w.checkUnlocked("createShape");
+    checkUnlocked(w.locked, "createShape");
     w.body(bodyId, "createShape");
     validate(def);
     validateGeometry(geometry);
     requireFiniteMass(geometry, def.density);
     const int index = w.addShape(bodyId, def);
     w.shapes[index].geometry = geometry;
-    w.collision.setGeometry(index, geometry);
-    w.shapes[index].minExtent = w.collision.minExtent(index);
-    w.shapes[index].maxExtent = w.collision.maxExtent(index);
-    w.createProxies(index);
+    w.broadphase.collision.setGeometry(index, geometry);
+    w.shapes[index].minExtent = w.broadphase.collision.minExtent(index);
+    w.shapes[index].maxExtent = w.broadphase.collision.maxExtent(index);
+    w.broadphase.createProxies(w.shapes, w.bodies, index);
     if constexpr (std::is_same_v<Geometry, Circle> || std::is_same_v<Geometry, Polygon> || std::is_same_v<Geometry, Capsule>)
         w.updateMass(bodyId.index);
     return w.shapeId(index);
@@ -125,69 +125,6 @@ int World::Impl::addShape(BodyId bodyId, const ShapeDef& def) {
     return index;
 }
 
-void World::Impl::createProxies(int index) {
-    ShapeData& s = shapes[index];
-    forgetBoxRoom(s.body);
-    s.type = static_cast<ShapeType>(s.geometry.index());
-    const Transform& xf = bodies[s.body].xf;
-    if (!s.enabled || !bodies[s.body].enabled) return;  // out of the broadphase (World::setEnabled)
-    const bool isStatic = bodies[s.body].type == BodyType::Static;
-    const int children = collision.childCount(index);
-    s.proxies.resize(children);
-    for (int child = 0; child < children; ++child) {
-        s.proxies[child] = collision.createProxy(collision.computeAABB(index, child, xf), {index, child}, isStatic);
-        movedProxies.push_back(s.proxies[child]);
-    }
-}
-
-void World::Impl::destroyProxies(int index) {
-    forgetBoxRoom(shapes[index].body);
-    for (int proxy : shapes[index].proxies) {
-        // A proxy id is reused by the tree: forget it in the move buffer before it goes.
-        movedProxies.erase(std::remove(movedProxies.begin(), movedProxies.end(), proxy), movedProxies.end());
-        collision.destroyProxy(proxy);
-    }
-    shapes[index].proxies.clear();
-}
-
-namespace {
-
-// visit(proxy, aabb) for every proxy of the body, with its box at transform xf, until visit
-// returns false; returns whether it never did.
-template <class Visit>
-bool everyProxy(const World::Impl& w, int body, const Transform& xf, const Visit& visit) {
-    for (int s : w.bodies[body].shapes) {
-        const std::vector<int>& proxies = w.shapes[s].proxies;
-        for (int child = 0; child < static_cast<int>(proxies.size()); ++child)
-            if (!visit(proxies[child], w.collision.computeAABB(s, child, xf))) return false;
-    }
-    return true;
-}
-
-}  // namespace
-
-void World::Impl::synchronizeProxies(int index, const Transform& xf, Vec2 displacement) {
-    if (static_cast<size_t>(index) < boxRooms.size()) boxRooms[index].below = {-1.0f, -1.0f};  // its boxes change, its reach does not
-    everyProxy(*this, index, xf, [&](int proxy, const AABB& aabb) {
-        refitProxy(proxy, aabb, displacement);
-        return true;
-    });
-}
-
-void World::Impl::refitProxy(int proxy, const AABB& aabb, Vec2 displacement) {
-    const bool queued = collision.wasMoved(proxy);  // once, however often it moves before updatePairs
-    if (collision.moveProxy(proxy, aabb, displacement) && !queued) movedProxies.push_back(proxy);
-}
-
-void World::Impl::moveInPlace(int proxy, const AABB& fat) {
-    if (!collision.wasMoved(proxy)) movedProxies.push_back(proxy);
-    collision.moveInPlace(proxy, fat);
-}
-
-void World::Impl::forgetBoxRoom(int index) {
-    if (static_cast<size_t>(index) < boxRooms.size()) boxRooms[index] = BoxRoom{};
-}
-
 ShapeId World::createShape(BodyId body, const ShapeDef& def, const Circle& circle) { return create(*impl_, body, def, circle); }
 ShapeId World::createShape(BodyId body, const ShapeDef& def, const Polygon& polygon) { return create(*impl_, body, def, polygon); }
 ShapeId World::createShape(BodyId body, const ShapeDef& def, const Segment& segment) { return create(*impl_, body, def, segment); }
@@ -196,17 +133,17 @@ ShapeId World::createShape(BodyId body, const ShapeDef& def, const Capsule& caps
 
 void World::destroyShape(ShapeId id) {
     Impl& w = *impl_;
-    w.checkUnlocked("destroyShape");
+    checkUnlocked(w.locked, "destroyShape");
     ShapeData& s = w.shape(id);
     const int bodyIndex = s.body;
     destroyContactsOf(w, bodyIndex, id.index);
-    w.destroyProxies(id.index);
-    w.collision.clearGeometry(id.index);
+    w.broadphase.destroyProxies(w.shapes, id.index);
+    w.broadphase.collision.clearGeometry(id.index);
     std::vector<int>& owned = w.bodies[bodyIndex].shapes;
     owned.erase(std::find(owned.begin(), owned.end(), id.index));
     w.shapes.destroy(id.index);
     w.updateMass(bodyIndex);
-    w.wake(bodyIndex);
+    wakeIsland(w.bodies, bodyIndex);
 }
 
 bool World::isValid(ShapeId id) const { return isLiveHandle(impl_->shapes, id, impl_->identity); }
@@ -242,23 +179,23 @@ Filter World::filter(ShapeId id) const { return impl_->shape(id).filter; }
 AABB World::aabb(ShapeId id) const {
     const ShapeData& s = impl_->shape(id);
     const Transform& xf = impl_->bodies[s.body].xf;
-    AABB box = impl_->collision.computeAABB(id.index, 0, xf);
-    for (int child = 1; child < impl_->collision.childCount(id.index); ++child) {
-        box = combine(box, impl_->collision.computeAABB(id.index, child, xf));
+    AABB box = impl_->broadphase.collision.computeAABB(id.index, 0, xf);
+    for (int child = 1; child < impl_->broadphase.collision.childCount(id.index); ++child) {
+        box = combine(box, impl_->broadphase.collision.computeAABB(id.index, child, xf));
     }
     return box;
 }
 
 // Material changes reach the shape's contacts at once (remixMaterials).
 void World::setFriction(ShapeId id, float friction) {
-    impl_->checkUnlocked("setFriction");
+    checkUnlocked(impl_->locked, "setFriction");
     if (!(std::isfinite(friction) && friction >= 0.0f)) throw Error("setFriction: friction must be finite and >= 0");
     impl_->shape(id).friction = friction;
     remixMaterials(*impl_, id.index);
 }
 
 void World::setRestitution(ShapeId id, float restitution) {
-    impl_->checkUnlocked("setRestitution");
+    checkUnlocked(impl_->locked, "setRestitution");
     if (!(std::isfinite(restitution) && restitution >= 0.0f)) throw Error("setRestitution: restitution must be finite and >= 0");
     impl_->shape(id).restitution = restitution;
     impl_->shapes.noteRestitution(restitution);
@@ -269,14 +206,14 @@ float World::rollingResistance(ShapeId id) const { return impl_->shape(id).rolli
 float World::tangentSpeed(ShapeId id) const { return impl_->shape(id).tangentSpeed; }
 
 void World::setRollingResistance(ShapeId id, float resistance) {
-    impl_->checkUnlocked("setRollingResistance");
+    checkUnlocked(impl_->locked, "setRollingResistance");
     if (!(std::isfinite(resistance) && resistance >= 0.0f)) throw Error("setRollingResistance: resistance must be finite and >= 0");
     impl_->shape(id).rollingResistance = resistance;
     remixMaterials(*impl_, id.index);
 }
 
 void World::setTangentSpeed(ShapeId id, float speed) {
-    impl_->checkUnlocked("setTangentSpeed");
+    checkUnlocked(impl_->locked, "setTangentSpeed");
     if (!std::isfinite(speed)) throw Error("setTangentSpeed: speed must be finite");
     impl_->shape(id).tangentSpeed = speed;
     remixMaterials(*impl_, id.index);
@@ -285,7 +222,7 @@ void World::setTangentSpeed(ShapeId id, float speed) {
 void World::enablePreSolveEvents(ShapeId id, bool enable) { impl_->shape(id).enablePreSolveEvents = enable; }
 
 void World::setDensity(ShapeId id, float density) {
-    impl_->checkUnlocked("setDensity");
+    checkUnlocked(impl_->locked, "setDensity");
     if (!(std::isfinite(density) && density >= 0.0f)) throw Error("setDensity: density must be finite and >= 0");
     ShapeData& s = impl_->shape(id);
     requireFiniteMass(s.geometry, density);

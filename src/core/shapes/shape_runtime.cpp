@@ -12,8 +12,8 @@ namespace {
 // whose boxes overlapped all along are found too.
 void requeryShape(World::Impl& w, int shape) {
     for (int proxy : w.shapes[shape].proxies) {
-        w.collision.requery(proxy);
-        w.movedProxies.push_back(proxy);
+        w.broadphase.collision.requery(proxy);
+        w.broadphase.movedProxies.push_back(proxy);
     }
 }
 
@@ -24,7 +24,7 @@ void endContactsOf(World::Impl& w, int shape, const Ends& ends) {
     cache.bodyLists.forEach(cache.contacts, w.shapes[shape].body, [&](int index, int) {
         const Contact& c = cache.contacts[index];
         if ((c.a.shape != shape && c.b.shape != shape) || !ends(c)) return;
-        if (c.touching) w.wake(c.bodyA == w.shapes[shape].body ? c.bodyB : c.bodyA);
+        if (c.touching) wakeIsland(w.bodies, c.bodyA == w.shapes[shape].body ? c.bodyB : c.bodyA);
         destroyContact(w, index);
     });
 }
@@ -33,39 +33,39 @@ void endContactsOf(World::Impl& w, int shape, const Ends& ends) {
 
 void World::setFilter(ShapeId id, const Filter& filter) {
     Impl& w = *impl_;
-    w.checkUnlocked("World::setFilter");
+    checkUnlocked(w.locked, "World::setFilter");
     ShapeData& s = w.shape(id);
     s.filter = filter;
     w.shapes.noteFilter(filter);
     endContactsOf(w, id.index, [&](const Contact& c) { return !shouldCollide(w.shapes[c.a.shape].filter, w.shapes[c.b.shape].filter); });
     requeryShape(w, id.index);
-    w.wake(s.body);
+    wakeIsland(w.bodies, s.body);
 }
 
 void World::setSensor(ShapeId id, bool sensor) {
     Impl& w = *impl_;
-    w.checkUnlocked("World::setSensor");
+    checkUnlocked(w.locked, "World::setSensor");
     ShapeData& s = w.shape(id);
     if (s.sensor == sensor) return;
     s.sensor = sensor;
     endContactsOf(w, id.index, [](const Contact&) { return true; });
     requeryShape(w, id.index);
-    w.wake(s.body);
+    wakeIsland(w.bodies, s.body);
 }
 
 void World::setEnabled(ShapeId id, bool enabled) {
     Impl& w = *impl_;
-    w.checkUnlocked("World::setEnabled");
+    checkUnlocked(w.locked, "World::setEnabled");
     ShapeData& s = w.shape(id);
     if (s.enabled == enabled) return;
     s.enabled = enabled;
     if (enabled) {
-        w.createProxies(id.index);
+        w.broadphase.createProxies(w.shapes, w.bodies, id.index);
     } else {
         endContactsOf(w, id.index, [](const Contact&) { return true; });
-        w.destroyProxies(id.index);
+        w.broadphase.destroyProxies(w.shapes, id.index);
     }
-    w.wake(s.body);
+    wakeIsland(w.bodies, s.body);
 }
 
 bool World::isEnabled(ShapeId id) const { return impl_->shape(id).enabled; }
@@ -74,7 +74,7 @@ void* World::userData(ShapeId id) const { return impl_->shape(id).userData; }
 void World::setUserData(ShapeId id, void* userData) { impl_->shape(id).userData = userData; }
 
 void World::setShouldCollide(ShouldCollideFn callback) {
-    impl_->checkUnlocked("World::setShouldCollide");
+    checkUnlocked(impl_->locked, "World::setShouldCollide");
     impl_->shouldCollide = std::move(callback);
 }
 

@@ -197,7 +197,7 @@ void writeShape(ByteWriter& out, const World::Impl& w, const ShapeData& s) {
     writeFields(out, s);
     out.u32(static_cast<uint32_t>(s.proxies.size()));
     for (int proxy : s.proxies) {
-        const AABB fat = w.collision.fatAABB(proxy);
+        const AABB fat = w.broadphase.collision.fatAABB(proxy);
         out.vec2(fat.lower);
         out.vec2(fat.upper);
     }
@@ -298,7 +298,7 @@ struct PerSlot {
 // differ from a rebuilt broadphase's, which changes nothing: pairs are made in child-key order.
 bool broadphaseMatches(const World::Impl& old, const World::Impl& w, const PerSlot<AABB>& saved,
                        const std::vector<collide::ChildKey>& moved) {
-    if (old.shapes.capacity() != w.shapes.capacity() || old.movedProxies.size() != moved.size()) return false;
+    if (old.shapes.capacity() != w.shapes.capacity() || old.broadphase.movedProxies.size() != moved.size()) return false;
     for (int i = 0; i < w.shapes.capacity(); ++i) {
         const ShapeData& was = old.shapes[i];
         const ShapeData& is = w.shapes[i];
@@ -307,10 +307,10 @@ bool broadphaseMatches(const World::Impl& old, const World::Impl& w, const PerSl
         if (!(was.geometry == is.geometry) || was.proxies.size() != saved[i].size()) return false;
         const bool isStatic = w.bodies[is.body].type == BodyType::Static;
         for (int child = 0; child < static_cast<int>(was.proxies.size()); ++child)
-            if (!old.collision.proxyIs(was.proxies[child], saved[i][static_cast<size_t>(child)], {i, child}, isStatic)) return false;
+            if (!old.broadphase.collision.proxyIs(was.proxies[child], saved[i][static_cast<size_t>(child)], {i, child}, isStatic)) return false;
     }
     for (size_t k = 0; k < moved.size(); ++k)
-        if (old.movedProxies[k] != old.shapes[moved[k].shape].proxies[moved[k].child]) return false;
+        if (old.broadphase.movedProxies[k] != old.shapes[moved[k].shape].proxies[moved[k].child]) return false;
     return true;
 }
 
@@ -344,7 +344,7 @@ std::vector<Event> readPending(ByteReader& in) {
 }  // namespace
 
 std::vector<uint8_t> World::snapshot() const {
-    impl_->checkUnlocked("snapshot");
+    checkUnlocked(impl_->locked, "snapshot");
     return writeSnapshot(*impl_, false);
 }
 
@@ -380,9 +380,9 @@ std::vector<uint8_t> writeSnapshot(const World::Impl& w, bool futureOnly) {
     writeFreeList(out, w.contactCache.contacts.freeList());
     writeJoints(out, w);
 
-    out.u32(static_cast<uint32_t>(w.movedProxies.size()));
-    for (int proxy : w.movedProxies) {
-        const collide::ChildKey key = w.collision.proxyKey(proxy);
+    out.u32(static_cast<uint32_t>(w.broadphase.movedProxies.size()));
+    for (int proxy : w.broadphase.movedProxies) {
+        const collide::ChildKey key = w.broadphase.collision.proxyKey(proxy);
         out.i32(key.shape);
         out.i32(key.child);
     }
@@ -393,7 +393,7 @@ std::vector<uint8_t> writeSnapshot(const World::Impl& w, bool futureOnly) {
 }
 
 void World::restore(std::span<const uint8_t> bytes) {
-    impl_->checkUnlocked("restore");
+    checkUnlocked(impl_->locked, "restore");
     ByteReader in(bytes);
     for (uint8_t m : magic)
         if (in.u8() != m) in.fail("not a perpdot snapshot (bad magic)");
@@ -515,8 +515,8 @@ void World::restore(std::span<const uint8_t> bytes) {
         if (!shapeAlive[i]) continue;
         ShapeData& s = w.shapes[i];
         // A shape out of the broadphase (World::setEnabled) has no proxies, one in it one per child.
-        const collide::CollisionSystem& geometry = keepBroadphase ? impl_->collision : w.collision;
-        if (!keepBroadphase) std::visit([&](const auto& g) { w.collision.setGeometry(i, g); }, s.geometry);
+        const collide::CollisionSystem& geometry = keepBroadphase ? impl_->broadphase.collision : w.broadphase.collision;
+        if (!keepBroadphase) std::visit([&](const auto& g) { w.broadphase.collision.setGeometry(i, g); }, s.geometry);
         const bool inBroadphase = s.enabled && w.bodies[s.body].enabled;
         if ((inBroadphase ? geometry.childCount(i) : 0) != static_cast<int>(savedProxies[i].size()))
             in.fail("proxy count does not match the shape");
@@ -525,15 +525,15 @@ void World::restore(std::span<const uint8_t> bytes) {
             continue;
         }
         for (int child = 0; child < static_cast<int>(savedProxies[i].size()); ++child)
-            s.proxies.push_back(w.collision.restoreProxy(savedProxies[i][static_cast<size_t>(child)], {i, child},
+            s.proxies.push_back(w.broadphase.collision.restoreProxy(savedProxies[i][static_cast<size_t>(child)], {i, child},
                                                          w.bodies[s.body].type == BodyType::Static));
     }
-    for (const collide::ChildKey& key : moved) w.movedProxies.push_back(w.shapes[key.shape].proxies[key.child]);
+    for (const collide::ChildKey& key : moved) w.broadphase.movedProxies.push_back(w.shapes[key.shape].proxies[key.child]);
     if (!keepBroadphase) {
-        std::unordered_set<int> movedSet(w.movedProxies.begin(), w.movedProxies.end());
+        std::unordered_set<int> movedSet(w.broadphase.movedProxies.begin(), w.broadphase.movedProxies.end());
         for (const ShapeData& s : w.shapes.slots())
             for (int proxy : s.proxies)
-                if (!movedSet.contains(proxy)) w.collision.clearMoved(proxy);
+                if (!movedSet.contains(proxy)) w.broadphase.collision.clearMoved(proxy);
     }
     w.contactCache.pairs.reserve(static_cast<size_t>(contactCount));
     for (int i = 0; i < contactCount; ++i) {
@@ -546,10 +546,10 @@ void World::restore(std::span<const uint8_t> bytes) {
     }
 
     if (keepBroadphase) {
-        fresh->collision = std::move(impl_->collision);
+        fresh->broadphase.collision = std::move(impl_->broadphase.collision);
         // Its moved proxies are looked for as new ones (restoreProxy's): the boxes they moved from
         // are this world's, not the snapshot's.
-        for (int proxy : fresh->movedProxies) fresh->collision.requery(proxy);
+        for (int proxy : fresh->broadphase.movedProxies) fresh->broadphase.collision.requery(proxy);
     }
     fresh->preSolve = std::move(impl_->preSolve);  // settings of this World, not of the state
     fresh->jointDestroyed = std::move(impl_->jointDestroyed);
@@ -568,8 +568,8 @@ void World::restore(std::span<const uint8_t> bytes) {
     // The step's working arrays hold nothing between steps but their capacity: keeping this
     // world's, a rollback's next step reallocates nothing.
     fresh->scratch = std::move(impl_->scratch);
-    fresh->boxRooms = std::move(impl_->boxRooms);  // its memory; no body's boxes are measured yet
-    fresh->boxRooms.assign(fresh->boxRooms.size(), BoxRoom{});
+    fresh->broadphase.boxRooms = std::move(impl_->broadphase.boxRooms);  // its memory; no body's boxes are measured yet
+    fresh->broadphase.boxRooms.assign(fresh->broadphase.boxRooms.size(), BoxRoom{});
     impl_->events.assignKeepingCapacity(fresh->events);
     fresh->events = std::move(impl_->events);
     fresh->contactCache.newPairs = std::move(impl_->contactCache.newPairs);
@@ -583,7 +583,7 @@ void World::restore(std::span<const uint8_t> bytes) {
     fresh->contactCache.apart = std::move(impl_->contactCache.apart);  // (updateContacts clears it)
     // Moved proxies are state, but the frames re-simulated after a rollback move as many as this
     // world's did: room for them.
-    fresh->movedProxies.reserve(impl_->movedProxies.capacity());
+    fresh->broadphase.movedProxies.reserve(impl_->broadphase.movedProxies.capacity());
     fresh->spare = std::move(impl_);
     impl_ = std::move(fresh);
 }

@@ -83,12 +83,12 @@ size_t equalRunEnd(std::span<const uint8_t> full, std::span<const uint8_t> basel
 }  // namespace
 
 std::vector<uint8_t> World::baselineSnapshot() const {
-    impl_->checkUnlocked("baselineSnapshot");
+    checkUnlocked(impl_->locked, "baselineSnapshot");
     return writeSnapshot(*impl_, true);
 }
 
 std::vector<uint8_t> World::compactSnapshot(std::span<const uint8_t> baseline) const {
-    impl_->checkUnlocked("compactSnapshot");
+    checkUnlocked(impl_->locked, "compactSnapshot");
     const std::vector<uint8_t> full = writeSnapshot(*impl_, true);
     ByteWriter out;
     for (uint8_t m : compactMagic) out.u8(m);
@@ -111,7 +111,7 @@ std::vector<uint8_t> World::compactSnapshot(std::span<const uint8_t> baseline) c
 }
 
 void World::restoreCompact(std::span<const uint8_t> baseline, std::span<const uint8_t> compact) {
-    impl_->checkUnlocked("restoreCompact");
+    checkUnlocked(impl_->locked, "restoreCompact");
     ByteReader in(compact);
     for (uint8_t m : compactMagic)
         if (in.u8() != m) in.fail("not a perpdot compact snapshot (bad magic)");

@@ -79,7 +79,7 @@ SensorEvents World::sensorEvents() const { return {impl_->events.sensorBegin, im
 JointEvents World::jointEvents() const { return {impl_->events.jointBreak}; }
 
 void World::setPreSolve(PreSolveFn callback) {
-    impl_->checkUnlocked("setPreSolve");
+    checkUnlocked(impl_->locked, "setPreSolve");
     impl_->preSolve = std::move(callback);
 }
 

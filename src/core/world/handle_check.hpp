@@ -52,4 +52,15 @@ const T& checkedItem(const Pool<T>& pool, Id<Tag> id, const WorldIdentity& world
     throw Error(std::string("World::") + call + ": " + problem);
 }
 
+// The handle of `pool`'s live item at `index`, as the World of identity `world` issues it.
+template <class Handle, class T>
+Handle handleAt(const Pool<T>& pool, int index, const WorldIdentity& world) {
+    return {index, pool[index].generation, world.issued};
+}
+
+// World's calls that change it throw while it steps (its callbacks run inside step()).
+inline void checkUnlocked(bool locked, const char* what) {
+    if (locked) throw Error(std::string(what) + ": the world cannot be changed during step()");
+}
+
 }  // namespace perpdot

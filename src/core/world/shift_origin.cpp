@@ -8,7 +8,7 @@ namespace perpdot {
 
 void World::shiftOrigin(Vec2 newOrigin) {
     Impl& w = *impl_;
-    w.checkUnlocked("World::shiftOrigin");
+    checkUnlocked(w.locked, "World::shiftOrigin");
     if (!isFinite(newOrigin)) throw Error("World::shiftOrigin: the new origin must be finite");
     w.bodies.forEachLive([&](int, Body& b) {
         b.xf.p -= newOrigin;
@@ -21,8 +21,8 @@ void World::shiftOrigin(Vec2 newOrigin) {
     store.joints.forEachLive([&](int, Joint& j) {
         if (j.type == JointType::Pulley) shiftPulleyGround(j, newOrigin);
     });
-    w.collision.shiftOrigin(newOrigin);
-    w.boxRooms.assign(w.boxRooms.size(), BoxRoom{});  // measured about the old origin
+    w.broadphase.collision.shiftOrigin(newOrigin);
+    w.broadphase.boxRooms.assign(w.broadphase.boxRooms.size(), BoxRoom{});  // measured about the old origin
 }
 
 }  // namespace perpdot

@@ -11,13 +11,13 @@ World& World::operator=(World&&) noexcept = default;
 const WorldDef& World::settings() const { return impl_->def; }
 
 void World::setGravity(Vec2 gravity) {
-    impl_->checkUnlocked("setGravity");
+    checkUnlocked(impl_->locked, "setGravity");
     if (!isFinite(gravity)) throw Error("setGravity: gravity must be finite");
     impl_->def.gravity = gravity;
 }
 
 void World::setSubsteps(int substeps) {
-    impl_->checkUnlocked("setSubsteps");
+    checkUnlocked(impl_->locked, "setSubsteps");
     if (substeps < 1 || substeps > 64) throw Error("setSubsteps: substeps must be 1..64");
     impl_->def.substeps = substeps;
 }

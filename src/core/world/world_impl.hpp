@@ -11,7 +11,7 @@
 
 #include "collide/collision.hpp"
 #include "core/bodies/body_store.hpp"
-#include "core/shapes/box_room.hpp"
+#include "core/shapes/broadphase.hpp"
 #include "core/contacts/contact_cache.hpp"
 #include "core/world/event_buffers.hpp"
 #include "core/world/handle_check.hpp"
@@ -33,9 +33,7 @@ struct World::Impl {
     Pool<Body> bodies;
     ShapeStore shapes;
     ContactCache contactCache;
-    std::vector<BoxRoom> boxRooms;  // by body index: where its boxes were last measured (refit_ahead.cpp)
-    std::vector<int> movedProxies;  // proxies that left their fat AABB (or are new): updatePairs looks for their pairs
-    collide::CollisionSystem collision;
+    Broadphase broadphase;
     JointStorePtr joints;
     StepScratch scratch;
     Workers workers;  // the threads of the step's parallel stages
@@ -57,32 +55,20 @@ struct World::Impl {
     const Body& body(BodyId id, const char* call = __builtin_FUNCTION()) const;
     ShapeData& shape(ShapeId id, const char* call = __builtin_FUNCTION());
     const ShapeData& shape(ShapeId id, const char* call = __builtin_FUNCTION()) const;
-    void checkUnlocked(const char* what) const;
 
-    BodyId bodyId(int index) const { return {index, bodies[index].generation, identity.issued}; }
-    ShapeId shapeId(int index) const { return {index, shapes[index].generation, identity.issued}; }
+    BodyId bodyId(int index) const { return handleAt<BodyId>(bodies, index, identity); }
+    ShapeId shapeId(int index) const { return handleAt<ShapeId>(shapes, index, identity); }
 
     // Bodies (body.cpp)
     void updateMass(int body);
-    void wake(int body);  // wakes the body and the island it slept with
     // A body whose motion went non-finite, frozen where it is instead of spreading NaN: stopped,
     // asleep until something wakes it, and counted in stats().frozenBodies.
     void freeze(int body);
 
-    // Shapes and broadphase (shape.cpp)
+    // Shapes (shape.cpp)
     int addShape(BodyId body, const ShapeDef& def);
-    void createProxies(int shape);
-    void destroyProxies(int shape);
-    // Re-fit every proxy of the body to transform xf (as b2DynamicTree::MoveProxy decides); its
-    // box room is forgotten. Proxies that left their fat AABB are queried for pairs next step.
-    void synchronizeProxies(int body, const Transform& xf, Vec2 displacement);
-    // Re-fit one proxy to `aabb` if it left its fat AABB (collision.moveProxy), and queue it for
-    // updatePairs once.
-    void refitProxy(int proxy, const AABB& aabb, Vec2 displacement);
-    // Moves an escaped proxy's leaf in place to `fat` (collision.inPlaceFat's), queued as refitProxy does.
-    void moveInPlace(int proxy, const AABB& fat);
-    // Its shapes, proxies or centre of mass changed: its box room (box_room.hpp) is not known.
-    void forgetBoxRoom(int body);
+
+    // Events (events.cpp)
     void reportTouch(const Contact& c, bool begin);  // begin/end event for a contact or sensor
     ContactData contactData(const Contact& c) const;
 };
