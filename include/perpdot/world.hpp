@@ -408,6 +408,9 @@ public:
     void restoreCompact(std::span<const uint8_t> baseline, std::span<const uint8_t> compact);
 
     WorldStats stats() const;  ///< Pool sizes and health counters.
+    /// Inside step(), that is from one of its callbacks (b2World::IsLocked): the calls that
+    /// change the world throw Error until step() returns.
+    bool isLocked() const;
 
     // --- settings ---
     const WorldDef& settings() const;  ///< The current settings.

@@ -1,6 +1,6 @@
 // The World's joint calls at run time: limits, motors, springs, lengths and force bounds written
 // into the joint's type data (which snapshots carry: they survive restore bit for bit), the joint
-// coordinates read from the bodies' motion, user data, and the goodbye callback of destroyBody.
+// coordinates read from the bodies' motion, and user data.
 #include <cmath>
 #include <string>
 
@@ -11,7 +11,8 @@
 #include "core/joints/joint_revolute.hpp"
 #include "core/joints/joint_weld.hpp"
 #include "core/joints/joint_wheel.hpp"
-#include "core/world/world_impl.hpp"
+#include "core/bodies/body_store.hpp"
+#include "core/world/handle_check.hpp"
 
 namespace perpdot {
 
@@ -27,9 +28,10 @@ void requireAtLeastZero(float value, const char* call, const char* what) {
 }
 
 // The live joint of `id` for a setter: the world must not be stepping; its bodies wake.
-Joint& jointToChange(World::Impl& w, JointId id, const char* call) {
+Joint& jointToChange(World::Impl& world, JointId id, const char* call) {
+    const JointWorld w = jointWorld(world);
     checkUnlocked(w.locked, call);
-    Joint& j = checkedJoint(w, id);
+    Joint& j = checkedJoint(world, id);
     wakeIsland(w.bodies, j.bodyA);
     wakeIsland(w.bodies, j.bodyB);
     return j;
@@ -116,7 +118,7 @@ T* require(T* field, const char* call, const char* types) {
 struct AxisFrame {
     Vec2 axis, pA, pB;
 };
-AxisFrame axisFrame(const World::Impl& w, const Joint& j, const char* call) {
+AxisFrame axisFrame(const JointWorld& w, const Joint& j, const char* call) {
     Vec2 localAxis;
     if (j.type == JointType::Prismatic) localAxis = j.data.as<PrismaticJoint>().localAxisA;
     else if (j.type == JointType::Wheel) localAxis = j.data.as<WheelJoint>().localAxisA;
@@ -185,13 +187,13 @@ float World::maxMotorForce(JointId id) const { return *require(motorOf(joint(*im
 float World::motorTorque(JointId id) const {
     Joint& j = joint(*impl_, id);
     require(motorOf(j).maxTorque, "motorTorque", "revolute or wheel");
-    return impl_->joints->invHs * *motorOf(j).impulse;
+    return jointWorld(*impl_).joints.invHs * *motorOf(j).impulse;
 }
 
 float World::motorForce(JointId id) const {
     Joint& j = joint(*impl_, id);
     require(motorOf(j).maxForce, "motorForce", "prismatic");
-    return impl_->joints->invHs * *motorOf(j).impulse;
+    return jointWorld(*impl_).joints.invHs * *motorOf(j).impulse;
 }
 
 // --- springs ---
@@ -274,36 +276,37 @@ float World::jointAngle(JointId id) const {
     const Joint& j = joint(*impl_, id);
     if (j.type != JointType::Revolute && j.type != JointType::Weld && j.type != JointType::Prismatic)
         wrongType("jointAngle", "revolute, weld or prismatic");
-    return impl_->bodies[j.bodyB].angle - impl_->bodies[j.bodyA].angle - j.referenceAngle;
+    const Pool<Body>& bodies = jointWorld(*impl_).bodies;
+    return bodies[j.bodyB].angle - bodies[j.bodyA].angle - j.referenceAngle;
 }
 
 float World::jointAngularSpeed(JointId id) const {
     const Joint& j = joint(*impl_, id);
     if (j.type != JointType::Revolute && j.type != JointType::Weld && j.type != JointType::Prismatic && j.type != JointType::Wheel)
         wrongType("jointAngularSpeed", "revolute, weld, prismatic or wheel");
-    return impl_->bodies[j.bodyB].w - impl_->bodies[j.bodyA].w;
+    const Pool<Body>& bodies = jointWorld(*impl_).bodies;
+    return bodies[j.bodyB].w - bodies[j.bodyA].w;
 }
 
 float World::jointTranslation(JointId id) const {
-    const AxisFrame f = axisFrame(*impl_, joint(*impl_, id), "jointTranslation");
+    const AxisFrame f = axisFrame(jointWorld(*impl_), joint(*impl_, id), "jointTranslation");
     return dot(f.pB - f.pA, f.axis);
 }
 
 // d/dt [(pB − pA)·axis] = (vB(pB) − vA(pA))·axis + (pB − pA)·(ωA perp(axis)).
 float World::jointLinearSpeed(JointId id) const {
     const Joint& j = joint(*impl_, id);
-    const AxisFrame f = axisFrame(*impl_, j, "jointLinearSpeed");
-    const Body& a = impl_->bodies[j.bodyA];
-    const Body& b = impl_->bodies[j.bodyB];
+    const JointWorld w = jointWorld(*impl_);
+    const AxisFrame f = axisFrame(w, j, "jointLinearSpeed");
+    const Body& a = w.bodies[j.bodyA];
+    const Body& b = w.bodies[j.bodyB];
     return dot(velocityAt(b, f.pB) - velocityAt(a, f.pA), f.axis) + dot(f.pB - f.pA, a.w * perp(f.axis));
 }
 
-// --- user data and the goodbye callback ---
+// --- user data ---
 
 void* World::userData(JointId id) const { return joint(*impl_, id).userData; }
 
 void World::setUserData(JointId id, void* userData) { checkedJoint(*impl_, id).userData = userData; }
-
-void World::setJointDestroyedCallback(JointDestroyedFn callback) { impl_->jointDestroyed = std::move(callback); }
 
 }  // namespace perpdot

@@ -204,6 +204,16 @@ const Body& bodyAt(const World::Impl& world, int index);
 BodyId bodyIdAt(const World::Impl& world, int index);
 void requireFinite(bool ok, const char* what);  // Error "<what> must be finite" unless ok
 
+// What the World's joint calls at run time (joint_settings.cpp) reach besides the joint itself
+// (checkedJoint): the joint store, the bodies (their motion gives the joint coordinates; a changed
+// joint wakes them) and whether the world is stepping.
+struct JointWorld {
+    JointStore& joints;
+    Pool<Body>& bodies;
+    bool locked;
+};
+JointWorld jointWorld(World::Impl& world);  // joint.cpp
+
 // A joint type's solver stages. prepare runs after the common frame (anchors, masses, deltaCenter,
 // deltaAngle) is set, with the two bodies as the step starts.
 // lanes: the stages of the type's blocks of four (joint_solver_wide.hpp), null for a type solved

@@ -14,7 +14,7 @@
 #include <cmath>
 
 #include "collide/time_of_impact.hpp"
-#include "core/world/world_impl.hpp"
+#include "core/queries/query_world.hpp"
 #include "perpdot/portable_math.hpp"
 
 namespace perpdot {
@@ -44,14 +44,14 @@ struct Gap {
 
 class MoverSolver {
 public:
-    MoverSolver(World::Impl& w, const MoverDef& def, const MoverState& s)
-        : w_(w), def_(def), body_(s.body.index), shape_(s.shape.index), cosMaxSlope_(sinCos(def.maxSlope).cos) {}
+    MoverSolver(World& world, const QueryWorld& w, const MoverDef& def, const MoverState& s)
+        : w_(w), world_(world), def_(def), body_(s.body.index), shape_(s.shape.index), cosMaxSlope_(sinCos(def.maxSlope).cos) {}
 
     bool walkable(Vec2 normal) const { return normal.y >= cosMaxSlope_; }
 
     Gap gap(Vec2 center, collide::ChildKey other) const {
         const collide::CoreDistance d =
-            w_.broadphase.collision.coreDistance({shape_, 0}, Transform{center, Rot{}}, other, w_.bodies[w_.shapes[other.shape].body].xf);
+            w_.collision.coreDistance({shape_, 0}, Transform{center, Rot{}}, other, w_.bodies[w_.shapes[other.shape].body].xf);
         if (d.distance <= 0.0f) return {};
         const Vec2 n = (1.0f / d.distance) * (d.pointA - d.pointB);
         return {true, d.distance - d.radiusA - d.radiusB, n, d.pointB + d.radiusB * n};
@@ -60,8 +60,8 @@ public:
     // Calls visit(key) for every solid child near `box` that the capsule collides with.
     template <class Visit>
     void forEachNear(const AABB& box, Visit&& visit) const {
-        w_.broadphase.collision.query(box, [&](int proxy) {
-            const collide::ChildKey key = w_.broadphase.collision.proxyKey(proxy);
+        w_.collision.query(box, [&](int proxy) {
+            const collide::ChildKey key = w_.collision.proxyKey(proxy);
             const ShapeData& s = w_.shapes[key.shape];
             if (s.body != body_ && !s.sensor && shouldCollide(def_.filter, s.filter)) visit(key);
             return true;
@@ -136,10 +136,7 @@ public:
         if (closing <= 0.0f) return;
         const float impulse = std::min(b.mass * closing, def_.maxPushForce * dt);
         const Vec2 j = -impulse * hit.normal;
-        Body& body = w_.bodies[index];
-        wakeIsland(w_.bodies, index);
-        body.v += b.invMass * j;
-        body.w += b.invInertia * perpDot(r, j);
+        world_.applyLinearImpulse(w_.bodyId(index), j, hit.point);  // v += j/m, ω += perpDot(r, j)/I
     }
 
     // Whether a ray from the bottom of the feet straight down meets walkable ground within `reach`:
@@ -148,12 +145,12 @@ public:
         const Vec2 p1 = center - Vec2{0.0f, def_.halfHeight + def_.radius - def_.skin};
         const Vec2 p2 = p1 - Vec2{0.0f, reach + 2.0f * def_.skin};
         bool found = false;
-        w_.broadphase.collision.rayCastTree(p1, p2, [&](int proxy, float maxFraction) {
-            const collide::ChildKey key = w_.broadphase.collision.proxyKey(proxy);
+        w_.collision.rayCastTree(p1, p2, [&](int proxy, float maxFraction) {
+            const collide::ChildKey key = w_.collision.proxyKey(proxy);
             const ShapeData& s = w_.shapes[key.shape];
             if (s.body == body_ || s.sensor || !shouldCollide(def_.filter, s.filter)) return -1.0f;
             collide::RayCastResult result;
-            if (!w_.broadphase.collision.rayCast(key, w_.bodies[s.body].xf, p1, p2, maxFraction, result)) return -1.0f;
+            if (!w_.collision.rayCast(key, w_.bodies[s.body].xf, p1, p2, maxFraction, result)) return -1.0f;
             found = walkable(result.normal);
             return result.fraction;
         });
@@ -247,7 +244,8 @@ public:
     }
 
 private:
-    World::Impl& w_;
+    const QueryWorld w_;
+    World& world_;  // pushes bodies through its calls
     const MoverDef& def_;
     int body_, shape_;
     float cosMaxSlope_;
@@ -290,13 +288,13 @@ MoverState World::createMover(const MoverDef& def, Vec2 position) {
 }
 
 void World::moveMover(const MoverDef& def, MoverState& s, const MoverInput& input, float dt) {
-    Impl& w = *impl_;
+    const QueryWorld w = queryWorld(*impl_);
     checkUnlocked(w.locked, "moveMover");
     validate(def);
     if (!(std::isfinite(dt) && dt > 0.0f)) throw Error("moveMover: dt must be finite and > 0");
     if (!std::isfinite(input.walkSpeed)) throw Error("moveMover: walkSpeed must be finite");
     if (shapeBody(s.shape) != s.body) throw Error("moveMover: state's shape is not on its body");
-    const MoverSolver solver(w, def, s);
+    const MoverSolver solver(*this, w, def, s);
     const Vec2 start = s.position;
     const bool wasGrounded = s.grounded;
 

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "core/world/world_impl.hpp"
+#include "core/queries/query_world.hpp"
 #include "perpdot/error.hpp"
 
 namespace perpdot {
@@ -19,15 +19,15 @@ struct Reached {
 };
 
 // Whether a static shape lies on the segment from the centre to `point` (before reaching it).
-bool hiddenByStatic(const World::Impl& w, Vec2 centre, Vec2 point) {
+bool hiddenByStatic(const QueryWorld& w, Vec2 centre, Vec2 point) {
     if (!(lengthSquared(point - centre) > 0.0f)) return false;
     bool hidden = false;
-    w.broadphase.collision.rayCastTree(centre, point, [&](int proxy, float maxFraction) {
-        const collide::ChildKey key = w.broadphase.collision.proxyKey(proxy);
+    w.collision.rayCastTree(centre, point, [&](int proxy, float maxFraction) {
+        const collide::ChildKey key = w.collision.proxyKey(proxy);
         const ShapeData& s = w.shapes[key.shape];
         if (s.sensor || w.bodies[s.body].type != BodyType::Static) return -1.0f;
         collide::RayCastResult result;
-        if (w.broadphase.collision.rayCast(key, w.bodies[s.body].xf, centre, point, maxFraction, result) && result.fraction < 1.0f) {
+        if (w.collision.rayCast(key, w.bodies[s.body].xf, centre, point, maxFraction, result) && result.fraction < 1.0f) {
             hidden = true;
             return 0.0f;  // one is enough
         }
@@ -39,7 +39,7 @@ bool hiddenByStatic(const World::Impl& w, Vec2 centre, Vec2 point) {
 }  // namespace
 
 int World::explode(const ExplosionDef& def) {
-    Impl& w = *impl_;
+    const QueryWorld w = queryWorld(*impl_);
     checkUnlocked(w.locked, "explode");
     if (!isFinite(def.position)) throw Error("ExplosionDef.position must be finite");
     if (!(def.radius > 0.0f) || !std::isfinite(def.radius)) throw Error("ExplosionDef.radius must be > 0 and finite");
@@ -48,12 +48,12 @@ int World::explode(const ExplosionDef& def) {
     // Nearest surface point of every dynamic shape within the radius (of its nearest child).
     std::vector<Reached> reached;
     const Vec2 extent{def.radius, def.radius};
-    w.broadphase.collision.query({def.position - extent, def.position + extent}, [&](int proxy) {
-        const collide::ChildKey key = w.broadphase.collision.proxyKey(proxy);
+    w.collision.query({def.position - extent, def.position + extent}, [&](int proxy) {
+        const collide::ChildKey key = w.collision.proxyKey(proxy);
         const ShapeData& s = w.shapes[key.shape];
         const Body& b = w.bodies[s.body];
         if (b.type != BodyType::Dynamic || s.sensor || !shouldCollide(def.filter, s.filter)) return true;
-        const auto nearest = w.broadphase.collision.closestSurfacePoint(key, b.xf, def.position);
+        const auto nearest = w.collision.closestSurfacePoint(key, b.xf, def.position);
         if (!(nearest.distance < def.radius)) return true;
         const auto same = std::find_if(reached.begin(), reached.end(), [&](const Reached& r) { return r.shape == key.shape; });
         if (same == reached.end()) reached.push_back({key.shape, nearest});

@@ -8,7 +8,7 @@
 #include <string>
 #include <variant>
 
-#include "core/world/world_impl.hpp"
+#include "core/queries/query_world.hpp"
 
 namespace perpdot {
 
@@ -16,9 +16,9 @@ namespace {
 
 // Calls visit(key) for each shape child whose fat AABB overlaps `box` and whose filter passes.
 template <class Visit>
-void forEachChild(const World::Impl& w, const AABB& box, const Filter& filter, Visit&& visit) {
-    w.broadphase.collision.query(box, [&](int proxy) {
-        const collide::ChildKey key = w.broadphase.collision.proxyKey(proxy);
+void forEachChild(const QueryWorld& w, const AABB& box, const Filter& filter, Visit&& visit) {
+    w.collision.query(box, [&](int proxy) {
+        const collide::ChildKey key = w.collision.proxyKey(proxy);
         if (shouldCollide(filter, w.shapes[key.shape].filter)) visit(key);
         return true;
     });
@@ -57,7 +57,7 @@ AABB boundsOf(const Segment& query, const Transform& xf) {
 }
 
 template <class QueryShape>
-std::vector<ShapeId> overlapQuery(const World::Impl& w, const QueryShape& query, const Transform& xf, const Filter& filter) {
+std::vector<ShapeId> overlapQuery(const QueryWorld& w, const QueryShape& query, const Transform& xf, const Filter& filter) {
     // A hand-filled query shape gets a created shape's checks (a polygon's count indexes a fixed
     // array of 8 in the adapter); the error names the call.
     try {
@@ -69,7 +69,7 @@ std::vector<ShapeId> overlapQuery(const World::Impl& w, const QueryShape& query,
     std::vector<ShapeId> out;
     forEachChild(w, boundsOf(query, xf), filter, [&](collide::ChildKey key) {
         const Transform& shapeXf = w.bodies[w.shapes[key.shape].body].xf;
-        if (w.broadphase.collision.testOverlap(key, shapeXf, query, xf)) addUnique(out, w.shapeId(key.shape));
+        if (w.collision.testOverlap(key, shapeXf, query, xf)) addUnique(out, w.shapeId(key.shape));
     });
     return out;
 }
@@ -77,7 +77,7 @@ std::vector<ShapeId> overlapQuery(const World::Impl& w, const QueryShape& query,
 // Shape casts: every child the swept shape's path box reaches is cast against (b2ShapeCast);
 // onHit(hit) per hit.
 template <class OnHit>
-void shapeCast(const World::Impl& w, const CastShape& shape, const Transform& xf, Vec2 translation, const Filter& filter,
+void shapeCast(const QueryWorld& w, const CastShape& shape, const Transform& xf, Vec2 translation, const Filter& filter,
                OnHit&& onHit) {
     if (!isFinite(xf.p) || !std::isfinite(xf.q.c) || !std::isfinite(xf.q.s) || !isFinite(translation))
         throw Error("castShape: transform and translation must be finite");
@@ -89,7 +89,7 @@ void shapeCast(const World::Impl& w, const CastShape& shape, const Transform& xf
                             {std::max(start.upper.x, start.upper.x + translation.x), std::max(start.upper.y, start.upper.y + translation.y)}};
             forEachChild(w, path, filter, [&](collide::ChildKey key) {
                 collide::ShapeCastResult result;
-                if (w.broadphase.collision.shapeCast(key, w.bodies[w.shapes[key.shape].body].xf, query, xf, translation, result))
+                if (w.collision.shapeCast(key, w.bodies[w.shapes[key.shape].body].xf, query, xf, translation, result))
                     onHit(ShapeCastHit{w.shapeId(key.shape), result.point, result.normal, result.fraction});
             });
         },
@@ -98,15 +98,15 @@ void shapeCast(const World::Impl& w, const CastShape& shape, const Transform& xf
 
 // Ray casts: visit(hit) per child hit, returning the new max fraction (closest: the hit's own).
 template <class OnHit>
-void rayCast(const World::Impl& w, Vec2 origin, Vec2 translation, const Filter& filter, OnHit&& onHit) {
+void rayCast(const QueryWorld& w, Vec2 origin, Vec2 translation, const Filter& filter, OnHit&& onHit) {
     if (!isFinite(origin) || !isFinite(translation)) throw Error("castRay: origin and translation must be finite");
     const Vec2 p2 = origin + translation;
-    w.broadphase.collision.rayCastTree(origin, p2, [&](int proxy, float maxFraction) {
-        const collide::ChildKey key = w.broadphase.collision.proxyKey(proxy);
+    w.collision.rayCastTree(origin, p2, [&](int proxy, float maxFraction) {
+        const collide::ChildKey key = w.collision.proxyKey(proxy);
         const ShapeData& s = w.shapes[key.shape];
         if (!shouldCollide(filter, s.filter)) return -1.0f;
         collide::RayCastResult result;
-        if (!w.broadphase.collision.rayCast(key, w.bodies[s.body].xf, origin, p2, maxFraction, result)) return -1.0f;
+        if (!w.collision.rayCast(key, w.bodies[s.body].xf, origin, p2, maxFraction, result)) return -1.0f;
         return onHit(RayHit{w.shapeId(key.shape), origin + result.fraction * translation, result.normal, result.fraction});
     });
 }
@@ -115,7 +115,7 @@ void rayCast(const World::Impl& w, Vec2 origin, Vec2 translation, const Filter& 
 
 std::optional<RayHit> World::castRayClosest(Vec2 origin, Vec2 translation, const Filter& filter) const {
     std::optional<RayHit> closest;
-    rayCast(*impl_, origin, translation, filter, [&](const RayHit& hit) {
+    rayCast(queryWorld(*impl_), origin, translation, filter, [&](const RayHit& hit) {
         closest = hit;
         return hit.fraction;  // later hits must be nearer
     });
@@ -124,7 +124,7 @@ std::optional<RayHit> World::castRayClosest(Vec2 origin, Vec2 translation, const
 
 std::vector<RayHit> World::castRay(Vec2 origin, Vec2 translation, const Filter& filter) const {
     std::vector<RayHit> hits;
-    rayCast(*impl_, origin, translation, filter, [&](const RayHit& hit) {
+    rayCast(queryWorld(*impl_), origin, translation, filter, [&](const RayHit& hit) {
         hits.push_back(hit);
         return -1.0f;  // keep the whole ray
     });
@@ -135,7 +135,7 @@ std::vector<RayHit> World::castRay(Vec2 origin, Vec2 translation, const Filter& 
 std::optional<ShapeCastHit> World::castShapeClosest(const CastShape& shape, const Transform& xf, Vec2 translation,
                                                     const Filter& filter) const {
     std::optional<ShapeCastHit> closest;
-    shapeCast(*impl_, shape, xf, translation, filter, [&](const ShapeCastHit& hit) {
+    shapeCast(queryWorld(*impl_), shape, xf, translation, filter, [&](const ShapeCastHit& hit) {
         if (!closest || hit.fraction < closest->fraction) closest = hit;
     });
     return closest;
@@ -144,35 +144,37 @@ std::optional<ShapeCastHit> World::castShapeClosest(const CastShape& shape, cons
 std::vector<ShapeCastHit> World::castShape(const CastShape& shape, const Transform& xf, Vec2 translation,
                                            const Filter& filter) const {
     std::vector<ShapeCastHit> hits;
-    shapeCast(*impl_, shape, xf, translation, filter, [&](const ShapeCastHit& hit) { hits.push_back(hit); });
+    shapeCast(queryWorld(*impl_), shape, xf, translation, filter, [&](const ShapeCastHit& hit) { hits.push_back(hit); });
     std::stable_sort(hits.begin(), hits.end(), [](const ShapeCastHit& a, const ShapeCastHit& b) { return a.fraction < b.fraction; });
     return hits;
 }
 
 std::vector<ShapeId> World::overlapAABB(const AABB& box, const Filter& filter) const {
     std::vector<ShapeId> out;
-    forEachChild(*impl_, box, filter, [&](collide::ChildKey key) {
-        const Transform& xf = impl_->bodies[impl_->shapes[key.shape].body].xf;
-        if (overlaps(impl_->broadphase.collision.computeAABB(key.shape, key.child, xf), box)) addUnique(out, impl_->shapeId(key.shape));
+    const QueryWorld w = queryWorld(*impl_);
+    forEachChild(w, box, filter, [&](collide::ChildKey key) {
+        const Transform& xf = w.bodies[w.shapes[key.shape].body].xf;
+        if (overlaps(w.collision.computeAABB(key.shape, key.child, xf), box)) addUnique(out, w.shapeId(key.shape));
     });
     return out;
 }
 
 std::vector<ShapeId> World::overlapPoint(Vec2 point, const Filter& filter) const {
     std::vector<ShapeId> out;
-    forEachChild(*impl_, AABB{point, point}, filter, [&](collide::ChildKey key) {
-        const Transform& xf = impl_->bodies[impl_->shapes[key.shape].body].xf;
-        if (impl_->broadphase.collision.testPoint(key.shape, xf, point)) addUnique(out, impl_->shapeId(key.shape));
+    const QueryWorld w = queryWorld(*impl_);
+    forEachChild(w, AABB{point, point}, filter, [&](collide::ChildKey key) {
+        const Transform& xf = w.bodies[w.shapes[key.shape].body].xf;
+        if (w.collision.testPoint(key.shape, xf, point)) addUnique(out, w.shapeId(key.shape));
     });
     return out;
 }
 
 std::vector<ShapeId> World::overlapShape(const Circle& shape, const Transform& xf, const Filter& filter) const {
-    return overlapQuery(*impl_, shape, xf, filter);
+    return overlapQuery(queryWorld(*impl_), shape, xf, filter);
 }
 
 std::vector<ShapeId> World::overlapShape(const Polygon& shape, const Transform& xf, const Filter& filter) const {
-    return overlapQuery(*impl_, shape, xf, filter);
+    return overlapQuery(queryWorld(*impl_), shape, xf, filter);
 }
 
 }  // namespace perpdot

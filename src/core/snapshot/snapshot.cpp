@@ -19,6 +19,7 @@
 #include "core/contacts/manifold_reuse.hpp"
 #include "core/snapshot/snapshot.hpp"
 #include "core/snapshot/snapshot_fields.hpp"
+#include "core/world/world_impl.hpp"
 
 namespace perpdot {
 
@@ -378,7 +379,7 @@ std::vector<uint8_t> writeSnapshot(const World::Impl& w, bool futureOnly) {
         if (c.alive) writeContact(out, c, futureOnly && (w.bodies[c.bodyA].awake || w.bodies[c.bodyB].awake));
     }
     writeFreeList(out, w.contactCache.contacts.freeList());
-    writeJoints(out, w);
+    writeJoints(out, *w.joints, w.bodies);
 
     out.u32(static_cast<uint32_t>(w.broadphase.movedProxies.size()));
     for (int proxy : w.broadphase.movedProxies) {
@@ -486,7 +487,7 @@ void World::restore(std::span<const uint8_t> bytes) {
     for (int i = 0; i < contactCount; ++i)
         if (contactAlive[i] && !(edgeSeen[2 * i] && edgeSeen[2 * i + 1])) in.fail("contact missing from a body's list");
     checkIslandRings(in, w);
-    readJoints(in, w);
+    readJoints(in, *w.joints, w.bodies);
 
     std::vector<collide::ChildKey> moved(in.count(8, "moved proxy"));
     for (collide::ChildKey& key : moved) {

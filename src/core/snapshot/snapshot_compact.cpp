@@ -16,6 +16,7 @@
 
 #include "core/snapshot/snapshot.hpp"
 #include "core/snapshot/snapshot_fields.hpp"
+#include "core/world/handle_check.hpp"
 
 namespace perpdot {
 
@@ -83,12 +84,12 @@ size_t equalRunEnd(std::span<const uint8_t> full, std::span<const uint8_t> basel
 }  // namespace
 
 std::vector<uint8_t> World::baselineSnapshot() const {
-    checkUnlocked(impl_->locked, "baselineSnapshot");
+    checkUnlocked(isLocked(), "baselineSnapshot");
     return writeSnapshot(*impl_, true);
 }
 
 std::vector<uint8_t> World::compactSnapshot(std::span<const uint8_t> baseline) const {
-    checkUnlocked(impl_->locked, "compactSnapshot");
+    checkUnlocked(isLocked(), "compactSnapshot");
     const std::vector<uint8_t> full = writeSnapshot(*impl_, true);
     ByteWriter out;
     for (uint8_t m : compactMagic) out.u8(m);
@@ -111,7 +112,7 @@ std::vector<uint8_t> World::compactSnapshot(std::span<const uint8_t> baseline) c
 }
 
 void World::restoreCompact(std::span<const uint8_t> baseline, std::span<const uint8_t> compact) {
-    checkUnlocked(impl_->locked, "restoreCompact");
+    checkUnlocked(isLocked(), "restoreCompact");
     ByteReader in(compact);
     for (uint8_t m : compactMagic)
         if (in.u8() != m) in.fail("not a perpdot compact snapshot (bad magic)");

@@ -11,8 +11,7 @@
 
 namespace perpdot {
 
-void writeJoints(ByteWriter& out, const World::Impl& w) {
-    const JointStore& s = *w.joints;
+void writeJoints(ByteWriter& out, const JointStore& s, const Pool<Body>& bodies) {
     out.f32(s.invHs);
     out.u32(static_cast<uint32_t>(s.joints.capacity()));
     for (const Joint& j : s.joints.slots()) {
@@ -25,18 +24,17 @@ void writeJoints(ByteWriter& out, const World::Impl& w) {
     out.u32(static_cast<uint32_t>(s.joints.freeList().size()));
     for (int i : s.joints.freeList()) out.i32(i);
     // Each body's joint list, head first (the order decides who is visited first).
-    for (int body = 0; body < w.bodies.capacity(); ++body) {
+    for (int body = 0; body < bodies.capacity(); ++body) {
         const std::vector<int> keys = s.bodyLists.keys(s.joints, body);
         out.u32(static_cast<uint32_t>(keys.size()));
         for (int e : keys) out.i32(e);
     }
 }
 
-void readJoints(ByteReader& in, World::Impl& w) {
-    JointStore& s = *w.joints;
+void readJoints(ByteReader& in, JointStore& s, const Pool<Body>& bodies) {
     s.invHs = in.f32();
     const int count = in.count(5, "joint");
-    const int bodyCount = w.bodies.capacity();
+    const int bodyCount = bodies.capacity();
     s.joints.restoreSlots(count);
     std::vector<bool> alive(count);
     for (int index = 0; index < count; ++index) {
@@ -46,7 +44,7 @@ void readJoints(ByteReader& in, World::Impl& w) {
         if (!j.alive) continue;
         readFields(in, j);
         if (j.bodyA < 0 || j.bodyA >= bodyCount || j.bodyB < 0 || j.bodyB >= bodyCount || j.bodyA == j.bodyB ||
-            !w.bodies[j.bodyA].alive || !w.bodies[j.bodyB].alive)
+            !bodies[j.bodyA].alive || !bodies[j.bodyB].alive)
             in.fail("joint " + std::to_string(index) + " needs two different live bodies");
         const JointKind* kind = kindOf(j.type);
         if (!kind) in.fail("joint type " + std::to_string(static_cast<int>(j.type)) + " is unknown");
@@ -67,7 +65,7 @@ void readJoints(ByteReader& in, World::Impl& w) {
     std::vector<bool> seen(2 * static_cast<size_t>(count), false);
     for (int body = 0; body < bodyCount; ++body) {
         const int n = in.count(4, "joint edge");
-        if (n != w.bodies[body].jointCount) in.fail("body " + std::to_string(body) + " joint count does not match its joints");
+        if (n != bodies[body].jointCount) in.fail("body " + std::to_string(body) + " joint count does not match its joints");
         std::vector<int> keys(n);
         for (int& e : keys) {
             e = in.integer(0, 2 * count - 1, "joint edge");

@@ -1,4 +1,7 @@
-// World construction, settings, and read-only views of the contact cache.
+// World construction, settings, its counts, read-only views of the contact cache, the origin
+// shift, and the views its query calls read (query_world.hpp).
+#include "core/queries/query_world.hpp"
+#include "core/world/shift_origin.hpp"
 #include "core/world/world_impl.hpp"
 
 namespace perpdot {
@@ -9,6 +12,10 @@ World::World(World&&) noexcept = default;
 World& World::operator=(World&&) noexcept = default;
 
 const WorldDef& World::settings() const { return impl_->def; }
+
+bool World::isLocked() const { return impl_->locked; }
+
+void World::setJointDestroyedCallback(JointDestroyedFn callback) { impl_->jointDestroyed = std::move(callback); }
 
 void World::setGravity(Vec2 gravity) {
     checkUnlocked(impl_->locked, "setGravity");
@@ -34,6 +41,36 @@ std::vector<ContactData> World::contacts() const {
         if (c.touching) out.push_back(impl_->contactData(c));
     });
     return out;
+}
+
+void World::shiftOrigin(Vec2 newOrigin) {
+    Impl& w = *impl_;
+    checkUnlocked(w.locked, "World::shiftOrigin");
+    if (!isFinite(newOrigin)) throw Error("World::shiftOrigin: the new origin must be finite");
+    perpdot::shiftOrigin(w.bodies, w.contactCache, *w.joints, w.broadphase, newOrigin);
+}
+
+// Live counts, pool sizes and the frozen-body counter, for soak tests and tools.
+WorldStats World::stats() const {
+    const Impl& w = *impl_;
+    WorldStats s;
+    s.bodySlots = w.bodies.capacity();
+    s.shapeSlots = w.shapes.capacity();
+    s.contactSlots = w.contactCache.contacts.capacity();
+    s.bodies = w.bodies.size();
+    s.shapes = w.shapes.size();
+    s.contacts = w.contactCache.contacts.size();
+    s.frozenBodies = w.frozenBodies;
+    return s;
+}
+
+QueryWorld queryWorld(const World::Impl& w) {
+    return {.collision = w.broadphase.collision,
+            .shapes = w.shapes,
+            .bodies = w.bodies,
+            .contactCache = w.contactCache,
+            .identity = w.identity,
+            .locked = w.locked};
 }
 
 }  // namespace perpdot
