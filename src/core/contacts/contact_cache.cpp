@@ -53,11 +53,12 @@ void takeManifold(Contact& c, const collide::Manifold& m, const Body& ba, const 
 
 // Whether two overlapping proxies may have a contact (bodies, sensors, shape types, filters,
 // joints); reads only, so the pair-finding workers ask it.
-bool pairWanted(const ContactWorld& w, int proxyA, int proxyB) {
-    const ShapeData& sa = w.shapes[w.broadphase.collision.proxyKey(proxyA).shape];
-    const ShapeData& sb = w.shapes[w.broadphase.collision.proxyKey(proxyB).shape];
+bool pairWanted(const Pool<Body>& bodies, const ShapeStore& shapes, const collide::CollisionSystem& collision,
+                const JointStore& joints, int proxyA, int proxyB) {
+    const ShapeData& sa = shapes[collision.proxyKey(proxyA).shape];
+    const ShapeData& sb = shapes[collision.proxyKey(proxyB).shape];
     if (sa.body == sb.body) return false;
-    const BodyType ta = w.bodies[sa.body].type, tb = w.bodies[sb.body].type;
+    const BodyType ta = bodies[sa.body].type, tb = bodies[sb.body].type;
     // A contact needs a dynamic body; a sensor also sees a kinematic one (a character mover
     // entering a trigger zone).
     const bool sensorSeesKinematic = (sa.sensor || sb.sensor) && (ta == BodyType::Kinematic || tb == BodyType::Kinematic);
@@ -66,7 +67,7 @@ bool pairWanted(const ContactWorld& w, int proxyA, int proxyB) {
     if (sa.sensor && sb.sensor) return false;
     if ((sa.sensor && !sb.enableSensorEvents) || (sb.sensor && !sa.enableSensorEvents)) return false;
     return collide::CollisionSystem::canCollide(sa.type, sb.type) && shouldCollide(sa.filter, sb.filter) &&
-           jointAllowsCollision(w.bodies, w.joints, sa.body, sb.body);
+           jointAllowsCollision(bodies, joints, sa.body, sb.body);
 }
 
 // A contact for a wanted pair, unless it has one.
@@ -105,20 +106,19 @@ void addPair(const ContactWorld& w, const NewPair& pair) {
 // The narrowphase of one contact, with the bodies' poses alone: whether its fat AABBs still
 // overlap (else it is to be destroyed), a sensor's overlap, or its kept manifold or a new one.
 // Events, the pre-solve callback and waking are left to updateContacts.
-Narrowphase collideContact(const ContactWorld& w, int index) {
-    Contact& c = w.contactCache.contacts[index];
-    const Body& ba = w.bodies[c.bodyA];
-    const Body& bb = w.bodies[c.bodyB];
-    const collide::CollisionSystem& collision = w.broadphase.collision;
+Narrowphase collideContact(Contact& c, const Pool<Body>& bodies, const ShapeStore& shapes, const collide::CollisionSystem& collision,
+                           float reuseDistance) {
+    const Body& ba = bodies[c.bodyA];
+    const Body& bb = bodies[c.bodyB];
     if (!overlaps(collision.fatAABB(c.proxyA), collision.fatAABB(c.proxyB))) return Narrowphase::Apart;
     if (c.sensor) return collision.testOverlap(c.a, ba.xf, c.b, bb.xf) ? Narrowphase::Overlapping : Narrowphase::Separate;
     const bool wasTouching = c.touching;
     // The shapes' reach is only used without points: a contact with points reads no shape.
     auto reach = [&] {
-        const ShapeData &sa = w.shapes[c.a.shape], &sb = w.shapes[c.b.shape];
+        const ShapeData &sa = shapes[c.a.shape], &sb = shapes[c.b.shape];
         return std::max(sa.maxExtent + length(ba.localCenter), sb.maxExtent + length(bb.localCenter));
     };
-    const ReuseLimits limits{.distance = w.def.contactReuseDistance,
+    const ReuseLimits limits{.distance = reuseDistance,
                              .reach = c.pointCount > 0 ? 0.0f : reach(),
                              .box2dMargin = collide::box2dSkin(c.typeA) + collide::box2dSkin(c.typeB),
                              .skinOffset = collide::skinOffset(c.typeA, c.skin) + collide::skinOffset(c.typeB, c.skin)};
@@ -130,14 +130,15 @@ Narrowphase collideContact(const ContactWorld& w, int index) {
 
 // Whether the one-by-one pass of updateContacts has nothing to do for a contact the workers
 // collided: no begin or end event, no pre-solve call, no sleeper to wake. Awake flags only turn
-// on in that pass, so a body awake (or static) now needs no waking there.
-bool isQuiet(const ContactWorld& w, const Contact& c, Narrowphase result) {
+// on in that pass, so a body awake (or static) now needs no waking there. `preSolve`: the world
+// has a pre-solve callback.
+bool isQuiet(const Pool<Body>& bodies, const ShapeStore& shapes, bool preSolve, const Contact& c, Narrowphase result) {
     if (result != Narrowphase::WasTouching && result != Narrowphase::WasNotTouching) return false;
     if (c.touching != (result == Narrowphase::WasTouching)) return false;
     if (!c.touching) return true;
-    if (w.preSolve && (w.shapes[c.a.shape].enablePreSolveEvents || w.shapes[c.b.shape].enablePreSolveEvents)) return false;
-    const Body& ba = w.bodies[c.bodyA];
-    const Body& bb = w.bodies[c.bodyB];
+    if (preSolve && (shapes[c.a.shape].enablePreSolveEvents || shapes[c.b.shape].enablePreSolveEvents)) return false;
+    const Body& ba = bodies[c.bodyA];
+    const Body& bb = bodies[c.bodyB];
     return (ba.awake || ba.type == BodyType::Static) && (bb.awake || bb.type == BodyType::Static);
 }
 
@@ -232,7 +233,7 @@ void updatePairs(const ContactWorld& w) {
             // a contact (two sleepers' boxes are not checked) are dropped by addPair's one lookup:
             // looking here too would miss the cache twice per new pair.
             collision.queryNewPairs(&cache.queried[static_cast<size_t>(first)], count, [&](int proxy, int other) {
-                if (!pairWanted(w, proxy, other)) return;
+                if (!pairWanted(w.bodies, w.shapes, collision, w.joints, proxy, other)) return;
                 NewPair p{collision.proxyKey(proxy), collision.proxyKey(other), proxy, other};
                 if (std::tie(p.b.shape, p.b.child) < std::tie(p.a.shape, p.a.child)) {
                     std::swap(p.a, p.b);
@@ -378,10 +379,15 @@ void updateContacts(const ContactWorld& w) {
     cache.touchingPoints.resize(static_cast<size_t>(count));  // a restored pool's free slots at its end
     cache.bodiesOf.resize(static_cast<size_t>(count));
     w.workers.parallelFor(count, 64, [&](int begin, int end, int) {
+        const Pool<Body>& bodies = w.bodies;
+        const ShapeStore& shapes = w.shapes;
+        const collide::CollisionSystem& collision = w.broadphase.collision;
+        const float reuseDistance = w.def.contactReuseDistance;
+        const bool preSolve = static_cast<bool>(w.preSolve);
         for (int index = begin; index < end; ++index) {
             // A free slot, or a contact whose bodies both sleep (its points are as they were): the
             // contact is not even read.
-            auto asleep = [&](int body) { return !w.bodies[body].awake; };
+            auto asleep = [&](int body) { return !bodies[body].awake; };
             if (!cache.contacts.isLive(index)) {
                 cache.narrowphase[index] = Narrowphase::Skipped;
                 cache.touchingPoints[index] = 0;
@@ -392,8 +398,8 @@ void updateContacts(const ContactWorld& w) {
                 continue;
             }
             Contact& c = cache.contacts[index];
-            Narrowphase result = collideContact(w, index);
-            if (isQuiet(w, c, result)) {
+            Narrowphase result = collideContact(c, bodies, shapes, collision, reuseDistance);
+            if (isQuiet(bodies, shapes, preSolve, c, result)) {
                 if (!c.touching) c.rollingImpulse = 0.0f;
                 result = Narrowphase::Quiet;
             }
