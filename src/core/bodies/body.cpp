@@ -3,6 +3,7 @@
 #include <string>
 #include <utility>
 
+#include "core/contacts/contact_world.hpp"
 #include "core/world/world_impl.hpp"
 
 namespace perpdot {
@@ -119,7 +120,7 @@ void World::destroyBody(BodyId id) {
     Body& b = w.body(id);
     const std::vector<std::pair<JointId, void*>> goodbyes = destroyJointsOf(w, id.index);
     wakeIsland(w.bodies, id.index);  // its island mates lose a support
-    destroyContactsOf(w, id.index, -1);
+    destroyContactsOf(contactWorld(w), id.index, -1);
     for (int s : b.shapes) {
         w.broadphase.destroyProxies(w.shapes, s);
         w.broadphase.collision.clearGeometry(s);

@@ -3,7 +3,9 @@
 #include <cmath>
 #include <string>
 
+#include "core/contacts/contact_world.hpp"
 #include "core/joints/joint_store.hpp"
+#include "core/world/events.hpp"
 #include "core/world/world_impl.hpp"
 
 namespace perpdot {
@@ -17,7 +19,7 @@ void World::setType(BodyId id, BodyType type) {
     Body& b = w.body(id);
     if (b.type == type) return;
     wakeIsland(w.bodies, id.index);  // leaves the island ring it slept in
-    destroyContactsOf(w, id.index, -1);
+    destroyContactsOf(contactWorld(w), id.index, -1);
     for (int s : b.shapes) w.broadphase.destroyProxies(w.shapes, s);
     b.type = type;
     for (int s : b.shapes) w.broadphase.createProxies(w.shapes, w.bodies, s);
@@ -101,7 +103,7 @@ std::vector<ContactData> World::bodyContacts(BodyId id) const {
     std::vector<ContactData> out;
     const ContactCache& cache = w.contactCache;
     cache.bodyLists.forEach(cache.contacts, id.index, [&](int index, int) {
-        if (cache.contacts[index].touching) out.push_back(w.contactData(cache.contacts[index]));
+        if (cache.contacts[index].touching) out.push_back(contactData(w.shapes, w.identity, cache.contacts[index]));
     });
     return out;
 }
@@ -152,7 +154,7 @@ void World::setEnabled(BodyId id, bool enabled) {
         const BodyId a = jointBodyA(joint), other = a == id ? jointBodyB(joint) : a;
         wakeIsland(w.bodies, other.index);
     }
-    destroyContactsOf(w, id.index, -1);
+    destroyContactsOf(contactWorld(w), id.index, -1);
     for (int s : b.shapes) w.broadphase.destroyProxies(w.shapes, s);
     b.enabled = false;
     b.awake = false;

@@ -5,9 +5,10 @@
 #include <tuple>
 
 #include "core/contacts/contact_cache.hpp"
+#include "core/contacts/contact_world.hpp"
 #include "core/contacts/manifold_reuse.hpp"
 #include "core/base/radix_sort.hpp"
-#include "core/world/world_impl.hpp"
+#include "core/world/events.hpp"
 
 namespace perpdot {
 
@@ -52,11 +53,12 @@ void takeManifold(Contact& c, const collide::Manifold& m, const Body& ba, const 
 
 // Whether two overlapping proxies may have a contact (bodies, sensors, shape types, filters,
 // joints); reads only, so the pair-finding workers ask it.
-bool pairWanted(const World::Impl& w, int proxyA, int proxyB) {
-    const ShapeData& sa = w.shapes[w.broadphase.collision.proxyKey(proxyA).shape];
-    const ShapeData& sb = w.shapes[w.broadphase.collision.proxyKey(proxyB).shape];
+bool pairWanted(const Pool<Body>& bodies, const ShapeStore& shapes, const collide::CollisionSystem& collision,
+                const JointStore& joints, int proxyA, int proxyB) {
+    const ShapeData& sa = shapes[collision.proxyKey(proxyA).shape];
+    const ShapeData& sb = shapes[collision.proxyKey(proxyB).shape];
     if (sa.body == sb.body) return false;
-    const BodyType ta = w.bodies[sa.body].type, tb = w.bodies[sb.body].type;
+    const BodyType ta = bodies[sa.body].type, tb = bodies[sb.body].type;
     // A contact needs a dynamic body; a sensor also sees a kinematic one (a character mover
     // entering a trigger zone).
     const bool sensorSeesKinematic = (sa.sensor || sb.sensor) && (ta == BodyType::Kinematic || tb == BodyType::Kinematic);
@@ -65,16 +67,17 @@ bool pairWanted(const World::Impl& w, int proxyA, int proxyB) {
     if (sa.sensor && sb.sensor) return false;
     if ((sa.sensor && !sb.enableSensorEvents) || (sb.sensor && !sa.enableSensorEvents)) return false;
     return collide::CollisionSystem::canCollide(sa.type, sb.type) && shouldCollide(sa.filter, sb.filter) &&
-           jointAllowsCollision(w, sa.body, sb.body);
+           jointAllowsCollision(bodies, joints, sa.body, sb.body);
 }
 
 // A contact for a wanted pair, unless it has one.
-void addPair(World::Impl& w, const NewPair& pair) {
+void addPair(const ContactWorld& w, const NewPair& pair) {
     ContactCache& cache = w.contactCache;
     int proxyA = pair.proxyA, proxyB = pair.proxyB;
     const uint64_t key = proxyPairKey(proxyA, proxyB);
     // The game's rule (World::setShouldCollide) judges pairs that have no contact yet.
-    if (w.shouldCollide && !cache.pairs.contains(key) && !w.shouldCollide(w.shapeId(pair.a.shape), w.shapeId(pair.b.shape)))
+    if (w.shouldCollide && !cache.pairs.contains(key) &&
+        !w.shouldCollide(handleAt<ShapeId>(w.shapes, pair.a.shape, w.identity), handleAt<ShapeId>(w.shapes, pair.b.shape, w.identity)))
         return;
     if (!cache.pairs.insert(key)) return;  // one lookup: found twice, or has its contact
     collide::ChildKey keyA = pair.a, keyB = pair.b;
@@ -103,20 +106,19 @@ void addPair(World::Impl& w, const NewPair& pair) {
 // The narrowphase of one contact, with the bodies' poses alone: whether its fat AABBs still
 // overlap (else it is to be destroyed), a sensor's overlap, or its kept manifold or a new one.
 // Events, the pre-solve callback and waking are left to updateContacts.
-Narrowphase collideContact(World::Impl& w, int index) {
-    Contact& c = w.contactCache.contacts[index];
-    const Body& ba = w.bodies[c.bodyA];
-    const Body& bb = w.bodies[c.bodyB];
-    const collide::CollisionSystem& collision = w.broadphase.collision;
+Narrowphase collideContact(Contact& c, const Pool<Body>& bodies, const ShapeStore& shapes, const collide::CollisionSystem& collision,
+                           float reuseDistance) {
+    const Body& ba = bodies[c.bodyA];
+    const Body& bb = bodies[c.bodyB];
     if (!overlaps(collision.fatAABB(c.proxyA), collision.fatAABB(c.proxyB))) return Narrowphase::Apart;
     if (c.sensor) return collision.testOverlap(c.a, ba.xf, c.b, bb.xf) ? Narrowphase::Overlapping : Narrowphase::Separate;
     const bool wasTouching = c.touching;
     // The shapes' reach is only used without points: a contact with points reads no shape.
     auto reach = [&] {
-        const ShapeData &sa = w.shapes[c.a.shape], &sb = w.shapes[c.b.shape];
+        const ShapeData &sa = shapes[c.a.shape], &sb = shapes[c.b.shape];
         return std::max(sa.maxExtent + length(ba.localCenter), sb.maxExtent + length(bb.localCenter));
     };
-    const ReuseLimits limits{.distance = w.def.contactReuseDistance,
+    const ReuseLimits limits{.distance = reuseDistance,
                              .reach = c.pointCount > 0 ? 0.0f : reach(),
                              .box2dMargin = collide::box2dSkin(c.typeA) + collide::box2dSkin(c.typeB),
                              .skinOffset = collide::skinOffset(c.typeA, c.skin) + collide::skinOffset(c.typeB, c.skin)};
@@ -128,14 +130,15 @@ Narrowphase collideContact(World::Impl& w, int index) {
 
 // Whether the one-by-one pass of updateContacts has nothing to do for a contact the workers
 // collided: no begin or end event, no pre-solve call, no sleeper to wake. Awake flags only turn
-// on in that pass, so a body awake (or static) now needs no waking there.
-bool isQuiet(const World::Impl& w, const Contact& c, Narrowphase result) {
+// on in that pass, so a body awake (or static) now needs no waking there. `preSolve`: the world
+// has a pre-solve callback.
+bool isQuiet(const Pool<Body>& bodies, const ShapeStore& shapes, bool preSolve, const Contact& c, Narrowphase result) {
     if (result != Narrowphase::WasTouching && result != Narrowphase::WasNotTouching) return false;
     if (c.touching != (result == Narrowphase::WasTouching)) return false;
     if (!c.touching) return true;
-    if (w.preSolve && (w.shapes[c.a.shape].enablePreSolveEvents || w.shapes[c.b.shape].enablePreSolveEvents)) return false;
-    const Body& ba = w.bodies[c.bodyA];
-    const Body& bb = w.bodies[c.bodyB];
+    if (preSolve && (shapes[c.a.shape].enablePreSolveEvents || shapes[c.b.shape].enablePreSolveEvents)) return false;
+    const Body& ba = bodies[c.bodyA];
+    const Body& bb = bodies[c.bodyB];
     return (ba.awake || ba.type == BodyType::Static) && (bb.awake || bb.type == BodyType::Static);
 }
 
@@ -158,7 +161,7 @@ uint32_t cellOf(float v) { return v >= 0.0f ? (v < 65535.0f ? static_cast<uint32
 // would refuse all that others find) into groups for one tree query each: in the Morton order of
 // their boxes' centres, the next proxy joins the group while the union box stays within twice
 // the members' own area.
-void groupMovedProxies(const World::Impl& w, ContactCache& cache) {
+void groupMovedProxies(const ContactWorld& w, ContactCache& cache) {
     const collide::CollisionSystem& collision = w.broadphase.collision;
     std::vector<std::pair<uint32_t, int>>& order = cache.mortonOrder;
     order.clear();
@@ -206,7 +209,7 @@ void groupMovedProxies(const World::Impl& w, ContactCache& cache) {
 
 }  // namespace
 
-void updatePairs(World::Impl& w) {
+void updatePairs(const ContactWorld& w) {
     ContactCache& cache = w.contactCache;
     collide::CollisionSystem& collision = w.broadphase.collision;
     groupMovedProxies(w, cache);
@@ -230,7 +233,7 @@ void updatePairs(World::Impl& w) {
             // a contact (two sleepers' boxes are not checked) are dropped by addPair's one lookup:
             // looking here too would miss the cache twice per new pair.
             collision.queryNewPairs(&cache.queried[static_cast<size_t>(first)], count, [&](int proxy, int other) {
-                if (!pairWanted(w, proxy, other)) return;
+                if (!pairWanted(w.bodies, w.shapes, collision, w.joints, proxy, other)) return;
                 NewPair p{collision.proxyKey(proxy), collision.proxyKey(other), proxy, other};
                 if (std::tie(p.b.shape, p.b.child) < std::tie(p.a.shape, p.a.child)) {
                     std::swap(p.a, p.b);
@@ -309,20 +312,19 @@ void releaseContact(ContactCache& cache, int index) {
 }
 
 // Its end event, if it touched or overlapped; it does no more.
-void reportEnd(World::Impl& w, Contact& c) {
-    if (c.touching || c.overlapping) w.reportTouch(c, false);
+void reportEnd(const ContactWorld& w, Contact& c) {
+    if (c.touching || c.overlapping) reportTouch(w.events, w.shapes, w.identity, c, false);
     c.touching = c.overlapping = false;
 }
 
 }  // namespace
 
-void destroyContact(World::Impl& w, int index) {
+void destroyContact(const ContactWorld& w, int index) {
     reportEnd(w, w.contactCache.contacts[index]);
     releaseContact(w.contactCache, index);
 }
 
-void releaseApartContacts(World::Impl& w) {
-    ContactCache& cache = w.contactCache;
+void releaseApartContacts(ContactCache& cache) {
     const std::vector<int>& apart = cache.apart;
     // Each contact misses the cache, and so do its pair's slot and its neighbours in the bodies'
     // lists: ask for the contact two distances ahead, for the rest at one.
@@ -342,15 +344,14 @@ void mixMaterials(Contact& c, const ShapeData& a, const ShapeData& b) {
     c.tangentSpeed = a.tangentSpeed + b.tangentSpeed;
 }
 
-void remixMaterials(World::Impl& w, int shape) {
-    ContactCache& cache = w.contactCache;
-    cache.bodyLists.forEach(cache.contacts, w.shapes[shape].body, [&](int index, int) {
+void remixMaterials(ContactCache& cache, const ShapeStore& shapes, int shape) {
+    cache.bodyLists.forEach(cache.contacts, shapes[shape].body, [&](int index, int) {
         Contact& c = cache.contacts[index];
-        if (!c.sensor && (c.a.shape == shape || c.b.shape == shape)) mixMaterials(c, w.shapes[c.a.shape], w.shapes[c.b.shape]);
+        if (!c.sensor && (c.a.shape == shape || c.b.shape == shape)) mixMaterials(c, shapes[c.a.shape], shapes[c.b.shape]);
     });
 }
 
-void destroyContactsOf(World::Impl& w, int bodyIndex, int shapeIndex) {
+void destroyContactsOf(const ContactWorld& w, int bodyIndex, int shapeIndex) {
     const ContactCache& cache = w.contactCache;
     cache.bodyLists.forEach(cache.contacts, bodyIndex, [&](int index, int) {
         const Contact& c = cache.contacts[index];
@@ -371,17 +372,22 @@ void destroyContactsOf(World::Impl& w, int bodyIndex, int shapeIndex) {
 // a sleeper it touches but never touched before wakes one step later. Waking spreads one contact
 // a step through bodies that fell asleep apart (Box2D 2.4's pass collided them at once, and a
 // block of 9,600 boxes made asleep woke whole in the step the first one was hit).
-void updateContacts(World::Impl& w) {
+void updateContacts(const ContactWorld& w) {
     ContactCache& cache = w.contactCache;
     const int count = cache.contacts.capacity();
     cache.narrowphase.resize(static_cast<size_t>(count));
     cache.touchingPoints.resize(static_cast<size_t>(count));  // a restored pool's free slots at its end
     cache.bodiesOf.resize(static_cast<size_t>(count));
     w.workers.parallelFor(count, 64, [&](int begin, int end, int) {
+        const Pool<Body>& bodies = w.bodies;
+        const ShapeStore& shapes = w.shapes;
+        const collide::CollisionSystem& collision = w.broadphase.collision;
+        const float reuseDistance = w.def.contactReuseDistance;
+        const bool preSolve = static_cast<bool>(w.preSolve);
         for (int index = begin; index < end; ++index) {
             // A free slot, or a contact whose bodies both sleep (its points are as they were): the
             // contact is not even read.
-            auto asleep = [&](int body) { return !w.bodies[body].awake; };
+            auto asleep = [&](int body) { return !bodies[body].awake; };
             if (!cache.contacts.isLive(index)) {
                 cache.narrowphase[index] = Narrowphase::Skipped;
                 cache.touchingPoints[index] = 0;
@@ -392,8 +398,8 @@ void updateContacts(World::Impl& w) {
                 continue;
             }
             Contact& c = cache.contacts[index];
-            Narrowphase result = collideContact(w, index);
-            if (isQuiet(w, c, result)) {
+            Narrowphase result = collideContact(c, bodies, shapes, collision, reuseDistance);
+            if (isQuiet(bodies, shapes, preSolve, c, result)) {
                 if (!c.touching) c.rollingImpulse = 0.0f;
                 result = Narrowphase::Quiet;
             }
@@ -425,21 +431,22 @@ void updateContacts(World::Impl& w) {
             const bool overlapping = result == Narrowphase::Overlapping;
             if (overlapping != c.overlapping) {
                 c.overlapping = overlapping;
-                w.reportTouch(c, overlapping);
+                reportTouch(w.events, w.shapes, w.identity, c, overlapping);
             }
             continue;
         }
         const ShapeData& sa = w.shapes[c.a.shape];
         const ShapeData& sb = w.shapes[c.b.shape];
         if (c.touching && w.preSolve && (sa.enablePreSolveEvents || sb.enablePreSolveEvents) &&
-            !w.preSolve(w.shapeId(c.a.shape), w.shapeId(c.b.shape), w.contactData(c))) {
+            !w.preSolve(handleAt<ShapeId>(w.shapes, c.a.shape, w.identity), handleAt<ShapeId>(w.shapes, c.b.shape, w.identity),
+                        contactData(w.shapes, w.identity, c))) {
             c.pointCount = 0;  // disabled for this step, and its manifold is not kept
             c.touching = false;
             c.reuseValid = false;
         }
         if (!c.touching) c.rollingImpulse = 0.0f;
         cache.touchingPoints[index] = touchingPoints(c);
-        if (c.touching != (result == Narrowphase::WasTouching)) w.reportTouch(c, c.touching);
+        if (c.touching != (result == Narrowphase::WasTouching)) reportTouch(w.events, w.shapes, w.identity, c, c.touching);
         // An awake body touching a sleeping one wakes the sleeper's island.
         if (c.touching) {
             if (!ba.awake && ba.type != BodyType::Static && bb.awake) wakeIsland(w.bodies, c.bodyA);

@@ -75,6 +75,7 @@ inline void prefetchSolverFields(const Contact& c) {
 }
 
 struct ShapeData;
+struct ShapeStore;  // shape_store.hpp
 
 // Identity of a broadphase pair in ContactCache::pairs (never 0: the two proxies differ).
 inline uint64_t proxyPairKey(int proxyA, int proxyB) {
@@ -117,18 +118,13 @@ struct ContactCache {
     std::vector<uint8_t> touchingPoints;
 };
 
-// Stages of the step (step.cpp): new contacts for the pairs of proxies that moved (in the order
-// of their child keys), then the narrowphase of every contact with an awake body, with begin and
-// end events, the pre-solve callback and waking.
-void updatePairs(World::Impl& world);
-void updateContacts(World::Impl& world);
-
-void destroyContact(World::Impl& world, int contact);  // with its end event
+// The stages that find, collide and destroy contacts take the contact stages' view of the world
+// (contact_world.hpp).
 // The contacts updateContacts found apart (their fat AABBs no longer overlap), which it reported
 // ended and left out of the solve, leave the pool, the pair set and their bodies' lists, in pool
 // order: serial work that no stage reads before the next updatePairs, done on the worker that
 // re-fits the tree (refit_ahead.cpp) beside the solve.
-void releaseApartContacts(World::Impl& world);
+void releaseApartContacts(ContactCache& cache);
 // Where a contact's separations are measured (collide::Skin): Box2D's skins on WorldDef::box2dSkin;
 // else a pair with a static or kinematic body keeps keptSkin of each skin as a rest gap, so a body
 // slides over the seams between separate pieces of ground or platform; two dynamic bodies rest on
@@ -147,7 +143,6 @@ inline float mixRestitution(float a, float b) { return std::max(a, b); }
 // as it is created, and again for the contacts of a shape whose material changes
 // (remixMaterials): the narrowphase reads no shape of a contact with points.
 void mixMaterials(Contact& c, const ShapeData& a, const ShapeData& b);
-void remixMaterials(World::Impl& world, int shape);
-void destroyContactsOf(World::Impl& world, int body, int shape);  // shape = -1: all of the body's contacts
+void remixMaterials(ContactCache& cache, const ShapeStore& shapes, int shape);
 
 }  // namespace perpdot

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/contacts/contact_world.hpp"
 #include "core/joints/joint_revolute.hpp"
 #include "core/joints/joint_solver_wide.hpp"
 #include "core/joints/joint_tree_stiffness.hpp"
@@ -36,7 +37,7 @@ void destroyContactsBetween(World::Impl& w, int bodyA, int bodyB) {
     const ContactCache& cache = w.contactCache;
     cache.bodyLists.forEach(cache.contacts, bodyA, [&](int index, int) {
         const Contact& c = cache.contacts[index];
-        if ((c.bodyA == bodyA && c.bodyB == bodyB) || (c.bodyA == bodyB && c.bodyB == bodyA)) destroyContact(w, index);
+        if ((c.bodyA == bodyA && c.bodyB == bodyB) || (c.bodyA == bodyB && c.bodyB == bodyA)) destroyContact(contactWorld(w), index);
     });
 }
 
@@ -356,10 +357,9 @@ void storeJointImpulses(const SolverWorld& w, const StepContext&) {
         if (d.direct[k]) s.joints[d.awake[k]].data = d.prepared[k].data;
 }
 
-bool jointAllowsCollision(const World::Impl& w, int bodyA, int bodyB) {
-    if (w.bodies[bodyA].jointCount == 0 || w.bodies[bodyB].jointCount == 0) return true;
-    const JointStore& s = store(w);
-    if (w.bodies[bodyB].jointCount < w.bodies[bodyA].jointCount) std::swap(bodyA, bodyB);
+bool jointAllowsCollision(const Pool<Body>& bodies, const JointStore& s, int bodyA, int bodyB) {
+    if (bodies[bodyA].jointCount == 0 || bodies[bodyB].jointCount == 0) return true;
+    if (bodies[bodyB].jointCount < bodies[bodyA].jointCount) std::swap(bodyA, bodyB);
     for (int key = s.bodyLists.head(bodyA); key >= 0; key = EdgeList::next(s.joints, key)) {
         const Joint& j = s.joints[key >> 1];
         const int other = (key & 1) ? j.bodyA : j.bodyB;

@@ -10,6 +10,9 @@
 
 namespace perpdot {
 
+template <class T>
+class Pool;
+struct Body;  // body_store.hpp
 struct JointStore;
 struct JointStoreDeleter {
     void operator()(JointStore* store) const;
@@ -71,7 +74,7 @@ void setDirectJointImpulse(JointScratch& joints, int k, int row, float impulse);
 void breakJoints(World::Impl& world, const StepContext& ctx);
 
 // False when a joint between the two bodies has collideConnected == false.
-bool jointAllowsCollision(const World::Impl& world, int bodyA, int bodyB);
+bool jointAllowsCollision(const Pool<Body>& bodies, const JointStore& joints, int bodyA, int bodyB);
 // Destroys every joint attached to the body (called before the body goes). Returns the joints
 // (stale ids) and their userData where the world has a joint-destroyed callback, for destroyBody
 // to call it once the body is gone; otherwise nothing.

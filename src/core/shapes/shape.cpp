@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/contacts/contact_world.hpp"
 #include "core/world/world_impl.hpp"
 
 namespace perpdot {
@@ -136,7 +137,7 @@ void World::destroyShape(ShapeId id) {
     checkUnlocked(w.locked, "destroyShape");
     ShapeData& s = w.shape(id);
     const int bodyIndex = s.body;
-    destroyContactsOf(w, bodyIndex, id.index);
+    destroyContactsOf(contactWorld(w), bodyIndex, id.index);
     w.broadphase.destroyProxies(w.shapes, id.index);
     w.broadphase.collision.clearGeometry(id.index);
     std::vector<int>& owned = w.bodies[bodyIndex].shapes;
@@ -191,7 +192,7 @@ void World::setFriction(ShapeId id, float friction) {
     checkUnlocked(impl_->locked, "setFriction");
     if (!(std::isfinite(friction) && friction >= 0.0f)) throw Error("setFriction: friction must be finite and >= 0");
     impl_->shape(id).friction = friction;
-    remixMaterials(*impl_, id.index);
+    remixMaterials(impl_->contactCache, impl_->shapes, id.index);
 }
 
 void World::setRestitution(ShapeId id, float restitution) {
@@ -199,7 +200,7 @@ void World::setRestitution(ShapeId id, float restitution) {
     if (!(std::isfinite(restitution) && restitution >= 0.0f)) throw Error("setRestitution: restitution must be finite and >= 0");
     impl_->shape(id).restitution = restitution;
     impl_->shapes.noteRestitution(restitution);
-    remixMaterials(*impl_, id.index);
+    remixMaterials(impl_->contactCache, impl_->shapes, id.index);
 }
 
 float World::rollingResistance(ShapeId id) const { return impl_->shape(id).rollingResistance; }
@@ -209,14 +210,14 @@ void World::setRollingResistance(ShapeId id, float resistance) {
     checkUnlocked(impl_->locked, "setRollingResistance");
     if (!(std::isfinite(resistance) && resistance >= 0.0f)) throw Error("setRollingResistance: resistance must be finite and >= 0");
     impl_->shape(id).rollingResistance = resistance;
-    remixMaterials(*impl_, id.index);
+    remixMaterials(impl_->contactCache, impl_->shapes, id.index);
 }
 
 void World::setTangentSpeed(ShapeId id, float speed) {
     checkUnlocked(impl_->locked, "setTangentSpeed");
     if (!std::isfinite(speed)) throw Error("setTangentSpeed: speed must be finite");
     impl_->shape(id).tangentSpeed = speed;
-    remixMaterials(*impl_, id.index);
+    remixMaterials(impl_->contactCache, impl_->shapes, id.index);
 }
 
 void World::enablePreSolveEvents(ShapeId id, bool enable) { impl_->shape(id).enablePreSolveEvents = enable; }

@@ -2,6 +2,7 @@
 // flag and user data; and the game's own collision rule (World::setShouldCollide).
 #include <utility>
 
+#include "core/contacts/contact_world.hpp"
 #include "core/world/world_impl.hpp"
 
 namespace perpdot {
@@ -25,7 +26,7 @@ void endContactsOf(World::Impl& w, int shape, const Ends& ends) {
         const Contact& c = cache.contacts[index];
         if ((c.a.shape != shape && c.b.shape != shape) || !ends(c)) return;
         if (c.touching) wakeIsland(w.bodies, c.bodyA == w.shapes[shape].body ? c.bodyB : c.bodyA);
-        destroyContact(w, index);
+        destroyContact(contactWorld(w), index);
     });
 }
 

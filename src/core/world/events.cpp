@@ -1,17 +1,22 @@
 // Contact, sensor and hit events raised by the step into the world's EventBuffers
-// (event_buffers.hpp), and read after it through spans.
+// (event_buffers.hpp), which the World's calls read after it through spans (world.cpp).
 #include <algorithm>
 #include <cstddef>
 
+#include "core/contacts/contact_cache.hpp"
+#include "core/shapes/shape_store.hpp"
 #include "core/solver/contact_solver.hpp"
-#include "core/world/world_impl.hpp"
+#include "core/world/event_buffers.hpp"
+#include "core/world/events.hpp"
+#include "core/world/handle_check.hpp"
+#include "core/world/step_scratch.hpp"
 
 namespace perpdot {
 
-ContactData World::Impl::contactData(const Contact& c) const {
+ContactData contactData(const ShapeStore& shapes, const WorldIdentity& identity, const Contact& c) {
     ContactData d;
-    d.shapeA = shapeId(c.a.shape);
-    d.shapeB = shapeId(c.b.shape);
+    d.shapeA = handleAt<ShapeId>(shapes, c.a.shape, identity);
+    d.shapeB = handleAt<ShapeId>(shapes, c.b.shape, identity);
     d.normal = c.normal;
     d.pointCount = c.pointCount;
     for (int i = 0; i < c.pointCount; ++i) {
@@ -21,10 +26,10 @@ ContactData World::Impl::contactData(const Contact& c) const {
     return d;
 }
 
-void World::Impl::reportTouch(const Contact& c, bool begin) {
+void reportTouch(EventBuffers& events, const ShapeStore& shapes, const WorldIdentity& identity, const Contact& c, bool begin) {
     const ShapeData& sa = shapes[c.a.shape];
     const ShapeData& sb = shapes[c.b.shape];
-    const ShapeId a = shapeId(c.a.shape), b = shapeId(c.b.shape);
+    const ShapeId a = handleAt<ShapeId>(shapes, c.a.shape, identity), b = handleAt<ShapeId>(shapes, c.b.shape, identity);
     if (c.sensor) {
         const ShapeId sensor = sa.sensor ? a : b, visitor = sa.sensor ? b : a;
         if (begin) events.sensorBegin.push_back({sensor, visitor});
@@ -38,20 +43,22 @@ void World::Impl::reportTouch(const Contact& c, bool begin) {
 // After the solve: a hit for every touching contact with hit events whose fastest point
 // approached faster than the threshold and actually pushed (λn > 0 at some substep), or took an
 // impact before the substeps (impact_propagation.cpp; its approach is then gone from the rows).
-void reportHitEvents(World::Impl& w) {
-    if (!w.shapes.anyHitEvents) return;
-    locateContactRows(w.scratch.contacts);
-    const std::vector<ImpactPoint>& impacts = w.scratch.contacts.impacts.points;  // in constraint order
+void reportHitEvents(EventBuffers& events, ContactScratch& rows, const ContactCache& cache, const ShapeStore& shapes,
+                     const WorldIdentity& identity, float threshold) {
+    if (!shapes.anyHitEvents) return;
+    locateContactRows(rows);
+    const std::vector<ImpactPoint>& impacts = rows.impacts.points;  // in constraint order
     size_t impact = 0;
-    for (int k = 0; k < static_cast<int>(w.scratch.contacts.constraints.size()); ++k) {
+    for (int k = 0; k < static_cast<int>(rows.constraints.size()); ++k) {
         while (impact < impacts.size() && impacts[impact].constraint < k) ++impact;
-        const ContactConstraint& c = w.scratch.contacts.constraints[k];
-        const Contact& contact = w.contactCache.contacts[c.contact];
-        if (!w.shapes[contact.a.shape].enableHitEvents && !w.shapes[contact.b.shape].enableHitEvents) continue;
-        ContactHitEvent event{w.shapeId(contact.a.shape), w.shapeId(contact.b.shape), {}, contact.normal, w.def.hitEventThreshold};
+        const ContactConstraint& c = rows.constraints[k];
+        const Contact& contact = cache.contacts[c.contact];
+        if (!shapes[contact.a.shape].enableHitEvents && !shapes[contact.b.shape].enableHitEvents) continue;
+        ContactHitEvent event{handleAt<ShapeId>(shapes, contact.a.shape, identity), handleAt<ShapeId>(shapes, contact.b.shape, identity), {},
+                              contact.normal, threshold};
         bool hit = false;
         for (int i = 0; i < c.pointCount; ++i) {
-            const float approachSpeed = -contactRowField(w.scratch.contacts, k, offsetof(ContactRows<float>, relativeVelocity) / sizeof(float) + static_cast<std::size_t>(i));
+            const float approachSpeed = -contactRowField(rows, k, offsetof(ContactRows<float>, relativeVelocity) / sizeof(float) + static_cast<std::size_t>(i));
             if (approachSpeed > event.approachSpeed && contact.points[i].maxNormalImpulse > 0.0f) {
                 event.approachSpeed = approachSpeed;
                 event.point = contact.points[i].point;
@@ -66,21 +73,8 @@ void reportHitEvents(World::Impl& w) {
                 hit = true;
             }
         }
-        if (hit) w.events.contactHit.push_back(event);
+        if (hit) events.contactHit.push_back(event);
     }
-}
-
-ContactEvents World::contactEvents() const {
-    return {impl_->events.contactBegin, impl_->events.contactEnd, impl_->events.contactHit};
-}
-
-SensorEvents World::sensorEvents() const { return {impl_->events.sensorBegin, impl_->events.sensorEnd}; }
-
-JointEvents World::jointEvents() const { return {impl_->events.jointBreak}; }
-
-void World::setPreSolve(PreSolveFn callback) {
-    checkUnlocked(impl_->locked, "setPreSolve");
-    impl_->preSolve = std::move(callback);
 }
 
 }  // namespace perpdot

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <string>
 
+#include "core/contacts/contact_world.hpp"
+#include "core/world/events.hpp"
 #include "core/world/stages.hpp"
 
 namespace perpdot {
@@ -66,10 +68,11 @@ void World::step(float timeStep) {
     } refitWait{w};
     w.events.beginStep();
 
-    updatePairs(w);     // pairs: proxies that left their fat AABB meet new partners
-    updateContacts(w);  // narrowphase: each contact keeps its manifold or takes a new one
+    const ContactWorld contacts = contactWorld(w);
+    updatePairs(contacts);     // pairs: proxies that left their fat AABB meet new partners
+    updateContacts(contacts);  // narrowphase: each contact keeps its manifold or takes a new one
     if (timeStep == 0.0f) {  // Box2D 2.4's Step(0): the contacts and their events, no motion
-        releaseApartContacts(w);
+        releaseApartContacts(w.contactCache);
         w.events.endStep();
         return;
     }
@@ -90,7 +93,7 @@ void World::step(float timeStep) {
     projectJoints(*w.scratch.joints, w.scratch.bodies);         // project: the anchors of revolute trees meet again
     storeContactImpulses(w.scratch.contacts, w.contactCache);  // store: impulses for the next step's warm start (the lanes' stored by the solver)
     storeJointImpulses(solver, ctx);
-    reportHitEvents(w);
+    reportHitEvents(w.events, w.scratch.contacts, w.contactCache, w.shapes, w.identity, w.def.hitEventThreshold);
     finishTreeRefit(w);
     finalizeBodies(w, ctx);  // positions back into the bodies; continuous collision
     breakJoints(w, ctx);     // joints whose reaction over the step passed their break limits

@@ -1,6 +1,8 @@
-// World construction, settings, its counts, read-only views of the contact cache, the origin
-// shift, and the views its query calls read (query_world.hpp).
+// World construction, settings, its counts, read-only views of the contact cache and the events,
+// the origin shift, and the views of the world its other files read (QueryWorld, ContactWorld).
+#include "core/contacts/contact_world.hpp"
 #include "core/queries/query_world.hpp"
+#include "core/world/events.hpp"
 #include "core/world/shift_origin.hpp"
 #include "core/world/world_impl.hpp"
 
@@ -38,7 +40,7 @@ int World::contactCount() const {
 std::vector<ContactData> World::contacts() const {
     std::vector<ContactData> out;
     impl_->contactCache.contacts.forEachLive([&](int, const Contact& c) {
-        if (c.touching) out.push_back(impl_->contactData(c));
+        if (c.touching) out.push_back(contactData(impl_->shapes, impl_->identity, c));
     });
     return out;
 }
@@ -71,6 +73,33 @@ QueryWorld queryWorld(const World::Impl& w) {
             .contactCache = w.contactCache,
             .identity = w.identity,
             .locked = w.locked};
+}
+
+ContactEvents World::contactEvents() const {
+    return {impl_->events.contactBegin, impl_->events.contactEnd, impl_->events.contactHit};
+}
+
+SensorEvents World::sensorEvents() const { return {impl_->events.sensorBegin, impl_->events.sensorEnd}; }
+
+JointEvents World::jointEvents() const { return {impl_->events.jointBreak}; }
+
+void World::setPreSolve(PreSolveFn callback) {
+    checkUnlocked(impl_->locked, "setPreSolve");
+    impl_->preSolve = std::move(callback);
+}
+
+ContactWorld contactWorld(World::Impl& w) {
+    return {.bodies = w.bodies,
+            .shapes = w.shapes,
+            .contactCache = w.contactCache,
+            .broadphase = w.broadphase,
+            .joints = *w.joints,
+            .events = w.events,
+            .def = w.def,
+            .identity = w.identity,
+            .workers = w.workers,
+            .preSolve = w.preSolve,
+            .shouldCollide = w.shouldCollide};
 }
 
 }  // namespace perpdot

@@ -67,13 +67,6 @@ struct World::Impl {
 
     // Shapes (shape.cpp)
     int addShape(BodyId body, const ShapeDef& def);
-
-    // Events (events.cpp)
-    void reportTouch(const Contact& c, bool begin);  // begin/end event for a contact or sensor
-    ContactData contactData(const Contact& c) const;
 };
-
-// The hit events of the step's contacts, from their rows after the solve (events.cpp).
-void reportHitEvents(World::Impl& world);
 
 }  // namespace perpdot
