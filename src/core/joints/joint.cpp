@@ -27,7 +27,6 @@ namespace {
 
 JointStore& store(World::Impl& w) { return *w.joints; }
 const JointStore& store(const World::Impl& w) { return *w.joints; }
-JointScratch& jointScratch(World::Impl& w) { return *w.scratch.joints; }
 // The same parts through the solver's view, for the solver stages.
 JointStore& store(const SolverWorld& w) { return w.joints; }
 JointScratch& jointScratch(const SolverWorld& w) { return w.scratch.joints; }
@@ -41,8 +40,17 @@ void destroyContactsBetween(World::Impl& w, int bodyA, int bodyB) {
     });
 }
 
-void removeJoint(World::Impl& w, int index) {
-    JointStore& s = store(w);
+JointReaction reactionOf(const Joint& j) { return stagesOf(j.type).reaction(j.data); }
+
+}  // namespace
+
+// The parts removing a joint touches (JointRemoval, joint.hpp).
+JointRemoval jointRemoval(World::Impl& w) {
+    return {.joints = *w.joints, .bodies = w.bodies, .shapes = w.shapes, .broadphase = w.broadphase};
+}
+
+void removeJoint(const JointRemoval& w, int index) {
+    JointStore& s = w.joints;
     Joint& j = s.joints[index];
     s.bodyLists.unlink(s.joints, index, 0, j.bodyA);
     s.bodyLists.unlink(s.joints, index, 1, j.bodyB);
@@ -61,10 +69,6 @@ void removeJoint(World::Impl& w, int index) {
             }
     s.joints.destroy(index);
 }
-
-JointReaction reactionOf(const Joint& j) { return stagesOf(j.type).reaction(j.data); }
-
-}  // namespace
 
 Joint& addJoint(World::Impl& w, JointType type, BodyId bodyA, BodyId bodyB, Vec2 localAnchorA, Vec2 localAnchorB,
                 float referenceAngle, bool collideConnected, void* userData) {
@@ -374,7 +378,7 @@ std::vector<std::pair<JointId, void*>> destroyJointsOf(World::Impl& w, int body)
     while (s.bodyLists.head(body) >= 0) {
         const int index = s.bodyLists.head(body) >> 1;
         if (w.jointDestroyed) goodbyes.emplace_back(jointId(w, s.joints[index]), s.joints[index].userData);
-        removeJoint(w, index);
+        removeJoint(jointRemoval(w), index);
     }
     return goodbyes;
 }
@@ -388,7 +392,7 @@ void forEachJointPair(const World::Impl& w, void (*visit)(void* context, int bod
 void World::destroyJoint(JointId id) {
     checkUnlocked(impl_->locked, "destroyJoint");
     checkedJoint(*impl_, id);
-    removeJoint(*impl_, id.index);
+    removeJoint(jointRemoval(*impl_), id.index);
 }
 
 bool World::isValid(JointId id) const {
@@ -437,9 +441,9 @@ void World::setJointBreakLimits(JointId id, float maxForce, float maxTorque, boo
 // A joint breaks when |F| > breakForce or |τ| > breakTorque, F and τ its reaction on B averaged
 // over the step: the impulses of all its substeps summed (JointScratch::stepImpulse) over h, so a
 // blow within one substep counts in full. Asleep joints were not solved and do not break.
-void breakJoints(World::Impl& w, const StepContext& ctx) {
-    JointStore& s = store(w);
-    JointScratch& d = jointScratch(w);
+void breakJoints(const JointRemoval& w, JointScratch& d, EventBuffers& events, const WorldIdentity& identity,
+                 Workers& workers, const StepContext& ctx) {
+    const JointStore& s = w.joints;
     auto reaction = [&](int k) {
         const JointReaction& r = d.stepImpulse[k];
         return std::pair{ctx.invH * r.linear, ctx.invH * r.angular};  // force, torque
@@ -452,7 +456,7 @@ void breakJoints(World::Impl& w, const StepContext& ctx) {
     };
     // The workers find the joints over their limits; a break wakes bodies, so which of them are
     // awake is asked one by one, in store order, as the joints break.
-    w.workers.parallelSelect(
+    workers.parallelSelect(
         static_cast<int>(d.awake.size()), overLimit, [&](int total) { d.breaking.resize(total); },
         [&](int k, int prepared) { d.breaking[k] = prepared; });
     for (int k : d.breaking) {
@@ -460,7 +464,7 @@ void breakJoints(World::Impl& w, const StepContext& ctx) {
         const Joint& j = s.joints[index];
         if (!w.bodies[j.bodyA].awake && !w.bodies[j.bodyB].awake) continue;  // asleep: nothing changed
         const auto [force, torque] = reaction(k);
-        w.events.jointBreak.push_back({jointId(w, j), force, torque, j.destroyOnBreak, j.userData});
+        events.jointBreak.push_back({handleAt<JointId>(s.joints, index, identity), force, torque, j.destroyOnBreak, j.userData});
         if (j.destroyOnBreak) removeJoint(w, index);
     }
 }

@@ -23,6 +23,11 @@ JointStorePtr makeJointStore();
 struct JointScratch;
 struct SolverBodies;  // step_scratch.hpp
 struct SolverWorld;   // solver_world.hpp
+struct ShapeStore;    // shape_store.hpp
+struct Broadphase;    // broadphase.hpp
+struct EventBuffers;  // event_buffers.hpp
+struct WorldIdentity; // handle_check.hpp
+class Workers;        // workers.hpp
 struct JointScratchDeleter {
     void operator()(JointScratch* scratch) const;
 };
@@ -68,10 +73,21 @@ void solveJointDirectly(JointScratch& joints, int k);
 float directJointImpulse(const JointScratch& joints, int k, int row);
 void setDirectJointImpulse(JointScratch& joints, int k, int row, float impulse);
 
-// Reports (and destroys, where asked) the joints whose reaction, averaged over the step, passed
-// their break limits; run after storeJointImpulses. A world stage: it removes joints, records
-// events and wakes bodies, so it takes the hub.
-void breakJoints(World::Impl& world, const StepContext& ctx);
+// What removing a joint touches besides its store: the bodies it wakes, and the broadphase, which
+// looks again for the pairs of shapes the joint kept apart.
+struct JointRemoval {
+    JointStore& joints;
+    Pool<Body>& bodies;
+    const ShapeStore& shapes;
+    Broadphase& broadphase;
+};
+JointRemoval jointRemoval(World::Impl& world);  // joint.cpp
+void removeJoint(const JointRemoval& world, int joint);
+
+// Reports in `events` (and removes, where asked) the joints whose reaction, averaged over the step
+// (the joint scratch's stepImpulse), passed their break limits; run after storeJointImpulses.
+void breakJoints(const JointRemoval& world, JointScratch& joints, EventBuffers& events, const WorldIdentity& identity,
+                 Workers& workers, const StepContext& ctx);
 
 // False when a joint between the two bodies has collideConnected == false.
 bool jointAllowsCollision(const Pool<Body>& bodies, const JointStore& joints, int bodyA, int bodyB);

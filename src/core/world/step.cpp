@@ -96,7 +96,7 @@ void World::step(float timeStep) {
     reportHitEvents(w.events, w.scratch.contacts, w.contactCache, w.shapes, w.identity, w.def.hitEventThreshold);
     finishTreeRefit(w);
     finalizeBodies(w, ctx);  // positions back into the bodies; continuous collision
-    breakJoints(w, ctx);     // joints whose reaction over the step passed their break limits
+    breakJoints(jointRemoval(w), *w.scratch.joints, w.events, w.identity, w.workers, ctx);  // joints whose reaction over the step passed their break limits
 
     updateSleep(w, timeStep);  // sleep: islands at rest
     w.events.endStep();
