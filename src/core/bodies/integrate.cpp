@@ -174,7 +174,7 @@ void finalizeBodies(World::Impl& w, const StepContext& ctx) {
         Body& b = w.bodies[index];
         const BodyState& s = w.scratch.bodies.states[k + 1];
         if (w.scratch.bodies.bodyMotion[k] == NonFinite) {
-            w.freeze(index);                            // where it was before the step,
+            freeze(b, w.frozenBodies);  // where it was before the step,
             w.broadphase.synchronizeProxies(w.shapes, w.bodies, index, b.xf, {});  // perhaps outside the boxes re-fitted ahead
             continue;
         }

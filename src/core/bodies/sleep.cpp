@@ -44,7 +44,7 @@ void updateSleep(World::Impl& w, float h) {
         if (c.touching && joinable(c.bodyA) && joinable(c.bodyB)) unite(w.scratch.islands.parent, c.bodyA, c.bodyB);
     });
     forEachJointPair(
-        w,
+        *w.joints,
         [](void* context, int a, int b) {
             World::Impl& world = *static_cast<World::Impl*>(context);
             auto ok = [&](int i) { return world.bodies[i].type == BodyType::Dynamic && world.bodies[i].awake; };

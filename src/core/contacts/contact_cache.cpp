@@ -65,7 +65,7 @@ bool pairWanted(const World::Impl& w, int proxyA, int proxyB) {
     if (sa.sensor && sb.sensor) return false;
     if ((sa.sensor && !sb.enableSensorEvents) || (sb.sensor && !sa.enableSensorEvents)) return false;
     return collide::CollisionSystem::canCollide(sa.type, sb.type) && shouldCollide(sa.filter, sb.filter) &&
-           jointAllowsCollision(w, sa.body, sb.body);
+           jointAllowsCollision(w.bodies, *w.joints, sa.body, sb.body);
 }
 
 // A contact for a wanted pair, unless it has one.
@@ -321,8 +321,7 @@ void destroyContact(World::Impl& w, int index) {
     releaseContact(w.contactCache, index);
 }
 
-void releaseApartContacts(World::Impl& w) {
-    ContactCache& cache = w.contactCache;
+void releaseApartContacts(ContactCache& cache) {
     const std::vector<int>& apart = cache.apart;
     // Each contact misses the cache, and so do its pair's slot and its neighbours in the bodies'
     // lists: ask for the contact two distances ahead, for the rest at one.

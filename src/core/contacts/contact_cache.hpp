@@ -128,7 +128,7 @@ void destroyContact(World::Impl& world, int contact);  // with its end event
 // ended and left out of the solve, leave the pool, the pair set and their bodies' lists, in pool
 // order: serial work that no stage reads before the next updatePairs, done on the worker that
 // re-fits the tree (refit_ahead.cpp) beside the solve.
-void releaseApartContacts(World::Impl& world);
+void releaseApartContacts(ContactCache& cache);
 // Where a contact's separations are measured (collide::Skin): Box2D's skins on WorldDef::box2dSkin;
 // else a pair with a static or kinematic body keeps keptSkin of each skin as a rest gap, so a body
 // slides over the seams between separate pieces of ground or platform; two dynamic bodies rest on

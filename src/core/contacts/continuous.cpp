@@ -75,7 +75,7 @@ float staticImpact(const World::Impl& w, int index, const collide::Sweep& sweep)
             const ShapeData& other = w.shapes[key.shape];
             const Body& ob = w.bodies[other.body];
             if (other.sensor || !collide::CollisionSystem::canCollide(shape.type, other.type) ||
-                !shouldCollide(shape.filter, other.filter) || !jointAllowsCollision(w, index, other.body))
+                !shouldCollide(shape.filter, other.filter) || !jointAllowsCollision(w.bodies, *w.joints, index, other.body))
                 return true;
             Vec2 p1, p2;
             SegmentPass pass = SegmentPass::Nears;  // what a non-segment shape is treated as

@@ -151,7 +151,7 @@ void pairImpact(const World::Impl& w, MoverPair& pair, float t) {
     const Body& ba = w.bodies[a.body];
     const Body& bb = w.bodies[b.body];
     pair.time = 1.0f;
-    if (!jointAllowsCollision(w, a.body, b.body)) return;
+    if (!jointAllowsCollision(w.bodies, *w.joints, a.body, b.body)) return;
     const collide::Sweep sweepA = sweepFrom(a, ba.localCenter, t), sweepB = sweepFrom(b, bb.localCenter, t);
     float first = 1.0f;
     // The swept shape `s` (of the body moving along `sweep`) against every child of `other`.
@@ -320,7 +320,7 @@ void solveMovingImpacts(World::Impl& w, const StepContext& ctx) {
         b.xf = b.derivedTransform();
         b.v = m.v;
         b.w = m.w;
-        if (m.frozen) w.freeze(m.body);
+        if (m.frozen) freeze(b, w.frozenBodies);
         w.broadphase.synchronizeProxies(w.shapes, w.bodies, m.body, b.xf, b.center - m.stepStart);
     }
 }

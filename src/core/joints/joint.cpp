@@ -354,10 +354,9 @@ void storeJointImpulses(const SolverWorld& w, const StepContext&) {
         if (d.direct[k]) s.joints[d.awake[k]].data = d.prepared[k].data;
 }
 
-bool jointAllowsCollision(const World::Impl& w, int bodyA, int bodyB) {
-    if (w.bodies[bodyA].jointCount == 0 || w.bodies[bodyB].jointCount == 0) return true;
-    const JointStore& s = store(w);
-    if (w.bodies[bodyB].jointCount < w.bodies[bodyA].jointCount) std::swap(bodyA, bodyB);
+bool jointAllowsCollision(const Pool<Body>& bodies, const JointStore& s, int bodyA, int bodyB) {
+    if (bodies[bodyA].jointCount == 0 || bodies[bodyB].jointCount == 0) return true;
+    if (bodies[bodyB].jointCount < bodies[bodyA].jointCount) std::swap(bodyA, bodyB);
     for (int key = s.bodyLists.head(bodyA); key >= 0; key = EdgeList::next(s.joints, key)) {
         const Joint& j = s.joints[key >> 1];
         const int other = (key & 1) ? j.bodyA : j.bodyB;
@@ -377,8 +376,8 @@ std::vector<std::pair<JointId, void*>> destroyJointsOf(World::Impl& w, int body)
     return goodbyes;
 }
 
-void forEachJointPair(const World::Impl& w, void (*visit)(void* context, int bodyA, int bodyB), void* context) {
-    store(w).joints.forEachLive([&](int, const Joint& j) { visit(context, j.bodyA, j.bodyB); });
+void forEachJointPair(const JointStore& s, void (*visit)(void* context, int bodyA, int bodyB), void* context) {
+    s.joints.forEachLive([&](int, const Joint& j) { visit(context, j.bodyA, j.bodyB); });
 }
 
 // --- World API ---

@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/bodies/body_store.hpp"
 #include "core/world/step_context.hpp"
 #include "perpdot/world.hpp"
 
@@ -71,12 +72,12 @@ void setDirectJointImpulse(JointScratch& joints, int k, int row, float impulse);
 void breakJoints(World::Impl& world, const StepContext& ctx);
 
 // False when a joint between the two bodies has collideConnected == false.
-bool jointAllowsCollision(const World::Impl& world, int bodyA, int bodyB);
+bool jointAllowsCollision(const Pool<Body>& bodies, const JointStore& joints, int bodyA, int bodyB);
 // Destroys every joint attached to the body (called before the body goes). Returns the joints
 // (stale ids) and their userData where the world has a joint-destroyed callback, for destroyBody
 // to call it once the body is gone; otherwise nothing.
 std::vector<std::pair<JointId, void*>> destroyJointsOf(World::Impl& world, int body);
 // Calls visit(bodyA, bodyB) for every joint, for islands.
-void forEachJointPair(const World::Impl& world, void (*visit)(void* context, int bodyA, int bodyB), void* context);
+void forEachJointPair(const JointStore& joints, void (*visit)(void* context, int bodyA, int bodyB), void* context);
 
 }  // namespace perpdot

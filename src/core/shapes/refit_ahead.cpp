@@ -110,7 +110,7 @@ void planInPlaceMove(World::Impl& w, int body, PredictedPose& p, const SoleBox& 
 // serial work too, which nothing reads before the next pair update.
 void refitPredicted(int, int, int, void* world) {
     World::Impl& w = *static_cast<World::Impl*>(world);
-    releaseApartContacts(w);
+    releaseApartContacts(w.contactCache);
     const std::vector<PredictedPose>& poses = w.scratch.bodies.predictedPoses;
     for (size_t k = 0; k < poses.size(); ++k) {
         const PredictedPose& p = poses[k];

@@ -69,7 +69,7 @@ void World::step(float timeStep) {
     updatePairs(w);     // pairs: proxies that left their fat AABB meet new partners
     updateContacts(w);  // narrowphase: each contact keeps its manifold or takes a new one
     if (timeStep == 0.0f) {  // Box2D 2.4's Step(0): the contacts and their events, no motion
-        releaseApartContacts(w);
+        releaseApartContacts(w.contactCache);
         w.events.endStep();
         return;
     }
