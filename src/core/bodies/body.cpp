@@ -72,15 +72,6 @@ void World::Impl::updateMass(int index) {
     b.v += b.w * perp(b.center - oldCenter);
 }
 
-void World::Impl::freeze(int index) {
-    Body& b = bodies[index];
-    b.v = {};
-    b.w = 0.0f;
-    b.awake = false;
-    b.sleepTime = 0.0f;
-    ++frozenBodies;
-}
-
 BodyId World::createBody(const BodyDef& def) {
     Impl& w = *impl_;
     checkUnlocked(w.locked, "createBody");

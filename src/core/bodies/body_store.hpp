@@ -70,4 +70,14 @@ inline void wakeIsland(Pool<Body>& bodies, int index) {
     } while (i >= 0 && i != index);
 }
 
+// A body whose motion went non-finite, frozen where it is instead of spreading NaN: stopped,
+// asleep until something wakes it, and counted in frozenBodies (stats().frozenBodies).
+inline void freeze(Body& b, int& frozenBodies) {
+    b.v = {};
+    b.w = 0.0f;
+    b.awake = false;
+    b.sleepTime = 0.0f;
+    ++frozenBodies;
+}
+
 }  // namespace perpdot

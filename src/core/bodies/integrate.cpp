@@ -11,7 +11,6 @@
 #include <atomic>
 #include <cmath>
 
-#include "core/contacts/continuous.hpp"
 #include "core/bodies/speed_limits.hpp"
 #include "core/world/stages.hpp"
 
@@ -23,15 +22,14 @@ namespace {
 // bodies (ContactCache::touchingPoints, bodiesOf), rather than a walk of each body's contact list
 // (a turning container has thousands, most of them not touching), on the workers: a mark is only
 // ever set to 1, so two workers marking one body agree (relaxed stores).
-void markTouching(World::Impl& w) {
-    w.scratch.bodies.touchingBodies.assign(w.bodies.capacity(), 0);
-    const ContactCache& cache = w.contactCache;
-    w.workers.parallelFor(cache.contacts.capacity(), 1024, [&](int begin, int end, int) {
+void markTouching(std::vector<uint8_t>& touchingBodies, int bodyCapacity, const ContactCache& cache, Workers& workers) {
+    touchingBodies.assign(bodyCapacity, 0);
+    workers.parallelFor(cache.contacts.capacity(), 1024, [&](int begin, int end, int) {
         for (int index = begin; index < end; ++index) {
             if (cache.touchingPoints[index] == 0) continue;  // free or not touching
             const auto [bodyA, bodyB] = cache.bodiesOf[index];
-            std::atomic_ref(w.scratch.bodies.touchingBodies[bodyA]).store(1, std::memory_order_relaxed);
-            std::atomic_ref(w.scratch.bodies.touchingBodies[bodyB]).store(1, std::memory_order_relaxed);
+            std::atomic_ref(touchingBodies[bodyA]).store(1, std::memory_order_relaxed);
+            std::atomic_ref(touchingBodies[bodyB]).store(1, std::memory_order_relaxed);
         }
     });
 }
@@ -40,37 +38,38 @@ void markTouching(World::Impl& w) {
 
 // Gather awake bodies into the solver arrays and integrate forces: whole step for free bodies,
 // substep pieces (SubstepForces) for constrained ones.
-void integrateVelocities(World::Impl& w, const StepContext& ctx) {
-    markTouching(w);
+void integrateVelocities(SolverBodies& solverBodies, const Pool<Body>& bodies, const ContactCache& cache, Vec2 gravity,
+                         Workers& workers, const StepContext& ctx) {
+    markTouching(solverBodies.touchingBodies, bodies.capacity(), cache, workers);
     // Slot k + 1 for the k-th awake body in store order; 0 (the static slot) for the others.
-    w.scratch.bodies.bodySlots.assign(static_cast<size_t>(w.bodies.capacity()), 0);
-    const int count = w.workers.parallelSelect(
-        w.bodies.capacity(),
+    solverBodies.bodySlots.assign(static_cast<size_t>(bodies.capacity()), 0);
+    const int count = workers.parallelSelect(
+        bodies.capacity(),
         [&](int i) {
-            const Body& b = w.bodies[i];
+            const Body& b = bodies[i];
             return b.alive && b.type != BodyType::Static && b.awake;
         },
-        [&](int total) { w.scratch.bodies.awakeBodies.resize(static_cast<size_t>(total)); },
+        [&](int total) { solverBodies.awakeBodies.resize(static_cast<size_t>(total)); },
         [&](int k, int i) {
-            w.scratch.bodies.awakeBodies[static_cast<size_t>(k)] = i;
-            w.scratch.bodies.bodySlots[static_cast<size_t>(i)] = k + 1;
+            solverBodies.awakeBodies[static_cast<size_t>(k)] = i;
+            solverBodies.bodySlots[static_cast<size_t>(i)] = k + 1;
         });
-    w.scratch.bodies.states.resize(static_cast<size_t>(count) + 1);
-    w.scratch.bodies.states[0] = BodyState{};
-    w.scratch.bodies.substepForces.resize(static_cast<size_t>(count) + 1);
-    w.scratch.bodies.substepForces[0] = SubstepForces{};
-    w.scratch.bodies.inverseInertias.resize(static_cast<size_t>(count) + 1);
-    w.scratch.bodies.inverseInertias[0] = 0.0f;
-    w.workers.parallelFor(count, 256, [&](int begin, int end, int) {
+    solverBodies.states.resize(static_cast<size_t>(count) + 1);
+    solverBodies.states[0] = BodyState{};
+    solverBodies.substepForces.resize(static_cast<size_t>(count) + 1);
+    solverBodies.substepForces[0] = SubstepForces{};
+    solverBodies.inverseInertias.resize(static_cast<size_t>(count) + 1);
+    solverBodies.inverseInertias[0] = 0.0f;
+    workers.parallelFor(count, 256, [&](int begin, int end, int) {
         for (int k = begin; k < end; ++k) {
-            const int i = w.scratch.bodies.awakeBodies[k];
-            const Body& b = w.bodies[i];
+            const int i = solverBodies.awakeBodies[k];
+            const Body& b = bodies[i];
             Vec2 v = b.v;
             float omega = b.w;
             SubstepForces f;
             if (b.type == BodyType::Dynamic) {
-                const Vec2 force = (b.gravityScale * b.mass) * w.def.gravity + b.force;
-                if (b.jointCount > 0 || w.scratch.bodies.touchingBodies[i]) {
+                const Vec2 force = (b.gravityScale * b.mass) * gravity + b.force;
+                if (b.jointCount > 0 || solverBodies.touchingBodies[i]) {
                     f.dv = (ctx.hs * b.invMass) * force;
                     f.dw = ctx.hs * b.invInertia * b.torque;
                     f.linearDamping = 1.0f / (1.0f + ctx.hs * b.linearDamping);
@@ -83,12 +82,12 @@ void integrateVelocities(World::Impl& w, const StepContext& ctx) {
                     omega *= 1.0f / (1.0f + ctx.h * b.angularDamping);
                 }
             }
-            w.scratch.bodies.states[k + 1] = {v, omega, {}, {}, b.invMass};
-            w.scratch.bodies.substepForces[k + 1] = f;
-            w.scratch.bodies.inverseInertias[k + 1] = b.invInertia;
+            solverBodies.states[k + 1] = {v, omega, {}, {}, b.invMass};
+            solverBodies.substepForces[k + 1] = f;
+            solverBodies.inverseInertias[k + 1] = b.invInertia;
         }
     });
-    w.scratch.bodies.stepRotation.assign(w.scratch.bodies.states.size(), 0.0f);
+    solverBodies.stepRotation.assign(solverBodies.states.size(), 0.0f);
 }
 
 void applySubstepForces(SolverBodies& bodies, int begin, int end) {
@@ -118,7 +117,7 @@ void integratePositions(SolverBodies& bodies, const StepContext& ctx, int begin,
 // pose against static shapes, and check which of them stay inside their fat AABBs; then, one by
 // one, the non-finite ones are frozen and the broadphase follows the other bodies; bullets wait
 // until every other body is final, then meet moving bodies too (continuous_impacts.cpp).
-void finalizeBodies(World::Impl& w, const StepContext& ctx) {
+void finalizeBodies(const ContinuousWorld& w, Workers& workers, bool enableContinuous, const StepContext& ctx) {
     // MovedInside, FastInside: its proxies stay as they are; Fast: a bullet, or a fast body whose
     // proxies re-fit after its sweep.
     enum Motion : uint8_t { Moved, MovedInside, Fast, FastInside, NonFinite };
@@ -132,75 +131,81 @@ void finalizeBodies(World::Impl& w, const StepContext& ctx) {
         b.angle = a1;
         b.xf = b.derivedTransform();
     };
-    const int count = static_cast<int>(w.scratch.bodies.awakeBodies.size());
-    w.scratch.bodies.bodyMotion.resize(static_cast<size_t>(count));
-    w.scratch.bodies.stepStarts.resize(static_cast<size_t>(count));
+    // The parts the loops read most, bound once: through the view each is one load further.
+    Pool<Body>& bodies = w.bodies;
+    SolverBodies& solverBodies = w.scratch.bodies;
+    Broadphase& broadphase = w.broadphase;
+    const ShapeStore& shapes = w.shapes;
+    const int count = static_cast<int>(solverBodies.awakeBodies.size());
+    solverBodies.bodyMotion.resize(static_cast<size_t>(count));
+    solverBodies.stepStarts.resize(static_cast<size_t>(count));
     std::atomic<bool> anyBullet{false};  // only ever set: the same for any split
-    w.workers.parallelFor(count, 256, [&](int begin, int end, int) {
+    workers.parallelFor(count, 256, [&](int begin, int end, int) {
         for (int k = begin; k < end; ++k) {
-            Body& b = w.bodies[w.scratch.bodies.awakeBodies[k]];
+            Body& b = bodies[solverBodies.awakeBodies[k]];
             b.force = {};  // applied: forces last one step
             b.torque = 0.0f;
-            const BodyState& s = w.scratch.bodies.states[k + 1];
-            const float dAngle = w.scratch.bodies.stepRotation[k + 1];
+            const BodyState& s = solverBodies.states[k + 1];
+            const float dAngle = solverBodies.stepRotation[k + 1];
             if (!isFinite(s.v) || !std::isfinite(s.w) || !isFinite(s.dp) || !std::isfinite(dAngle)) {
-                w.scratch.bodies.bodyMotion[k] = NonFinite;
+                solverBodies.bodyMotion[k] = NonFinite;
                 continue;
             }
             if (b.bullet) anyBullet.store(true, std::memory_order_relaxed);
             const Vec2 c1 = b.center + s.dp;
             const float a1 = b.angle + dAngle;
-            const int index = w.scratch.bodies.awakeBodies[k];
-            if (w.def.enableContinuous && isFast(w, index, b.center, b.angle, c1, a1)) {
+            const int index = solverBodies.awakeBodies[k];
+            if (enableContinuous && isFast(broadphase, bodies, shapes, index, b.center, b.angle, c1, a1)) {
                 // Swept against static shapes, which no worker moves: side by side like the rest.
                 const BodyPose start{b.center, b.angle};
-                w.scratch.bodies.stepStarts[k] = start;
+                solverBodies.stepStarts[k] = start;
                 moveTo(b, s, c1, a1);
                 if (b.bullet) {
-                    w.scratch.bodies.bodyMotion[k] = Fast;  // it waits for every other body (continuous_impacts.cpp)
+                    solverBodies.bodyMotion[k] = Fast;  // it waits for every other body (continuous_impacts.cpp)
                     continue;
                 }
                 solveContinuous(w, index, start.center, start.angle);
-                w.scratch.bodies.bodyMotion[k] = boxesInside(w, index, b.center, b.xf) ? FastInside : Fast;
+                solverBodies.bodyMotion[k] = boxesInside(broadphase, bodies, shapes, index, b.center, b.xf) ? FastInside : Fast;
                 continue;
             }
             moveTo(b, s, c1, a1);
-            w.scratch.bodies.bodyMotion[k] = boxesInside(w, index, c1, b.xf) ? MovedInside : Moved;
+            solverBodies.bodyMotion[k] = boxesInside(broadphase, bodies, shapes, index, c1, b.xf) ? MovedInside : Moved;
         }
     });
     for (int k = 0; k < count; ++k) {
-        if (w.scratch.bodies.bodyMotion[k] == MovedInside || w.scratch.bodies.bodyMotion[k] == FastInside) continue;  // most bodies: no more to do
-        const int index = w.scratch.bodies.awakeBodies[k];
-        Body& b = w.bodies[index];
-        const BodyState& s = w.scratch.bodies.states[k + 1];
-        if (w.scratch.bodies.bodyMotion[k] == NonFinite) {
-            w.freeze(index);                            // where it was before the step,
-            w.broadphase.synchronizeProxies(w.shapes, w.bodies, index, b.xf, {});  // perhaps outside the boxes re-fitted ahead
+        if (solverBodies.bodyMotion[k] == MovedInside || solverBodies.bodyMotion[k] == FastInside) continue;  // most bodies: no more to do
+        const int index = solverBodies.awakeBodies[k];
+        Body& b = bodies[index];
+        const BodyState& s = solverBodies.states[k + 1];
+        if (solverBodies.bodyMotion[k] == NonFinite) {
+            freeze(b, w.frozenBodies);  // where it was before the step,
+            broadphase.synchronizeProxies(shapes, bodies, index, b.xf, {});  // perhaps outside the boxes re-fitted ahead
             continue;
         }
-        if (w.scratch.bodies.bodyMotion[k] == Moved) {
-            refitEscaped(w, index, b.center, b.xf, s.dp);
+        if (solverBodies.bodyMotion[k] == Moved) {
+            refitEscaped(broadphase, bodies, shapes, index, b.center, b.xf, s.dp);
             continue;
         }
-        if (!b.bullet) refitEscaped(w, index, b.center, b.xf, b.center - w.scratch.bodies.stepStarts[k].center);
+        if (!b.bullet)
+            refitEscaped(broadphase, bodies, shapes, index, b.center, b.xf, b.center - solverBodies.stepStarts[k].center);
     }
     // Bullets wait for every other body, then meet the fast ones too (continuous_impacts.cpp):
     // the fast bodies become movers, where there is a bullet.
     w.scratch.continuous.movers.clear();
     const bool listMovers = anyBullet.load(std::memory_order_relaxed);
     for (int k = 0; listMovers && k < count; ++k) {
-        if (w.scratch.bodies.bodyMotion[k] != Fast && w.scratch.bodies.bodyMotion[k] != FastInside) continue;
-        const Body& b = w.bodies[w.scratch.bodies.awakeBodies[k]];
-        const BodyPose& start = w.scratch.bodies.stepStarts[k];
-        w.scratch.continuous.movers.push_back({.body = w.scratch.bodies.awakeBodies[k], .c0 = start.center, .c1 = b.center, .a0 = start.angle,
+        if (solverBodies.bodyMotion[k] != Fast && solverBodies.bodyMotion[k] != FastInside) continue;
+        const Body& b = bodies[solverBodies.awakeBodies[k]];
+        const BodyPose& start = solverBodies.stepStarts[k];
+        w.scratch.continuous.movers.push_back({.body = solverBodies.awakeBodies[k], .c0 = start.center, .c1 = b.center, .a0 = start.angle,
                                     .a1 = b.angle, .v = b.v, .w = b.w, .stepStart = start.center, .fast = true});
     }
     if (!w.scratch.continuous.movers.empty()) solveMovingImpacts(w, ctx);
     // The forces of the bodies outside the solver (a body put to sleep with its forces) go too.
-    for (int i = 0; i < w.bodies.capacity(); ++i) {
-        if (w.scratch.bodies.bodySlots[static_cast<size_t>(i)] != 0) continue;
-        w.bodies[i].force = {};
-        w.bodies[i].torque = 0.0f;
+    for (int i = 0; i < bodies.capacity(); ++i) {
+        if (solverBodies.bodySlots[static_cast<size_t>(i)] != 0) continue;
+        bodies[i].force = {};
+        bodies[i].torque = 0.0f;
     }
 }
 

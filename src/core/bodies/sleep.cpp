@@ -4,8 +4,8 @@
 #include <limits>
 #include <numeric>
 
-#include "core/world/stages.hpp"
 #include "core/base/union_find.hpp"
+#include "core/world/stages.hpp"
 
 namespace perpdot {
 
@@ -18,12 +18,12 @@ constexpr float timeToSleep = 0.5f;                       // s
 
 }  // namespace
 
-void updateSleep(World::Impl& w, float h) {
-    if (!w.def.enableSleep) return;
-    const size_t n = w.bodies.capacity();
+void updateSleep(Pool<Body>& bodies, const ContactCache& cache, const JointStore& joints,
+                 std::span<const int> awakeBodies, IslandScratch& islands, float h) {
+    const size_t n = bodies.capacity();
     bool anySleepy = false;
-    for (int i : w.scratch.bodies.awakeBodies) {
-        Body& b = w.bodies[i];
+    for (int i : awakeBodies) {
+        Body& b = bodies[i];
         if (!b.allowSleep || b.w * b.w > angularSleepTolerance * angularSleepTolerance ||
             dot(b.v, b.v) > linearSleepTolerance * linearSleepTolerance) {
             b.sleepTime = 0.0f;
@@ -36,43 +36,41 @@ void updateSleep(World::Impl& w, float h) {
 
     // Every body starts as its own island, those woken after the step's integration (by a broken
     // joint) too: they are awake but not among awakeBodies, and no value of an earlier step is read.
-    w.scratch.islands.parent.resize(n);
-    std::iota(w.scratch.islands.parent.begin(), w.scratch.islands.parent.end(), 0);
+    islands.parent.resize(n);
+    std::iota(islands.parent.begin(), islands.parent.end(), 0);
 
-    auto joinable = [&](int body) { return w.bodies[body].type == BodyType::Dynamic && w.bodies[body].awake; };
-    w.contactCache.contacts.forEachLive([&](int, const Contact& c) {
-        if (c.touching && joinable(c.bodyA) && joinable(c.bodyB)) unite(w.scratch.islands.parent, c.bodyA, c.bodyB);
+    // Touching contacts and joints join awake dynamic bodies.
+    auto join = [&](int a, int b) {
+        auto joinable = [&](int body) { return bodies[body].type == BodyType::Dynamic && bodies[body].awake; };
+        if (joinable(a) && joinable(b)) unite(islands.parent, a, b);
+    };
+    cache.contacts.forEachLive([&](int, const Contact& c) {
+        if (c.touching) join(c.bodyA, c.bodyB);
     });
     forEachJointPair(
-        w,
-        [](void* context, int a, int b) {
-            World::Impl& world = *static_cast<World::Impl*>(context);
-            auto ok = [&](int i) { return world.bodies[i].type == BodyType::Dynamic && world.bodies[i].awake; };
-            if (ok(a) && ok(b)) unite(world.scratch.islands.parent, a, b);
-        },
-        &w);
+        joints, [](void* context, int a, int b) { (*static_cast<decltype(join)*>(context))(a, b); }, &join);
 
     // The island sleeps when its least sleepy body has been still long enough. islands.minSleep and
     // islands.head reuse the parent array's index space.
-    w.scratch.islands.minSleep.assign(n, std::numeric_limits<float>::max());
-    w.scratch.islands.head.assign(n, -1);
-    for (int i : w.scratch.bodies.awakeBodies) {
-        const int root = findRoot(w.scratch.islands.parent, i);
-        w.scratch.islands.minSleep[root] = std::min(w.scratch.islands.minSleep[root], w.bodies[i].sleepTime);
+    islands.minSleep.assign(n, std::numeric_limits<float>::max());
+    islands.head.assign(n, -1);
+    for (int i : awakeBodies) {
+        const int root = findRoot(islands.parent, i);
+        islands.minSleep[root] = std::min(islands.minSleep[root], bodies[i].sleepTime);
     }
-    for (int i : w.scratch.bodies.awakeBodies) {
-        const int root = findRoot(w.scratch.islands.parent, i);
-        if (w.scratch.islands.minSleep[root] < timeToSleep) continue;
-        Body& b = w.bodies[i];
+    for (int i : awakeBodies) {
+        const int root = findRoot(islands.parent, i);
+        if (islands.minSleep[root] < timeToSleep) continue;
+        Body& b = bodies[i];
         b.awake = false;
         b.v = {};
         b.w = 0.0f;
         // Thread the island into a ring so that waking any member wakes all.
-        if (w.scratch.islands.head[root] < 0) {
-            w.scratch.islands.head[root] = i;
+        if (islands.head[root] < 0) {
+            islands.head[root] = i;
             b.islandNext = i;
         } else {
-            Body& head = w.bodies[w.scratch.islands.head[root]];
+            Body& head = bodies[islands.head[root]];
             b.islandNext = head.islandNext;
             head.islandNext = i;
         }

@@ -53,15 +53,7 @@ SegmentPass passOfCentre(Vec2 p1, Vec2 p2, bool oneSided, Vec2 start, Vec2 end, 
 
 }  // namespace
 
-bool isFast(World::Impl& w, int index, Vec2 c0, float a0, Vec2 c1, float a1) {
-    if (w.bodies[index].type != BodyType::Dynamic) return false;
-    const BoxRoom& shapes = knownShapes(w, index);
-    // Largest distance any point travelled: |Δc| + |Δθ|·(radius about the centre of mass).
-    const float travel = distance(c0, c1) + std::fabs(a1 - a0) * shapes.sweepRadius;
-    return travel > shapes.fastTravel;
-}
-
-float staticImpact(const World::Impl& w, int index, const collide::Sweep& sweep) {
+float staticImpact(const ContinuousWorld& w, int index, const collide::Sweep& sweep) {
     const Body& b = w.bodies[index];
     const Rot q0 = Rot::fromAngle(sweep.a1), q1 = Rot::fromAngle(sweep.a2);
     const Transform xf0{sweep.c1 - rotate(q0, b.localCenter), q0}, xf1{sweep.c2 - rotate(q1, b.localCenter), q1};
@@ -75,7 +67,7 @@ float staticImpact(const World::Impl& w, int index, const collide::Sweep& sweep)
             const ShapeData& other = w.shapes[key.shape];
             const Body& ob = w.bodies[other.body];
             if (other.sensor || !collide::CollisionSystem::canCollide(shape.type, other.type) ||
-                !shouldCollide(shape.filter, other.filter) || !jointAllowsCollision(w.bodies, *w.joints, index, other.body))
+                !shouldCollide(shape.filter, other.filter) || !jointAllowsCollision(w.bodies, w.joints, index, other.body))
                 return true;
             Vec2 p1, p2;
             SegmentPass pass = SegmentPass::Nears;  // what a non-segment shape is treated as
@@ -98,7 +90,7 @@ float staticImpact(const World::Impl& w, int index, const collide::Sweep& sweep)
     return t;
 }
 
-void solveContinuous(World::Impl& w, int index, Vec2 c0, float a0) {
+void solveContinuous(const ContinuousWorld& w, int index, Vec2 c0, float a0) {
     Body& b = w.bodies[index];
     const float t = staticImpact(w, index, {b.localCenter, c0, b.center, a0, b.angle});
     if (t >= 1.0f) return;

@@ -2,9 +2,33 @@
 // shapes; continuous_impacts.cpp: bullets against moving bodies).
 #pragma once
 
-#include "core/world/world_impl.hpp"
+#include <cmath>
+
+#include "collide/collision.hpp"
+#include "core/base/pool.hpp"
+#include "core/bodies/body_store.hpp"
+#include "core/joints/joint.hpp"
+#include "core/shapes/broadphase.hpp"
+#include "core/shapes/shape_store.hpp"
+#include "core/world/step_context.hpp"
+#include "core/world/step_scratch.hpp"
 
 namespace perpdot {
+
+// Continuous collision's view of the world (built by World::step, step.cpp), with World::Impl's
+// names: the bodies it sweeps and moves, the shapes and broadphase it sweeps them through, and
+// the step's scratch it starts from. Passed as `const ContinuousWorld&`; its parts are writable.
+struct ContinuousWorld {
+    Pool<Body>& bodies;
+    const ShapeStore& shapes;
+    Broadphase& broadphase;    // the tree it queries, the box rooms, the proxies it re-fits
+    const JointStore& joints;  // collideConnected
+    struct Scratch {
+        SolverBodies& bodies;  // the awake bodies' solver state, slots and step-start poses
+        MoverScratch& continuous;
+    } scratch;
+    int& frozenBodies;  // counts the bodies frozen (freeze, body_store.hpp)
+};
 
 // Solid shapes are swept; sensors and (massless) segments and chains on a moving body are not.
 inline bool sweeps(const ShapeData& s) { return !s.sensor && s.minExtent > 0.0f; }
@@ -13,19 +37,27 @@ constexpr float safetyFactor = 0.5f;
 
 // The body's box room with its shapes' measures known (refit_ahead.cpp): its reach, and the
 // fastTravel and sweepRadius isFast compares a move with.
-BoxRoom& knownShapes(World::Impl& w, int body);
+BoxRoom& knownShapes(Broadphase& broadphase, const Pool<Body>& bodies, const ShapeStore& shapes, int body);
 
 // Against static shapes (continuous.cpp): a body is fast when its move from (centre c0, angle a0)
 // to (c1, a1) may tunnel; solveContinuous sweeps it from its step-start pose (c0, a0) to its
 // current one and moves it back to the earliest time of impact.
-bool isFast(World::Impl& w, int body, Vec2 c0, float a0, Vec2 c1, float a1);
-void solveContinuous(World::Impl& w, int body, Vec2 c0, float a0);
+// isFast is inline: finalizeBodies asks it of every awake body.
+inline bool isFast(Broadphase& broadphase, const Pool<Body>& bodies, const ShapeStore& shapes, int body, Vec2 c0,
+                   float a0, Vec2 c1, float a1) {
+    if (bodies[body].type != BodyType::Dynamic) return false;
+    const BoxRoom& known = knownShapes(broadphase, bodies, shapes, body);
+    // Largest distance any point travelled: |Δc| + |Δθ|·(radius about the centre of mass).
+    const float travel = distance(c0, c1) + std::fabs(a1 - a0) * known.sweepRadius;
+    return travel > known.fastTravel;
+}
+void solveContinuous(const ContinuousWorld& world, int body, Vec2 c0, float a0);
 // The earliest time of impact in [0, 1] of the body's shapes along `sweep` with static shapes.
-float staticImpact(const World::Impl& w, int body, const collide::Sweep& sweep);
+float staticImpact(const ContinuousWorld& world, int body, const collide::Sweep& sweep);
 
-// Bullets against moving bodies (continuous_impacts.cpp): the step scratch's `movers` holds the
-// fast bodies of this step (bullets not yet synchronised); finds their impacts in time order,
-// resolves each with Hecker's collision impulse and moves the pair on for the rest of the step.
-void solveMovingImpacts(World::Impl& w, const StepContext& ctx);
+// Bullets against moving bodies (continuous_impacts.cpp): scratch.continuous.movers holds the fast
+// bodies of this step (bullets not yet synchronised); finds their impacts in time order, resolves
+// each with Hecker's collision impulse and moves the pair on for the rest of the step.
+void solveMovingImpacts(const ContinuousWorld& world, const StepContext& ctx);
 
 }  // namespace perpdot

@@ -22,6 +22,7 @@
 #include <cmath>
 #include <tuple>
 
+#include "core/contacts/contact_cache.hpp"
 #include "core/contacts/continuous.hpp"
 #include "core/joints/joint.hpp"
 #include "core/bodies/speed_limits.hpp"
@@ -86,7 +87,7 @@ void applyImpulse(Mover& a, const Body& ba, Mover& b, const Body& bb, const Impa
 
 // Movers and pairs: the fast movers are in `movers` already; the bodies their swept boxes meet
 // are added, and every pair with a bullet in it is listed once.
-void collectMoverPairs(World::Impl& w) {
+void collectMoverPairs(const ContinuousWorld& w) {
     std::vector<Mover>& movers = w.scratch.continuous.movers;
     std::vector<MoverPair>& moverPairs = w.scratch.continuous.pairs;
     std::vector<int>& moverOfBody = w.scratch.continuous.moverOfBody;
@@ -144,14 +145,14 @@ void collectMoverPairs(World::Impl& w) {
 }
 
 // The pair's first time of impact after step time t (1: none), and the children that meet.
-void pairImpact(const World::Impl& w, MoverPair& pair, float t) {
+void pairImpact(const ContinuousWorld& w, MoverPair& pair, float t) {
     const std::vector<Mover>& movers = w.scratch.continuous.movers;
     const Mover& a = movers[pair.a];
     const Mover& b = movers[pair.b];
     const Body& ba = w.bodies[a.body];
     const Body& bb = w.bodies[b.body];
     pair.time = 1.0f;
-    if (!jointAllowsCollision(w.bodies, *w.joints, a.body, b.body)) return;
+    if (!jointAllowsCollision(w.bodies, w.joints, a.body, b.body)) return;
     const collide::Sweep sweepA = sweepFrom(a, ba.localCenter, t), sweepB = sweepFrom(b, bb.localCenter, t);
     float first = 1.0f;
     // The swept shape `s` (of the body moving along `sweep`) against every child of `other`.
@@ -183,7 +184,7 @@ void pairImpact(const World::Impl& w, MoverPair& pair, float t) {
 
 // The impact of the pair at step time t: Hecker's impulse at the manifold's points, the pair
 // moved back to first touch, and new paths for the rest of the step.
-void resolveImpact(World::Impl& w, const MoverPair& pair, float t, const StepContext& ctx) {
+void resolveImpact(const ContinuousWorld& w, const MoverPair& pair, float t, const StepContext& ctx) {
     const float h = ctx.h;
     std::vector<Mover>& movers = w.scratch.continuous.movers;
     Mover& a = movers[pair.a];
@@ -221,7 +222,7 @@ void resolveImpact(World::Impl& w, const MoverPair& pair, float t, const StepCon
         p.normalMass = effectiveMass(ba, bb, p.rA, p.rB, n);
         p.tangentMass = effectiveMass(ba, bb, p.rA, p.rB, tangent);
         const float vn = dot(relativeVelocity(a, b, p), n);
-        p.targetSpeed = vn < -w.def.restitutionThreshold ? -restitution * vn : 0.0f;
+        p.targetSpeed = vn < -ctx.restitutionThreshold ? -restitution * vn : 0.0f;
         // Depth over approach speed: how long ago this point's surfaces touched.
         if (manifold.points[i].separation < 0.0f && vn < 0.0f) backTime = std::max(backTime, manifold.points[i].separation / vn);
     }
@@ -270,7 +271,7 @@ void resolveImpact(World::Impl& w, const MoverPair& pair, float t, const StepCon
 
 }  // namespace
 
-void solveMovingImpacts(World::Impl& w, const StepContext& ctx) {
+void solveMovingImpacts(const ContinuousWorld& w, const StepContext& ctx) {
     collectMoverPairs(w);
     std::vector<Mover>& movers = w.scratch.continuous.movers;
     std::vector<MoverPair>& moverPairs = w.scratch.continuous.pairs;
@@ -320,7 +321,7 @@ void solveMovingImpacts(World::Impl& w, const StepContext& ctx) {
         b.xf = b.derivedTransform();
         b.v = m.v;
         b.w = m.w;
-        if (m.frozen) w.freeze(m.body);
+        if (m.frozen) freeze(b, w.frozenBodies);
         w.broadphase.synchronizeProxies(w.shapes, w.bodies, m.body, b.xf, b.center - m.stepStart);
     }
 }

@@ -383,8 +383,8 @@ std::vector<std::pair<JointId, void*>> destroyJointsOf(World::Impl& w, int body)
     return goodbyes;
 }
 
-void forEachJointPair(const World::Impl& w, void (*visit)(void* context, int bodyA, int bodyB), void* context) {
-    store(w).joints.forEachLive([&](int, const Joint& j) { visit(context, j.bodyA, j.bodyB); });
+void forEachJointPair(const JointStore& s, void (*visit)(void* context, int bodyA, int bodyB), void* context) {
+    s.joints.forEachLive([&](int, const Joint& j) { visit(context, j.bodyA, j.bodyB); });
 }
 
 // --- World API ---

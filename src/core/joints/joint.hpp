@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/bodies/body_store.hpp"
 #include "core/world/step_context.hpp"
 #include "perpdot/world.hpp"
 
@@ -96,6 +97,6 @@ bool jointAllowsCollision(const Pool<Body>& bodies, const JointStore& joints, in
 // to call it once the body is gone; otherwise nothing.
 std::vector<std::pair<JointId, void*>> destroyJointsOf(World::Impl& world, int body);
 // Calls visit(bodyA, bodyB) for every joint, for islands.
-void forEachJointPair(const World::Impl& world, void (*visit)(void* context, int bodyA, int bodyB), void* context);
+void forEachJointPair(const JointStore& joints, void (*visit)(void* context, int bodyA, int bodyB), void* context);
 
 }  // namespace perpdot

@@ -18,7 +18,6 @@
 #include <limits>
 #include <optional>
 
-#include "core/contacts/continuous.hpp"
 #include "core/world/stages.hpp"
 
 namespace perpdot {
@@ -45,18 +44,18 @@ constexpr float most = std::numeric_limits<float>::max();
 
 }  // namespace
 
-BoxRoom& knownShapes(World::Impl& w, int body) {
-    BoxRoom& known = w.broadphase.boxRooms[body];
+BoxRoom& knownShapes(Broadphase& broadphase, const Pool<Body>& bodies, const ShapeStore& shapes, int body) {
+    BoxRoom& known = broadphase.boxRooms[body];
     if (known.reach >= 0.0f) return known;
     // Forgotten: the shapes or the centre of mass changed.
-    const Body& b = w.bodies[body];
+    const Body& b = bodies[body];
     known.reach = 0.0f;
     float minExtent = most, maxExtent = 0.0f;
     for (int s : b.shapes) {
-        known.reach = std::max(known.reach, w.broadphase.collision.turningReach(s, b.localCenter));
-        if (!sweeps(w.shapes[s])) continue;
-        minExtent = std::min(minExtent, w.shapes[s].minExtent);
-        maxExtent = std::max(maxExtent, w.shapes[s].maxExtent);
+        known.reach = std::max(known.reach, broadphase.collision.turningReach(s, b.localCenter));
+        if (!sweeps(shapes[s])) continue;
+        minExtent = std::min(minExtent, shapes[s].minExtent);
+        maxExtent = std::max(maxExtent, shapes[s].maxExtent);
     }
     known.fastTravel = maxExtent > 0.0f ? safetyFactor * minExtent : std::numeric_limits<float>::infinity();
     known.sweepRadius = maxExtent + length(b.localCenter);
@@ -74,17 +73,17 @@ struct SoleBox {
 // The body's boxes at pose xf against their fat AABBs, into its box room; with `refitAlong`, the
 // boxes that stick out are re-fitted first (grown along that displacement). Whether all were inside.
 // A body of one proxy leaves it and its box in `sole` (when given): its re-fit needs no second look.
-bool measureBoxes(World::Impl& w, int body, Vec2 center, const Transform& xf, const Vec2* refitAlong,
-                  SoleBox* sole = nullptr) {
-    BoxRoom& known = knownShapes(w, body);
-    const Body& b = w.bodies[body];
+bool measureBoxes(Broadphase& broadphase, const Pool<Body>& bodies, const ShapeStore& shapes, int body, Vec2 center,
+                  const Transform& xf, const Vec2* refitAlong, SoleBox* sole = nullptr) {
+    BoxRoom& known = knownShapes(broadphase, bodies, shapes, body);
+    const Body& b = bodies[body];
     Vec2 below{most, most}, above{most, most};
     for (int s : b.shapes) {
-        const std::vector<int>& proxies = w.shapes[s].proxies;
+        const std::vector<int>& proxies = shapes[s].proxies;
         for (int child = 0; child < static_cast<int>(proxies.size()); ++child) {
-            const AABB box = w.broadphase.collision.computeAABB(s, child, xf);
-            if (refitAlong != nullptr && w.broadphase.collision.room(proxies[child], box) < 0.0f) w.broadphase.refitProxy(proxies[child], box, *refitAlong);
-            foldRoom(below, above, box, w.broadphase.collision.fatAABB(proxies[child]));
+            const AABB box = broadphase.collision.computeAABB(s, child, xf);
+            if (refitAlong != nullptr && broadphase.collision.room(proxies[child], box) < 0.0f) broadphase.refitProxy(proxies[child], box, *refitAlong);
+            foldRoom(below, above, box, broadphase.collision.fatAABB(proxies[child]));
             if (sole != nullptr) *sole = {b.shapes.size() == 1 && proxies.size() == 1 ? proxies[0] : -1, box};
         }
     }
@@ -94,14 +93,14 @@ bool measureBoxes(World::Impl& w, int body, Vec2 center, const Transform& xf, co
 // A body of one proxy whose box `sole` escaped: where its leaf moves in place, its new fat AABB and
 // the box room that leaves are found here, by the workers that predicted the poses (the
 // CollisionSystem reads only); the re-fit task then moves the leaf.
-void planInPlaceMove(World::Impl& w, int body, PredictedPose& p, const SoleBox& sole) {
+void planInPlaceMove(Broadphase& broadphase, int body, PredictedPose& p, const SoleBox& sole) {
     p.inPlace.proxy = -1;
     if (sole.proxy < 0) return;
-    const std::optional<AABB> fat = w.broadphase.collision.inPlaceFat(sole.proxy, sole.box, p.displacement);
+    const std::optional<AABB> fat = broadphase.collision.inPlaceFat(sole.proxy, sole.box, p.displacement);
     if (!fat) return;
     Vec2 below{most, most}, above{most, most};
     foldRoom(below, above, sole.box, *fat);
-    rememberRoom(w.broadphase.boxRooms[body], p.center, p.xf.q, below, above);
+    rememberRoom(broadphase.boxRooms[body], p.center, p.xf.q, below, above);
     p.inPlace = {sole.proxy, *fat};
 }
 
@@ -109,14 +108,14 @@ void planInPlaceMove(World::Impl& w, int body, PredictedPose& p, const SoleBox& 
 // measured and re-fitted as measureBoxes does. First, the contacts found apart are released:
 // serial work too, which nothing reads before the next pair update.
 void refitPredicted(int, int, int, void* world) {
-    World::Impl& w = *static_cast<World::Impl*>(world);
+    const RefitWorld& w = *static_cast<const RefitWorld*>(world);
     releaseApartContacts(w.contactCache);
     const std::vector<PredictedPose>& poses = w.scratch.bodies.predictedPoses;
     for (size_t k = 0; k < poses.size(); ++k) {
         const PredictedPose& p = poses[k];
         if (!p.refit) continue;
         if (p.inPlace.proxy >= 0) w.broadphase.moveInPlace(p.inPlace.proxy, p.inPlace.fat);
-        else refitEscaped(w, w.scratch.bodies.awakeBodies[k], p.center, p.xf, p.displacement);
+        else refitEscaped(w.broadphase, w.bodies, w.shapes, w.scratch.bodies.awakeBodies[k], p.center, p.xf, p.displacement);
     }
     // A worn tree is built anew here too, beside the solver rather than before the next queries.
     w.broadphase.collision.rebuildTreeIfWorn();
@@ -124,24 +123,31 @@ void refitPredicted(int, int, int, void* world) {
 
 }  // namespace
 
-bool boxesInside(World::Impl& w, int body, Vec2 center, const Transform& xf) {
-    return w.broadphase.boxRooms[body].holds(center, xf.q) || measureBoxes(w, body, center, xf, nullptr);
+bool boxesInside(Broadphase& broadphase, const Pool<Body>& bodies, const ShapeStore& shapes, int body, Vec2 center,
+                 const Transform& xf) {
+    return broadphase.boxRooms[body].holds(center, xf.q) || measureBoxes(broadphase, bodies, shapes, body, center, xf, nullptr);
 }
 
-void refitEscaped(World::Impl& w, int body, Vec2 center, const Transform& xf, Vec2 displacement) {
-    measureBoxes(w, body, center, xf, &displacement);
+void refitEscaped(Broadphase& broadphase, const Pool<Body>& bodies, const ShapeStore& shapes, int body, Vec2 center,
+                  const Transform& xf, Vec2 displacement) {
+    measureBoxes(broadphase, bodies, shapes, body, center, xf, &displacement);
 }
 
-void startTreeRefit(World::Impl& w, const StepContext& ctx) {
-    const int count = static_cast<int>(w.scratch.bodies.awakeBodies.size());
-    w.scratch.bodies.predictedPoses.resize(static_cast<size_t>(count));
-    w.broadphase.boxRooms.resize(static_cast<size_t>(w.bodies.capacity()));
+void startTreeRefit(RefitWorld& w, const StepContext& ctx) {
+    // The parts the loop reads, bound once: through the view each is one load further.
+    Broadphase& broadphase = w.broadphase;
+    const Pool<Body>& bodies = w.bodies;
+    const ShapeStore& shapes = w.shapes;
+    SolverBodies& solverBodies = w.scratch.bodies;
+    const int count = static_cast<int>(solverBodies.awakeBodies.size());
+    solverBodies.predictedPoses.resize(static_cast<size_t>(count));
+    broadphase.boxRooms.resize(static_cast<size_t>(bodies.capacity()));
     w.workers.parallelFor(count, 256, [&](int begin, int end, int) {
         for (int k = begin; k < end; ++k) {
-            const int index = w.scratch.bodies.awakeBodies[k];
-            const Body& b = w.bodies[index];
-            const BodyState& s = w.scratch.bodies.states[k + 1];
-            PredictedPose& p = w.scratch.bodies.predictedPoses[k];
+            const int index = solverBodies.awakeBodies[k];
+            const Body& b = bodies[index];
+            const BodyState& s = solverBodies.states[k + 1];
+            PredictedPose& p = solverBodies.predictedPoses[k];
             p.displacement = ctx.h * s.v;
             const float turn = ctx.h * s.w;
             p.refit = false;
@@ -155,14 +161,14 @@ void startTreeRefit(World::Impl& w, const StepContext& ctx) {
             // A body without shapes is never measured, so its box room never holds: its shape list
             // (the body's last cache line) is read only then.
             SoleBox sole;
-            p.refit = !w.broadphase.boxRooms[index].holds(p.center, p.xf.q) && !b.shapes.empty() &&
-                      !measureBoxes(w, index, p.center, p.xf, nullptr, &sole);
-            if (p.refit) planInPlaceMove(w, index, p, sole);
+            p.refit = !broadphase.boxRooms[index].holds(p.center, p.xf.q) && !b.shapes.empty() &&
+                      !measureBoxes(broadphase, bodies, shapes, index, p.center, p.xf, nullptr, &sole);
+            if (p.refit) planInPlaceMove(broadphase, index, p, sole);
         }
     });
     w.workers.runAside(&refitPredicted, &w);
 }
 
-void finishTreeRefit(World::Impl& w) { w.workers.awaitAside(); }
+void finishTreeRefit(Workers& workers) { workers.awaitAside(); }
 
 }  // namespace perpdot

@@ -8,11 +8,11 @@
 #include "core/contacts/contact_world.hpp"
 #include "core/world/events.hpp"
 #include "core/world/stages.hpp"
+#include "core/world/world_impl.hpp"
 
 namespace perpdot {
 
-StepContext makeStepContext(const World::Impl& w, float h) {
-    const WorldDef& def = w.def;
+StepContext makeStepContext(const WorldDef& def, bool hitEvents, float h) {
     StepContext ctx;
     ctx.h = h;
     ctx.invH = 1.0f / h;
@@ -25,7 +25,7 @@ StepContext makeStepContext(const World::Impl& w, float h) {
     ctx.staticSoftness = makeSoftness(2.0f * contactHertz, def.contactDampingRatio, ctx.hs);
     ctx.jointSoftness = makeSoftness(std::min(def.jointHertz, 0.25f * ctx.invHs), def.jointDampingRatio, ctx.hs);
     ctx.restitutionThreshold = def.restitutionThreshold;
-    ctx.hitEvents = w.shapes.anyHitEvents;
+    ctx.hitEvents = hitEvents;
     ctx.maxBiasVelocity = def.contactPushMaxVelocity;
     ctx.maxLinearSpeed = def.maxLinearSpeed;
     ctx.pushSlop = def.box2dSkin ? collide::linearSlop : 0.0f;
@@ -47,6 +47,26 @@ SolverWorld solverWorld(World::Impl& w) {
             .anyRestitution = w.shapes.anyRestitution};
 }
 
+// The tree re-fit's view (stages.hpp).
+RefitWorld refitWorld(World::Impl& w) {
+    return {.broadphase = w.broadphase,
+            .bodies = w.bodies,
+            .shapes = w.shapes,
+            .contactCache = w.contactCache,
+            .scratch = {.bodies = w.scratch.bodies},
+            .workers = w.workers};
+}
+
+// Continuous collision's view (continuous.hpp).
+ContinuousWorld continuousWorld(World::Impl& w) {
+    return {.bodies = w.bodies,
+            .shapes = w.shapes,
+            .broadphase = w.broadphase,
+            .joints = *w.joints,
+            .scratch = {.bodies = w.scratch.bodies, .continuous = w.scratch.continuous},
+            .frozenBodies = w.frozenBodies};
+}
+
 }  // namespace
 
 void World::step(float timeStep) {
@@ -61,11 +81,13 @@ void World::step(float timeStep) {
         explicit Lock(bool& l) : locked(l) { locked = true; }
         ~Lock() { locked = false; }
     } lock(w.locked);
-    // Waits for the tree's re-fits however step() ends (finishTreeRefit is the usual wait).
+    // Waits for the tree's re-fits however step() ends (finishTreeRefit is the usual wait), before
+    // the view the re-fit task reads goes.
+    RefitWorld refit = refitWorld(w);
     struct RefitWait {
-        World::Impl& w;
-        ~RefitWait() { finishTreeRefit(w); }
-    } refitWait{w};
+        Workers& workers;
+        ~RefitWait() { finishTreeRefit(workers); }
+    } refitWait{w.workers};
     w.events.beginStep();
 
     const ContactWorld contacts = contactWorld(w);
@@ -77,11 +99,11 @@ void World::step(float timeStep) {
         return;
     }
 
-    StepContext ctx = makeStepContext(w, timeStep);
-    integrateVelocities(w, ctx);
+    StepContext ctx = makeStepContext(w.def, w.shapes.anyHitEvents, timeStep);
+    integrateVelocities(w.scratch.bodies, w.bodies, w.contactCache, w.def.gravity, w.workers, ctx);
     const SolverWorld solver = solverWorld(w);
     prepareJoints(solver, ctx);   // prepare: effective masses, anchors, warm-start impulses
-    startTreeRefit(w, ctx);       // the broadphase follows the predicted poses on a worker of its own,
+    startTreeRefit(refit, ctx);   // the broadphase follows the predicted poses on a worker of its own,
     selectContacts(solver, ctx);  // beside the touching contacts, their groups (which take their bodies' joints)
     colorJoints(solver, ctx);     // and the joints' serial colouring
     prepareContactBlocks(solver, ctx);
@@ -94,11 +116,12 @@ void World::step(float timeStep) {
     storeContactImpulses(w.scratch.contacts, w.contactCache);  // store: impulses for the next step's warm start (the lanes' stored by the solver)
     storeJointImpulses(solver, ctx);
     reportHitEvents(w.events, w.scratch.contacts, w.contactCache, w.shapes, w.identity, w.def.hitEventThreshold);
-    finishTreeRefit(w);
-    finalizeBodies(w, ctx);  // positions back into the bodies; continuous collision
+    finishTreeRefit(w.workers);
+    finalizeBodies(continuousWorld(w), w.workers, w.def.enableContinuous, ctx);  // positions back into the bodies; continuous collision
     breakJoints(jointRemoval(w), *w.scratch.joints, w.events, w.identity, w.workers, ctx);  // joints whose reaction over the step passed their break limits
 
-    updateSleep(w, timeStep);  // sleep: islands at rest
+    if (w.def.enableSleep)  // sleep: islands at rest
+        updateSleep(w.bodies, w.contactCache, *w.joints, w.scratch.bodies.awakeBodies, w.scratch.islands, timeStep);
     w.events.endStep();
 }
 

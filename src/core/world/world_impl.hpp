@@ -61,9 +61,6 @@ struct World::Impl {
 
     // Bodies (body.cpp)
     void updateMass(int body);
-    // A body whose motion went non-finite, frozen where it is instead of spreading NaN: stopped,
-    // asleep until something wakes it, and counted in stats().frozenBodies.
-    void freeze(int body);
 
     // Shapes (shape.cpp)
     int addShape(BodyId body, const ShapeDef& def);
