@@ -149,9 +149,10 @@ TEST(FeaturesEvents, TheWorldIsLockedInsidePreSolve) {
     features::addGround(world, 0.0f, 50.0f, {.enablePreSolveEvents = true});
     const BodyId body = features::addDynamic(world, {0.0f, 0.5f});
     world.createShape(body, {}, Circle{.radius = 0.5f});
-    int calls = 0, refused = 0;
+    int calls = 0, refused = 0, locked = 0;
     world.setPreSolve([&](ShapeId, ShapeId, const ContactData&) {
         ++calls;
+        locked += world.isLocked() ? 1 : 0;
         try {
             world.createBody({.type = BodyType::Dynamic});
         } catch (const Error&) {
@@ -164,10 +165,13 @@ TEST(FeaturesEvents, TheWorldIsLockedInsidePreSolve) {
         }
         return true;
     });
+    EXPECT_FALSE(world.isLocked());
     features::run(world, 5);
     EXPECT_GT(calls, 0);
+    EXPECT_EQ(locked, calls);
     EXPECT_EQ(refused, 2 * calls);
     EXPECT_EQ(world.bodyCount(), 2);
+    EXPECT_FALSE(world.isLocked());
 }
 
 TEST(FeaturesEvents, PostSolveImpulsesHoldTheWeight) {

@@ -1,5 +1,5 @@
 // The torture suite of `perpdot stress`: the built-in scenes stress_<case>, each run
-// in one engine and judged by one figure against a criterion, the target for perpdot.
+// in one engine and judged by one figure against a criterion written before the results (docs/stress.md).
 #pragma once
 
 #include <string>

@@ -45,7 +45,7 @@ constexpr auto fields(const WorldDef*) {
 }
 
 // Not listed: generation and alive (written by the pool), userData, shapes (written as a list,
-// like the body's contact list, which World::Impl::contactLists holds).
+// like the body's contact list, which the contact cache's bodyLists holds).
 static_assert(reviewedLayout<Body, 144>);
 constexpr auto fields(const Body*) {
     return std::tuple{field("type", &Body::type),

@@ -1,9 +1,8 @@
 // The stages of World::step (step.cpp), in the order it runs them, each a function of the parts of
-// the world it reads and writes, or of a view of them built by step.cpp, and of the step's context:
-// the units the speed issue's threads will run. The contact and joint stages are defined beside
-// their rows (contact_solver*.cpp, joint*.cpp), the body stages in integrate.cpp; pairs and
-// narrowphase are the contact cache's (contact_cache.hpp), continuous collision has its own header
-// (continuous.hpp).
+// the world it reads and writes, or of a view of them built by step.cpp, and of the step's context.
+// The contact and joint stages are defined beside their rows (contact_solver*.cpp, joint*.cpp), the
+// body stages in integrate.cpp; pairs and narrowphase are the contact cache's (contact_world.hpp),
+// continuous collision has its own header (continuous.hpp).
 #pragma once
 
 #include <span>
