@@ -109,10 +109,10 @@ JointId jointId(const World::Impl& w, const Joint& joint) {
 }
 
 const Body& checkedBody(const World::Impl& w, BodyId id, const char* call) { return w.body(id, call); }
-
-JointWorld jointWorld(World::Impl& w) { return {.joints = *w.joints, .bodies = w.bodies, .locked = w.locked}; }
 const Body& bodyAt(const World::Impl& w, int index) { return w.bodies[index]; }
 BodyId bodyIdAt(const World::Impl& w, int index) { return w.bodyId(index); }
+
+JointWorld jointWorld(World::Impl& w) { return {.joints = *w.joints, .bodies = w.bodies, .locked = w.locked}; }
 
 // --- Solver stages ---
 

@@ -5,7 +5,6 @@
 #include <utility>
 #include <vector>
 
-#include "core/bodies/body_store.hpp"
 #include "core/world/step_context.hpp"
 #include "perpdot/world.hpp"
 
