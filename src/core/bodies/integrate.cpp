@@ -172,10 +172,19 @@ void finalizeBodies(const ContinuousWorld& w, Workers& workers, bool enableConti
             solverBodies.bodyMotion[k] = boxesInside(broadphase, bodies, shapes, index, c1, b.xf) ? MovedInside : Moved;
         }
     });
+    // The largest 1/m of the awake bodies, the lightest a fast body may strike (solveStrikes).
+    float lightest = 0.0f;
+    for (int k = 0; k < count; ++k) lightest = std::max(lightest, solverBodies.states[k + 1].invMass);
     for (int k = 0; k < count; ++k) {
-        if (solverBodies.bodyMotion[k] == MovedInside || solverBodies.bodyMotion[k] == FastInside) continue;  // most bodies: no more to do
+        if (solverBodies.bodyMotion[k] == MovedInside) continue;  // most bodies: no more to do
         const int index = solverBodies.awakeBodies[k];
         Body& b = bodies[index];
+        if (solverBodies.bodyMotion[k] == FastInside) {
+            // Swept against the bodies it strikes, all of them final now; re-fitted where it stopped.
+            if (!b.bullet && solveStrikes(w, index, solverBodies.stepStarts[k].center, solverBodies.stepStarts[k].angle, lightest))
+                refitEscaped(broadphase, bodies, shapes, index, b.center, b.xf, b.center - solverBodies.stepStarts[k].center);
+            continue;
+        }
         const BodyState& s = solverBodies.states[k + 1];
         if (solverBodies.bodyMotion[k] == NonFinite) {
             freeze(b, w.frozenBodies);  // where it was before the step,
@@ -186,8 +195,10 @@ void finalizeBodies(const ContinuousWorld& w, Workers& workers, bool enableConti
             refitEscaped(broadphase, bodies, shapes, index, b.center, b.xf, s.dp);
             continue;
         }
-        if (!b.bullet)
+        if (!b.bullet) {
+            solveStrikes(w, index, solverBodies.stepStarts[k].center, solverBodies.stepStarts[k].angle, lightest);
             refitEscaped(broadphase, bodies, shapes, index, b.center, b.xf, b.center - solverBodies.stepStarts[k].center);
+        }
     }
     // Bullets wait for every other body, then meet the fast ones too (continuous_impacts.cpp):
     // the fast bodies become movers, where there is a bullet.

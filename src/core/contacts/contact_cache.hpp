@@ -18,6 +18,11 @@
 
 namespace perpdot {
 
+// A hit: a body at least hitRatio times heavier than the body it strikes. A fast one stops at the
+// struck body's surface at the end of its step (continuous.cpp, solveStrikes), and a contact point
+// closing on a jointed struck body solves its joints' rows with its contacts (contact_groups.cpp).
+inline constexpr float hitRatio = 10;
+
 // A manifold point, the fields the solver reads and writes first (prefetchSolverFields).
 struct ContactPointState {
     Vec2 anchorA, anchorB;  // from each body's centre of mass to the point

@@ -3,6 +3,12 @@
 // pose with the time of impact (CollisionSystem::timeOfImpact: conservative advancement on
 // b2Distance) against the static shapes around the sweep, and moved back to the
 // earliest time of impact t < 1. Its velocity is kept: the next step's contact stops it.
+// A fast body is swept the same way against the jointed bodies it strikes (hitRatio times lighter,
+// at their end poses), once every body is final: without it a heavy ball at 10 m/s (16.7 cm a
+// step at 60 Hz) ends its first step 6.7 cm inside a light hinged arm it had no contact with yet,
+// which its joint holds in place. A free light body is not swept against: the next step's contact
+// pushes it out, where a heavy body moved back at every hit would fall behind its own velocity (a
+// motor-driven bar stirring light debris would turn less than its ω·t).
 // Bullets against moving bodies: continuous_impacts.cpp.
 #include <algorithm>
 #include <cmath>
@@ -51,20 +57,24 @@ SegmentPass passOfCentre(Vec2 p1, Vec2 p2, bool oneSided, Vec2 start, Vec2 end, 
     return d2 < 0.0f ? SegmentPass::Crosses : SegmentPass::Nears;
 }
 
-}  // namespace
-
-float staticImpact(const ContinuousWorld& w, int index, const collide::Sweep& sweep) {
+// The earliest time of impact in [0, 1] of the body's shapes along `sweep` with the shapes around
+// it that `meets` (a shape's body) accepts, each still at its pose: static shapes (a query of the
+// static proxies) or those of bodies it strikes (a query of all).
+template <class Meets>
+float earliestImpact(const ContinuousWorld& w, int index, const collide::Sweep& sweep, bool staticOnly, Meets&& meets) {
     const Body& b = w.bodies[index];
     const Rot q0 = Rot::fromAngle(sweep.a1), q1 = Rot::fromAngle(sweep.a2);
     const Transform xf0{sweep.c1 - rotate(q0, b.localCenter), q0}, xf1{sweep.c2 - rotate(q1, b.localCenter), q1};
+    const collide::CollisionSystem& collision = w.broadphase.collision;
     float t = 1.0f;
     for (int s : b.shapes) {
         const ShapeData& shape = w.shapes[s];
         if (!sweeps(shape)) continue;
-        const AABB start = w.broadphase.collision.computeAABB(s, 0, xf0), end = w.broadphase.collision.computeAABB(s, 0, xf1);
-        w.broadphase.collision.queryStatic(combine(start, end), [&](int proxy) {
-            const collide::ChildKey key = w.broadphase.collision.proxyKey(proxy);
+        const AABB start = collision.computeAABB(s, 0, xf0), end = collision.computeAABB(s, 0, xf1);
+        auto visit = [&](int proxy) {
+            const collide::ChildKey key = collision.proxyKey(proxy);
             const ShapeData& other = w.shapes[key.shape];
+            if (other.body == index || !meets(other.body)) return true;
             const Body& ob = w.bodies[other.body];
             if (other.sensor || !collide::CollisionSystem::canCollide(shape.type, other.type) ||
                 !shouldCollide(shape.filter, other.filter) || !jointAllowsCollision(w.bodies, w.joints, index, other.body))
@@ -76,28 +86,65 @@ float staticImpact(const ContinuousWorld& w, int index, const collide::Sweep& sw
                 if (pass == SegmentPass::Misses) return true;
             }
             const collide::Sweep still{ob.localCenter, ob.center, ob.center, ob.angle, ob.angle};
-            float toi = w.broadphase.collision.timeOfImpact({s, 0}, sweep, key, still);
+            float toi = collision.timeOfImpact({s, 0}, sweep, key, still);
             // The shape's core (a circle of a quarter of its extent, which turning does not change)
             // must still not pass when the shape was already touching at the start, or when the
             // centre crossed the segment but the time of impact saw none: a shape turning by
             // radians in one step can defeat its separating-axis advance.
             if (toi == 0.0f || (toi >= 1.0f && pass == SegmentPass::Crosses))
-                toi = w.broadphase.collision.coreTimeOfImpact(s, 0.25f * shape.minExtent, sweep, key, still);
+                toi = collision.coreTimeOfImpact(s, 0.25f * shape.minExtent, sweep, key, still);
             if (toi > 0.0f && toi < t) t = toi;
             return true;
-        });
+        };
+        if (staticOnly)
+            collision.queryStatic(combine(start, end), visit);
+        else
+            collision.query(combine(start, end), visit);
     }
     return t;
 }
 
+// Back to the pose at the time of impact t < 1 along `sweep`: c = c0 + t (c1 - c0), θ = θ0 + t (θ1 - θ0).
+void moveBack(Body& b, const collide::Sweep& sweep, float t) {
+    b.center = sweep.c1 + t * (sweep.c2 - sweep.c1);
+    b.angle = sweep.a1 + t * (sweep.a2 - sweep.a1);
+    b.xf = b.derivedTransform();
+}
+
+}  // namespace
+
+float staticImpact(const ContinuousWorld& w, int index, const collide::Sweep& sweep) {
+    return earliestImpact(w, index, sweep, true, [](int) { return true; });
+}
+
 void solveContinuous(const ContinuousWorld& w, int index, Vec2 c0, float a0) {
     Body& b = w.bodies[index];
-    const float t = staticImpact(w, index, {b.localCenter, c0, b.center, a0, b.angle});
-    if (t >= 1.0f) return;
-    // Back to the pose at the time of impact: c = c0 + t (c1 - c0), θ = θ0 + t (θ1 - θ0).
-    b.center = c0 + t * (b.center - c0);
-    b.angle = a0 + t * (b.angle - a0);
-    b.xf = b.derivedTransform();
+    const collide::Sweep sweep{b.localCenter, c0, b.center, a0, b.angle};
+    const float t = staticImpact(w, index, sweep);
+    if (t < 1.0f) moveBack(b, sweep, t);
+}
+
+bool solveStrikes(const ContinuousWorld& w, int index, Vec2 c0, float a0, float lightest) {
+    Body& b = w.bodies[index];
+    if (lightest < hitRatio * b.invMass) return false;  // no awake body it could strike: no query
+    const SolverBodies& solverBodies = w.scratch.bodies;
+    const BoxRoom& known = knownShapes(w.broadphase, w.bodies, w.shapes, index);
+    const Vec2 travel = b.center - c0;
+    const float turn = std::fabs(b.angle - a0) * known.sweepRadius;
+    // An awake jointed body hitRatio times lighter, passed by more than fastTravel relative to its
+    // own move (a body carried or pushed along is not struck).
+    const auto struck = [&](int other) {
+        const int slot = solverBodies.bodySlots[static_cast<size_t>(other)];
+        if (slot == 0) return false;
+        const BodyState& s = solverBodies.states[static_cast<size_t>(slot)];
+        return s.invMass >= hitRatio * b.invMass && w.bodies[other].jointCount > 0 &&
+               length(travel - s.dp) + turn > known.fastTravel;
+    };
+    const collide::Sweep sweep{b.localCenter, c0, b.center, a0, b.angle};
+    const float t = earliestImpact(w, index, sweep, false, struck);
+    if (t >= 1.0f) return false;
+    moveBack(b, sweep, t);
+    return true;
 }
 
 }  // namespace perpdot

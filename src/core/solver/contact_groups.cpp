@@ -161,7 +161,7 @@ void findContactGroups(const SolverWorld& w, const StepContext& ctx) {
     auto struck = [&](const ContactConstraint& c) {
         const BodyState &a = w.scratch.bodies.states[c.indexA], &b = w.scratch.bodies.states[c.indexB];
         const float lighter = std::max(a.invMass, b.invMass), heavier = std::min(a.invMass, b.invMass);
-        if (!(heavier > 0.0f) || lighter < ContactGroups::hitRatio * heavier) return false;
+        if (!(heavier > 0.0f) || lighter < hitRatio * heavier) return false;
         if (w.bodies[w.scratch.bodies.awakeBodies[(a.invMass > b.invMass ? c.indexA : c.indexB) - 1]].jointCount == 0) return false;
         const Contact& contact = w.contactCache.contacts[c.contact];
         for (int i = 0; i < c.pointCount; ++i) {

@@ -57,9 +57,8 @@ struct ContactGroups {
     static constexpr int maxTotalRows = 1024;  // all groups of a step: bounds their work and storage
     static constexpr float loadTrigger = 8;    // in g: λn K_ii / hs of the most loaded row
     // A hit: a contact point closing faster than hitSpeed (m/s) between two moving bodies whose
-    // inverse masses differ by hitRatio or more; it has no load yet.
+    // inverse masses differ by hitRatio (contact_cache.hpp) or more; it has no load yet.
     static constexpr float hitSpeed = 1;
-    static constexpr float hitRatio = 10;
     std::vector<int> constraints;            // indices into ContactScratch::constraints, group by group
     std::vector<int> start;                  // group g is constraints[start[g] .. start[g + 1])
     std::vector<std::array<int, 2>> rows;    // (constraint, point) of each normal row, group by group; (-1, j): jointRows[j]
