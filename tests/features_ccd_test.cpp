@@ -138,18 +138,19 @@ void slideAlong(World& world, BodyId body, Vec2 axis) {
 }
 
 // A 5 kg ball (r = 0.1 m) at 10 m/s, 16.7 cm a step, falls on a 0.1 m thick box of `boxMass`, its
-// surface 10 cm below the ball's (zero gravity), the box free or on a vertical slider: the deepest
-// the ball got into the box over 30 steps, and the two velocities at the end.
+// surface 10 cm below the ball's (zero gravity), the box free or on a vertical slider, awake or
+// asleep: the deepest the ball got into the box over 30 steps, and the two velocities at the end.
 struct Strike {
     float deepest = 0.0f;
     Vec2 ballVelocity, boxVelocity;
 };
 
-Strike strikeBox(float boxMass, bool onSlider) {
+Strike strikeBox(float boxMass, bool onSlider, bool asleep = false) {
     World world(noGravity());
     const BodyId box = features::addDynamic(world, {0.0f, 0.0f});
     world.createShape(box, {.density = boxMass / 0.1f}, makeBox(0.5f, 0.05f));
     if (onSlider) slideAlong(world, box, {0.0f, 1.0f});
+    if (asleep) world.setAwake(box, false);
     const BodyId ball = features::addDynamic(world, {0.0f, 0.25f}, {0.0f, -10.0f});
     world.createShape(ball, {.density = 5.0f / (3.14159265f * 0.01f)}, Circle{.radius = 0.1f});
     Strike strike;
@@ -169,6 +170,7 @@ TEST(FeaturesContinuous, HeavyFastBallStopsAtTheJointedLightBodyItStrikes) {
     // between them exists.
     const Strike strike = strikeBox(0.1f, true);
     EXPECT_LT(strike.deepest, 0.01f);
+    EXPECT_LT(strikeBox(0.1f, true, true).deepest, 0.01f);  // the slider asleep, as an idle door would be
     // The box is knocked ahead of the ball, and momentum along the slider is kept: 5 kg · 10 m/s.
     EXPECT_LE(strike.boxVelocity.y, strike.ballVelocity.y);
     EXPECT_NEAR(5.0f * strike.ballVelocity.y + 0.1f * strike.boxVelocity.y, -50.0f, 0.05f);

@@ -172,16 +172,19 @@ void finalizeBodies(const ContinuousWorld& w, Workers& workers, bool enableConti
             solverBodies.bodyMotion[k] = boxesInside(broadphase, bodies, shapes, index, c1, b.xf) ? MovedInside : Moved;
         }
     });
-    // The largest 1/m of the awake bodies, the lightest a fast body may strike (solveStrikes).
-    float lightest = 0.0f;
-    for (int k = 0; k < count; ++k) lightest = std::max(lightest, solverBodies.states[k + 1].invMass);
+    // The lightest body a fast body may strike (solveStrikes), found at the first that asks.
+    float lightest = -1.0f;
+    const auto strikes = [&](int index, const BodyPose& start) {
+        if (lightest < 0.0f) lightest = lightestJointed(w);
+        return solveStrikes(w, index, start.center, start.angle, lightest);
+    };
     for (int k = 0; k < count; ++k) {
         if (solverBodies.bodyMotion[k] == MovedInside) continue;  // most bodies: no more to do
         const int index = solverBodies.awakeBodies[k];
         Body& b = bodies[index];
         if (solverBodies.bodyMotion[k] == FastInside) {
             // Swept against the bodies it strikes, all of them final now; re-fitted where it stopped.
-            if (!b.bullet && solveStrikes(w, index, solverBodies.stepStarts[k].center, solverBodies.stepStarts[k].angle, lightest))
+            if (!b.bullet && strikes(index, solverBodies.stepStarts[k]))
                 refitEscaped(broadphase, bodies, shapes, index, b.center, b.xf, b.center - solverBodies.stepStarts[k].center);
             continue;
         }
@@ -196,7 +199,7 @@ void finalizeBodies(const ContinuousWorld& w, Workers& workers, bool enableConti
             continue;
         }
         if (!b.bullet) {
-            solveStrikes(w, index, solverBodies.stepStarts[k].center, solverBodies.stepStarts[k].angle, lightest);
+            strikes(index, solverBodies.stepStarts[k]);
             refitEscaped(broadphase, bodies, shapes, index, b.center, b.xf, b.center - solverBodies.stepStarts[k].center);
         }
     }

@@ -124,21 +124,37 @@ void solveContinuous(const ContinuousWorld& w, int index, Vec2 c0, float a0) {
     if (t < 1.0f) moveBack(b, sweep, t);
 }
 
+float lightestJointed(const ContinuousWorld& w) {
+    struct Visit {
+        const Pool<Body>& bodies;
+        float lightest = 0.0f;
+    } visit{w.bodies};
+    forEachJointPair(
+        w.joints,
+        [](void* context, int bodyA, int bodyB) {
+            Visit& v = *static_cast<Visit*>(context);
+            v.lightest = std::max({v.lightest, v.bodies[bodyA].invMass, v.bodies[bodyB].invMass});  // 0 if not dynamic
+        },
+        &visit);
+    return visit.lightest;
+}
+
 bool solveStrikes(const ContinuousWorld& w, int index, Vec2 c0, float a0, float lightest) {
     Body& b = w.bodies[index];
-    if (lightest < hitRatio * b.invMass) return false;  // no awake body it could strike: no query
+    if (lightest < hitRatio * b.invMass) return false;  // no jointed body it could strike: no query
     const SolverBodies& solverBodies = w.scratch.bodies;
     const BoxRoom& known = knownShapes(w.broadphase, w.bodies, w.shapes, index);
     const Vec2 travel = b.center - c0;
     const float turn = std::fabs(b.angle - a0) * known.sweepRadius;
-    // An awake jointed body hitRatio times lighter, passed by more than fastTravel relative to its
-    // own move (a body carried or pushed along is not struck).
+    // A jointed body hitRatio times lighter (dynamic: 1/m of a static or kinematic one is 0),
+    // passed by more than fastTravel relative to its own move (a body carried or pushed along is
+    // not struck; an asleep one stays where it is).
     const auto struck = [&](int other) {
         const int slot = solverBodies.bodySlots[static_cast<size_t>(other)];
-        if (slot == 0) return false;
-        const BodyState& s = solverBodies.states[static_cast<size_t>(slot)];
-        return s.invMass >= hitRatio * b.invMass && w.bodies[other].jointCount > 0 &&
-               length(travel - s.dp) + turn > known.fastTravel;
+        const float invMass = slot != 0 ? solverBodies.states[static_cast<size_t>(slot)].invMass : w.bodies[other].invMass;
+        if (invMass < hitRatio * b.invMass || w.bodies[other].jointCount == 0) return false;
+        const Vec2 otherTravel = slot != 0 ? solverBodies.states[static_cast<size_t>(slot)].dp : Vec2{};
+        return length(travel - otherTravel) + turn > known.fastTravel;
     };
     const collide::Sweep sweep{b.localCenter, c0, b.center, a0, b.angle};
     const float t = earliestImpact(w, index, sweep, false, struck);

@@ -52,12 +52,14 @@ inline bool isFast(Broadphase& broadphase, const Pool<Body>& bodies, const Shape
     return travel > known.fastTravel;
 }
 void solveContinuous(const ContinuousWorld& world, int body, Vec2 c0, float a0);
-// Against bodies it strikes (continuous.cpp), once every body is final: a fast body also stops at an
-// awake jointed body at least hitRatio times lighter (contact_cache.hpp) that it would pass into, at
-// that body's end pose, keeping its velocity for the next step's contact (which solves the struck
-// body's joints with it, contact_groups.cpp). `lightest`: the largest 1/m of the awake bodies.
-// Says whether it moved the body back.
+// Against bodies it strikes (continuous.cpp), once every body is final: a fast body also stops at a
+// jointed body, awake or asleep, at least hitRatio times lighter (contact_cache.hpp) that it would
+// pass into, at that body's end pose, keeping its velocity for the next step's contact (which solves
+// the struck body's joints with it, contact_groups.cpp). `lightest`: lightestJointed, the largest
+// 1/m of a jointed dynamic body (none if no body is that much lighter). Says whether it moved the
+// body back.
 bool solveStrikes(const ContinuousWorld& world, int body, Vec2 c0, float a0, float lightest);
+float lightestJointed(const ContinuousWorld& world);
 // The earliest time of impact in [0, 1] of the body's shapes along `sweep` with static shapes.
 float staticImpact(const ContinuousWorld& world, int body, const collide::Sweep& sweep);
 
