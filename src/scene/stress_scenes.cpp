@@ -2,6 +2,7 @@
 // solver shows its limits. The figures and criteria that judge them are in
 // src/crosscheck/stress.cpp; the scenes say only what is built. Sleeping is turned off per body
 // (allowSleep), so that the exported JSON runs exactly like the built-in scene.
+#include <cmath>
 #include <string>
 
 #include "scene/builtin_registry.hpp"
@@ -190,27 +191,39 @@ Scene sliderStruck() {
     return s;
 }
 
-// A suspension bridge of 20 hinged 0.5 m planks (0.05 kg each) between two posts: a closed loop
-// of joints, carrying a load of 1000 planks' mass dropped on its middle.
+// A suspension bridge of 20 hinged 0.5 m planks (0.05 kg each) hanging between two posts 9.74 m
+// apart, its hinges on a circular arc 0.99 m deep in the middle: a closed loop of joints, carrying a
+// load of 1000 planks' mass placed on its middle. It hangs because a deck pulled straight between
+// posts exactly its length apart carries no load on hinges that do not stretch: the tension that
+// holds a load W at a sag angle θ is W / (2 sin θ), without bound as θ goes to 0.
 Scene loadedBridge() {
     Scene s;
     s.steps = 10 * seconds;
     const int planks = 20;
-    const float half = 0.25f, y = 10.0f, left = -half * planks;
-    addBody(s, {.name = "left_post", .type = BodyType::Static, .position = {left, y}});
-    addBody(s, {.name = "right_post", .type = BodyType::Static, .position = {-left, y}});
+    const float half = 0.25f, y = 10.0f, arc = 0.8f;    // the posts' height; the arc's angle, rad
+    const float step = arc / planks;                    // each plank's share of the arc
+    const float radius = half / std::sin(0.5f * step);  // so that each plank is a chord of it
+    auto hinge = [&](int j) {                           // hinge j of planks + 1, lowest in the middle
+        const float phi = -0.5f * arc + step * float(j);
+        return Vec2{radius * std::sin(phi), y - radius * (std::cos(phi) - std::cos(0.5f * arc))};
+    };
+    addBody(s, {.name = "left_post", .type = BodyType::Static, .position = hinge(0)});
+    addBody(s, {.name = "right_post", .type = BodyType::Static, .position = hinge(planks)});
     std::string previous = "left_post";
     for (int i = 0; i < planks; ++i) {
         const std::string name = "plank" + std::to_string(i);
-        addBody(s, {.name = name, .position = {left + (2.0f * float(i) + 1.0f) * half, y}, .allowSleep = false,
+        const Vec2 p1 = hinge(i), p2 = hinge(i + 1);
+        addBody(s, {.name = name, .position = 0.5f * (p1 + p2), .angle = std::atan2(p2.y - p1.y, p2.x - p1.x), .allowSleep = false,
                     .shapes = {boxShape(half, 0.05f)}});
-        s.joints.push_back({.type = JointType::Revolute, .bodyA = previous, .bodyB = name, .anchor = Vec2{left + 2.0f * float(i) * half, y}});
+        s.joints.push_back({.type = JointType::Revolute, .bodyA = previous, .bodyB = name, .anchor = p1});
         previous = name;
     }
-    s.joints.push_back({.type = JointType::Revolute, .bodyA = previous, .bodyB = "right_post", .anchor = Vec2{-left, y}});
+    s.joints.push_back({.type = JointType::Revolute, .bodyA = previous, .bodyB = "right_post", .anchor = hinge(planks)});
     SceneShape load = boxShape(0.25f, 0.25f);
     load.density = 1000.0f * 0.05f / 0.25f;  // 50 kg
-    addBody(s, {.name = "load", .position = {0.0f, y + 0.3f}, .allowSleep = false, .shapes = {load}});
+    // On the two middle planks, which meet at the lowest hinge at ±step/2: its corners touch them.
+    const float deck = hinge(planks / 2).y + 0.05f + half * std::tan(0.5f * step);
+    addBody(s, {.name = "load", .position = {0.0f, deck + 0.25f}, .allowSleep = false, .shapes = {load}});
     return s;
 }
 }  // namespace
@@ -245,7 +258,7 @@ std::vector<BuiltinScene> stressScenes() {
          sliderStruck},
         {"stress_chain1000", "stress: the 20-link chain with an end 1000 times a link's mass, 10 s", [] { return heavyChain(1000.0f); }},
         {"stress_chain10k", "stress: the 20-link chain with an end 10,000 times a link's mass, 10 s", [] { return heavyChain(10000.0f); }},
-        {"stress_bridge1000", "stress: a 20-plank bridge carrying 1000 times a plank's mass, 10 s", loadedBridge},
+        {"stress_bridge1000", "stress: a hanging 20-plank bridge carrying 1000 times a plank's mass, 10 s", loadedBridge},
     };
 }
 

@@ -27,8 +27,9 @@ struct RevoluteTrees {
     // posts) has a singular K: a tension along it moves no body. Its entries come from floats
     // (relative rounding 6e-8), so a singular K may fail to factor or factor with pivots of noise;
     // raised by 1e-6 it factors, and the tension along the loop takes what the warm start and the
-    // soft step's impulseScale·λ leave it. 1e-7 … 1e-4 all hold `bridge1000`'s hinges (0.2 … 0.5 % of
-    // a plank); 1e-8 and 1e-9 open them 23 and 6 cm; 1e-3 opens `chain10k`'s 2 % of a link.
+    // soft step's impulseScale·λ leave it. 1e-7 … 1e-4 all hold a straight 20-plank bridge with a
+    // middle plank of 1000 times the others' mass to 0.02 … 0.7 mm (RevoluteLoop tests); 1e-8 opens
+    // it 2.2 mm and 1e-9 8.4 m; 1e-3 opens `chain10k`'s 2 % of a link.
     static constexpr double diagonalRaise = 1e-6;
     std::vector<int> joints;    // indices into JointStore::prepared, tree by tree, in prepared order
     std::vector<int> start;     // tree t is joints[start[t] .. start[t + 1])
