@@ -2,9 +2,9 @@
 // solver shows its limits. The figures and criteria that judge them are in
 // src/crosscheck/stress.cpp; the scenes say only what is built. Sleeping is turned off per body
 // (allowSleep), so that the exported JSON runs exactly like the built-in scene.
-#include <cmath>
 #include <string>
 
+#include "perpdot/portable_math.hpp"
 #include "scene/builtin_registry.hpp"
 #include "scene/scene_builders.hpp"
 
@@ -201,11 +201,12 @@ Scene loadedBridge() {
     s.steps = 10 * seconds;
     const int planks = 20;
     const float half = 0.25f, y = 10.0f, arc = 0.8f;    // the posts' height; the arc's angle, rad
-    const float step = arc / planks;                    // each plank's share of the arc
-    const float radius = half / std::sin(0.5f * step);  // so that each plank is a chord of it
-    auto hinge = [&](int j) {                           // hinge j of planks + 1, lowest in the middle
-        const float phi = -0.5f * arc + step * float(j);
-        return Vec2{radius * std::sin(phi), y - radius * (std::cos(phi) - std::cos(0.5f * arc))};
+    const float step = arc / planks;                          // each plank's share of the arc
+    const SinCos halfStep = sinCos(0.5f * step), halfArc = sinCos(0.5f * arc);
+    const float radius = half / halfStep.sin;                 // so that each plank is a chord of it
+    auto hinge = [&](int j) {                                 // hinge j of planks + 1, lowest in the middle
+        const SinCos phi = sinCos(-0.5f * arc + step * float(j));
+        return Vec2{radius * phi.sin, y - radius * (phi.cos - halfArc.cos)};
     };
     addBody(s, {.name = "left_post", .type = BodyType::Static, .position = hinge(0)});
     addBody(s, {.name = "right_post", .type = BodyType::Static, .position = hinge(planks)});
@@ -213,7 +214,7 @@ Scene loadedBridge() {
     for (int i = 0; i < planks; ++i) {
         const std::string name = "plank" + std::to_string(i);
         const Vec2 p1 = hinge(i), p2 = hinge(i + 1);
-        addBody(s, {.name = name, .position = 0.5f * (p1 + p2), .angle = std::atan2(p2.y - p1.y, p2.x - p1.x), .allowSleep = false,
+        addBody(s, {.name = name, .position = 0.5f * (p1 + p2), .angle = atan2(p2.y - p1.y, p2.x - p1.x), .allowSleep = false,
                     .shapes = {boxShape(half, 0.05f)}});
         s.joints.push_back({.type = JointType::Revolute, .bodyA = previous, .bodyB = name, .anchor = p1});
         previous = name;
@@ -222,7 +223,7 @@ Scene loadedBridge() {
     SceneShape load = boxShape(0.25f, 0.25f);
     load.density = 1000.0f * 0.05f / 0.25f;  // 50 kg
     // On the two middle planks, which meet at the lowest hinge at ±step/2: its corners touch them.
-    const float deck = hinge(planks / 2).y + 0.05f + half * std::tan(0.5f * step);
+    const float deck = hinge(planks / 2).y + 0.05f + half * halfStep.sin / halfStep.cos;
     addBody(s, {.name = "load", .position = {0.0f, deck + 0.25f}, .allowSleep = false, .shapes = {load}});
     return s;
 }
