@@ -179,29 +179,25 @@ void finalizeBodies(const ContinuousWorld& w, Workers& workers, bool enableConti
         return solveStrikes(w, index, start.center, start.angle, lightest);
     };
     for (int k = 0; k < count; ++k) {
-        if (solverBodies.bodyMotion[k] == MovedInside) continue;  // most bodies: no more to do
+        const uint8_t motion = solverBodies.bodyMotion[k];
+        if (motion == MovedInside) continue;  // most bodies: no more to do
         const int index = solverBodies.awakeBodies[k];
         Body& b = bodies[index];
-        if (solverBodies.bodyMotion[k] == FastInside) {
-            // Swept against the bodies it strikes, all of them final now; re-fitted where it stopped.
-            if (!b.bullet && strikes(index, solverBodies.stepStarts[k]))
-                refitEscaped(broadphase, bodies, shapes, index, b.center, b.xf, b.center - solverBodies.stepStarts[k].center);
-            continue;
-        }
         const BodyState& s = solverBodies.states[k + 1];
-        if (solverBodies.bodyMotion[k] == NonFinite) {
+        if (motion == NonFinite) {
             freeze(b, w.frozenBodies);  // where it was before the step,
             broadphase.synchronizeProxies(shapes, bodies, index, b.xf, {});  // perhaps outside the boxes re-fitted ahead
             continue;
         }
-        if (solverBodies.bodyMotion[k] == Moved) {
+        if (motion == Moved) {
             refitEscaped(broadphase, bodies, shapes, index, b.center, b.xf, s.dp);
             continue;
         }
-        if (!b.bullet) {
-            strikes(index, solverBodies.stepStarts[k]);
-            refitEscaped(broadphase, bodies, shapes, index, b.center, b.xf, b.center - solverBodies.stepStarts[k].center);
-        }
+        if (b.bullet) continue;  // Fast: it waits for every other body
+        // Fast or FastInside: swept against the bodies it strikes, all of them final now, and
+        // re-fitted where it ends when its boxes no longer hold it or it stopped at a strike.
+        const BodyPose& start = solverBodies.stepStarts[k];
+        if (strikes(index, start) || motion == Fast) refitEscaped(broadphase, bodies, shapes, index, b.center, b.xf, b.center - start.center);
     }
     // Bullets wait for every other body, then meet the fast ones too (continuous_impacts.cpp):
     // the fast bodies become movers, where there is a bullet.
