@@ -153,6 +153,39 @@ TEST(RevoluteLoop, StraightBridgeCarriesAHeavyPlank) {
     EXPECT_LT(m.energyRise, 1e-3f * m.energyScale);
 }
 
+// Outside the direct solve (docs/stress.md, "What the direct solve does not take"): a load resting
+// by contact on a loop. `bridge1000`'s deck (20 planks of 0.05 kg on an arc 0.99 m deep between
+// posts 9.74 m apart) with its 50 kg load set on the two middle planks instead of hung from the
+// lowest hinge: the contact is solved row by row against a plank's own mass, and the load goes
+// through the deck, while the loop keeps its hinges closed.
+TEST(RevoluteLoop, LoadRestingOnTheDeckByContactGoesThroughIt) {
+    World world(WorldDef{.gravity = {0.0f, -g}});
+    const int planks = 20;
+    const float arc = 0.8f, step = arc / static_cast<float>(planks), radius = 0.25f / std::sin(0.5f * step);
+    auto hingeAt = [&](int j) {
+        const float phi = -0.5f * arc + step * static_cast<float>(j);
+        return Vec2{radius * std::sin(phi), 10.0f - radius * (std::cos(phi) - std::cos(0.5f * arc))};
+    };
+    BodyId previous = staticBody(world, hingeAt(0));
+    std::vector<BodyId> bodies;
+    std::vector<JointId> joints;
+    for (int i = 0; i < planks; ++i) {
+        const Vec2 p1 = hingeAt(i), p2 = hingeAt(i + 1);
+        bodies.push_back(dynamicBody(world, 0.5f * (p1 + p2), std::atan2(p2.y - p1.y, p2.x - p1.x)));
+        ShapeDef shape;
+        world.createShape(bodies.back(), shape, makeBox(0.25f, 0.05f));
+        joints.push_back(world.createJoint(hinge(world, previous, bodies.back(), p1)));
+        previous = bodies.back();
+    }
+    joints.push_back(world.createJoint(hinge(world, previous, staticBody(world, hingeAt(planks)), hingeAt(planks))));
+    const float deck = hingeAt(planks / 2).y + 0.05f + 0.25f * std::tan(0.5f * step);  // the middle planks' surface under the load's corners
+    const BodyId load = box(world, {0.0f, deck + 0.25f}, 0.25f, 0.25f, 200.0f);
+    const Motion m = run(world, bodies, joints, 600);
+    EXPECT_LT(m.worstGap, 0.01f * 0.5f);
+    EXPECT_TRUE(std::isfinite(world.position(load).y));
+    EXPECT_LT(world.position(load).y, hingeAt(planks / 2).y - 10.0f) << "the load is through the deck and falling";
+}
+
 // Outside the direct solve (docs/stress.md, "What the direct solve does not take"): hinges with a
 // limit, and groups of more than 32 hinges, run in the sequential passes. A heavy end then opens
 // them — these tests pin how far, over 10 s — while the motion stays finite and takes no energy in.

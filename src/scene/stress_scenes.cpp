@@ -193,9 +193,10 @@ Scene sliderStruck() {
 
 // A suspension bridge of 20 hinged 0.5 m planks (0.05 kg each) hanging between two posts 9.74 m
 // apart, its hinges on a circular arc 0.99 m deep in the middle: a closed loop of joints, carrying a
-// load of 1000 planks' mass placed on its middle. It hangs because a deck pulled straight between
-// posts exactly its length apart carries no load on hinges that do not stretch: the tension that
-// holds a load W at a sag angle θ is W / (2 sin θ), without bound as θ goes to 0.
+// load of 1000 planks' mass hung from its lowest hinge. It hangs because a deck pulled straight
+// between posts exactly its length apart carries no load on hinges that do not stretch: the tension
+// that holds a load W at a sag angle θ is W / (2 sin θ), without bound as θ goes to 0. The arc is
+// not the loaded deck's shape: the load pulls it towards a V, 0.14 m deeper.
 Scene loadedBridge() {
     Scene s;
     s.steps = 10 * seconds;
@@ -222,9 +223,10 @@ Scene loadedBridge() {
     s.joints.push_back({.type = JointType::Revolute, .bodyA = previous, .bodyB = "right_post", .anchor = hinge(planks)});
     SceneShape load = boxShape(0.25f, 0.25f);
     load.density = 1000.0f * 0.05f / 0.25f;  // 50 kg
-    // On the two middle planks, which meet at the lowest hinge at ±step/2: its corners touch them.
-    const float deck = hinge(planks / 2).y + 0.05f + half * halfStep.sin / halfStep.cos;
-    addBody(s, {.name = "load", .position = {0.0f, deck + 0.25f}, .allowSleep = false, .shapes = {load}});
+    // Hung from the lowest hinge on an arm of 0.6 m, 10 cm below the deck.
+    const Vec2 lowest = hinge(planks / 2);
+    addBody(s, {.name = "load", .position = lowest - Vec2{0.0f, 0.6f}, .allowSleep = false, .shapes = {load}});
+    s.joints.push_back({.type = JointType::Revolute, .bodyA = "plank" + std::to_string(planks / 2 - 1), .bodyB = "load", .anchor = lowest});
     return s;
 }
 }  // namespace
