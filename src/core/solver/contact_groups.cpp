@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "core/solver/cholesky.hpp"
+#include "core/solver/complementarity.hpp"
 #include "core/solver/contact_prepare.hpp"
 #include "core/base/union_find.hpp"
 
@@ -14,15 +15,10 @@ namespace {
 
 enum SlotKind : uint8_t { Fixed, Free, Jointed };
 
-// Principal pivots of a pass at most (solveComplementarity); a pass that needs more is solved
-// row by row instead.
-constexpr int maxPivots = 8;
 // K's diagonal is raised by this fraction: more rows than the bodies have freedoms (a box on two
 // tiles: four rows, three freedoms) make K singular, and rows pushing against each other would
 // take any impulse. The rest state gains compliance·F K_ii / ω², a thousandth of the sequential sink.
 constexpr double compliance = 1e-3;
-// A dropped row approaching faster than its target by less than this (m/s) counts as separating.
-constexpr double separationTolerance = 1e-6;
 
 // One side of a normal row: J's entries for the body in solver slot `slot` (lin·v + ang·ω), with
 // the body's inverse mass and inertia. A body that cannot move has zero inverse mass and inertia.
@@ -354,65 +350,10 @@ void findContactGroups(const SolverWorld& w, const StepContext& ctx) {
     g.start.resize(static_cast<size_t>(kept) + 1);
     g.constraints.resize(static_cast<size_t>(g.start.back()));
     // The pivoting's scratch, for the most rows and the largest envelope (its active systems' are within).
-    for (std::vector<double>* v : {&g.lambda, &g.y, &g.x, &g.rhs}) v->resize(std::max(v->size(), static_cast<size_t>(mostRows)));
-    for (std::vector<int>* v : {&g.activeIndex, &g.activeFirst, &g.activeLast}) v->resize(std::max(v->size(), static_cast<size_t>(mostRows)));
-    g.activeDiagonal.resize(std::max(g.activeDiagonal.size(), static_cast<size_t>(mostRows)));
-    g.active.resize(std::max(g.active.size(), static_cast<size_t>(mostRows)));
-    g.activeK.resize(std::max(g.activeK.size(), largest));
+    g.lcp.reserve(mostRows, largest);
 }
 
 namespace {
-
-// x = Δλ, the solution of the linear complementarity problem of the one-sided rows: K Δλ − y = w
-// with λ + Δλ ≥ 0, w ≥ 0 and (λ + Δλ)·w = 0 (a row either pushes or is left separating faster
-// than its target); a free row (freeRow: a joint's equality row) keeps w = 0, λ of either sign. Block principal pivoting (Júdice and Pires): start with every row pushing,
-// solve K_AA Δλ_A = y_A + K_AI λ_I for the pushing rows A (the others drop to λ = 0), then flip
-// every row that breaks its condition and solve again.
-bool solveComplementarity(ContactGroups& g, const EnvelopeShape& shape, const double* K, const double* L, const uint8_t* freeRow) {
-    const int n = shape.n;
-    std::copy(g.y.begin(), g.y.begin() + n, g.x.begin());
-    choleskySolve(L, shape, g.x.data());
-    std::fill(g.active.begin(), g.active.begin() + n, 1);
-    for (int pivot = 0; pivot < maxPivots; ++pivot) {
-        bool flipped = false;
-        for (int r = 0; r < n; ++r) {
-            if (g.active[r]) {
-                if (!freeRow[r] && g.lambda[r] + g.x[r] < 0.0) g.active[r] = 0, flipped = true;
-                continue;
-            }
-            double w = -g.y[r];
-            forEachInRow(K, shape, r, [&](int s, double k) { w += k * g.x[s]; });
-            if (w < -separationTolerance) g.active[r] = 1, flipped = true;
-        }
-        if (!flipped) return true;
-        // K_AA keeps K's envelope: an active row starts at the first active column of its own.
-        int m = 0;
-        for (int c = 0; c < n; ++c) {
-            g.activeIndex[c] = m;
-            m += g.active[c];
-        }
-        size_t entry = 0;
-        for (int r = 0; r < n; ++r) {
-            if (!g.active[r]) continue;
-            const int i = g.activeIndex[r];
-            g.activeFirst[i] = g.activeIndex[shape.first(r)];
-            g.rhs[i] = g.y[r];
-            forEachInRow(K, shape, r, [&](int s, double k) {
-                if (!g.active[s])
-                    g.rhs[i] += k * g.lambda[s];
-                else if (s <= r)
-                    g.activeK[entry++] = k;
-            });
-        }
-        envelopeLayout(g.activeFirst.data(), m, g.activeDiagonal.data());
-        envelopeLastRows(g.activeFirst.data(), m, g.activeLast.data());
-        const EnvelopeShape active{m, g.activeFirst.data(), g.activeLast.data(), g.activeDiagonal.data()};
-        if (!choleskyFactor(g.activeK.data(), active)) return false;
-        choleskySolve(g.activeK.data(), active, g.rhs.data());
-        for (int r = 0, i = 0; r < n; ++r) g.x[r] = g.active[r] ? g.rhs[i++] : -g.lambda[r];
-    }
-    return false;
-}
 
 // One pass of a group's rows as one system, the targets from the velocities before any impulse of
 // the pass: a speculative one-sided row (a contact point or a limit with C > 0) rigid, v → −C/hs
@@ -431,13 +372,13 @@ bool solveGroupRows(ContactScratch& contacts, SolverBodies& bodies, JointScratch
     for (int r = 0; r < n; ++r) {
         const auto [k, i] = g.rows[first + r];
         if (k >= 0) {
-            g.lambda[r] = contacts.constraintRows[k].points[i].normalImpulse;
+            g.lcp.lambda[r] = contacts.constraintRows[k].points[i].normalImpulse;
             continue;
         }
         ContactGroups::JointRow& row = g.jointRows[i];
         if (row.row == 0) directJointErrors(joints, bodies, row.joint, errors.data());
         row.C = errors[row.row];
-        g.lambda[r] = row.lambda;
+        g.lcp.lambda[r] = row.lambda;
     }
     auto target = [&](int r) {  // y_r from the velocities now
         const auto [k, i] = g.rows[first + r];
@@ -459,7 +400,7 @@ bool solveGroupRows(ContactScratch& contacts, SolverBodies& bodies, JointScratch
         if (!g.freeRow[first + r] && C > 0.0f) return -static_cast<double>(v + C * ctx.invHs);
         if (!useBias) return -static_cast<double>(v);
         double kLambda = 0.0;  // (K λ)_r
-        forEachInRow(K, shape, r, [&](int q, double kq) { kLambda += kq * g.lambda[q]; });
+        forEachInRow(K, shape, r, [&](int q, double kq) { kLambda += kq * g.lcp.lambda[q]; });
         return -soft.massScale * (v + bias) - soft.impulseScale * kLambda;
     };
     auto applyJointRow = [&](int r, double impulse) {
@@ -468,13 +409,13 @@ bool solveGroupRows(ContactScratch& contacts, SolverBodies& bodies, JointScratch
         setDirectJointImpulse(joints, row.joint, row.row, static_cast<float>(row.lambda));
         applyRow(sidesOf(contacts, bodies, joints, first + r), bodies, static_cast<float>(impulse));
     };
-    for (int r = 0; r < n; ++r) g.y[r] = target(r);
-    if (!solveComplementarity(g, shape, K, L, &g.freeRow[first])) {
+    for (int r = 0; r < n; ++r) g.lcp.y[r] = target(r);
+    if (!solveComplementarity(g.lcp, shape, K, L, &g.freeRow[first])) {
         for (int r = 0; r < n; ++r) {
             if (g.rows[first + r][0] >= 0) continue;
             double impulse = target(r) / K[shape.origin(r) + r];  // K_rr Δλ = y_r
-            if (!g.freeRow[first + r]) impulse = std::max(g.lambda[r] + impulse, 0.0) - g.lambda[r];
-            g.lambda[r] += impulse;
+            if (!g.freeRow[first + r]) impulse = std::max(g.lcp.lambda[r] + impulse, 0.0) - g.lcp.lambda[r];
+            g.lcp.lambda[r] += impulse;
             applyJointRow(r, impulse);
         }
         return false;
@@ -482,13 +423,13 @@ bool solveGroupRows(ContactScratch& contacts, SolverBodies& bodies, JointScratch
     for (int r = 0; r < n; ++r) {
         const auto [k, i] = g.rows[first + r];
         if (k < 0) {
-            applyJointRow(r, g.x[r]);
+            applyJointRow(r, g.lcp.x[r]);
             continue;
         }
         const ContactConstraint& c = contacts.constraints[k];
         ContactRows<float>& rows = contacts.constraintRows[k];
         ContactPointRows<float>& cp = rows.points[i];
-        const float newImpulse = std::max(cp.normalImpulse + static_cast<float>(g.x[r]), 0.0f);
+        const float newImpulse = std::max(cp.normalImpulse + static_cast<float>(g.lcp.x[r]), 0.0f);
         const float impulse = newImpulse - cp.normalImpulse;
         cp.normalImpulse = newImpulse;
         recordPush(rows, i, impulse, ctx);

@@ -37,6 +37,7 @@
 #include <vector>
 
 #include "core/joints/joint.hpp"
+#include "core/solver/complementarity.hpp"
 #include "core/world/step_context.hpp"
 #include "perpdot/world.hpp"
 
@@ -78,14 +79,12 @@ struct ContactGroups {
     std::vector<double> K, L;                // K = J M⁻¹ Jᵀ of the normal rows and its Cholesky factor
     std::vector<uint8_t> direct;             // by constraint: 1 if a group solves it
     // Scratch, kept to reuse its memory: by solver slot its kind, union-find root and first row
-    // (envelopeFirst), by root its rows, load, rows placed, factor cost and group; per pass the
-    // impulses, targets and active rows of the pivoting and the envelope of their system.
+    // (envelopeFirst), by root its rows, load, rows placed, factor cost and group; per pass its
+    // complementarity problem (the impulses, targets and pivoting).
     std::vector<int> root, rowCount, firstRow, placed, groupOf, jointRowCount;
     std::vector<int64_t> cost;
-    std::vector<uint8_t> kind, loaded, withJoints, active;
-    std::vector<double> lambda, y, x, rhs, activeK;
-    std::vector<int> activeIndex, activeFirst, activeLast;
-    std::vector<size_t> activeDiagonal;
+    std::vector<uint8_t> kind, loaded, withJoints;
+    Complementarity lcp;
     // The inputs of the last search that got as far as the group sizes: the constraints' slots and
     // point counts, the slots' kinds, and whether no group was small enough to solve directly.
     std::vector<std::array<int, 2>> lastSlots;
