@@ -16,20 +16,31 @@ namespace {
 
 using namespace joint_test;
 
-// The key of a prepared revolute joint between solver slots a and b (slot 0: cannot move).
-JointKey hingeBetween(int a, int b, bool limit = false) {
-    return {a, b, JointType::Revolute, a != 0, b != 0, !limit, limit};
-}
+// A revolute joint between solver slots a and b (slot 0: cannot move), with a limit or not; its
+// body b's inverse mass where given (every other body that moves: 1).
+struct Hinge {
+    int a, b;
+    bool limit = false;
+    float invMassB = 1.0f;
+};
+Hinge hingeBetween(int a, int b, bool limit = false) { return {a, b, limit}; }
 
-std::vector<std::vector<int>> treesOf(const std::vector<JointKey>& keys, int slots) {
+std::vector<std::vector<int>> treesOf(const std::vector<Hinge>& hinges, int slots) {
+    std::vector<JointKey> keys;
+    std::vector<BodyState> states(static_cast<size_t>(slots));
+    for (int slot = 1; slot < slots; ++slot) states[slot].invMass = 1.0f;
+    for (const Hinge& h : hinges) {
+        keys.push_back({h.a, h.b, JointType::Revolute, h.a != 0, h.b != 0, true, h.limit, h.limit});
+        if (h.b != 0) states[h.b].invMass = h.invMassB;
+    }
     RevoluteTrees t;
-    findRevoluteTrees(t, keys, slots);
+    findRevoluteTrees(t, keys, states);
     std::vector<std::vector<int>> out;
     for (size_t k = 0; k + 1 < t.start.size(); ++k) out.emplace_back(t.joints.begin() + t.start[k], t.joints.begin() + t.start[k + 1]);
     return out;
 }
 
-TEST(RevoluteTree, LinkedHingesWithoutLimitAreTreesLoopsIncluded) {
+TEST(RevoluteTree, LinkedHingesAreTreesLoopsIncludedWithLimitsWhereMassesDiffer) {
     using Trees = std::vector<std::vector<int>>;
     // A pinned chain 0-1-2-3, and apart from it a free pair of joints 4-5-6.
     EXPECT_EQ(treesOf({hingeBetween(0, 1), hingeBetween(1, 2), hingeBetween(2, 3), hingeBetween(4, 5), hingeBetween(5, 6)}, 7),
@@ -39,7 +50,10 @@ TEST(RevoluteTree, LinkedHingesWithoutLimitAreTreesLoopsIncluded) {
     EXPECT_EQ(treesOf({hingeBetween(0, 1)}, 2), Trees{}) << "one joint: its own 2x2 solve is already exact";
     EXPECT_EQ(treesOf({hingeBetween(1, 2), hingeBetween(2, 3), hingeBetween(3, 1)}, 4), (Trees{{0, 1, 2}})) << "a cycle (K raised)";
     EXPECT_EQ(treesOf({hingeBetween(0, 1), hingeBetween(1, 2), hingeBetween(2, 0)}, 3), (Trees{{0, 1, 2}})) << "two anchors: a bridge";
-    EXPECT_EQ(treesOf({hingeBetween(0, 1), hingeBetween(1, 2, true)}, 3), Trees{}) << "a limit row stays sequential";
+    EXPECT_EQ(treesOf({hingeBetween(0, 1), hingeBetween(1, 2, true)}, 3), Trees{}) << "limits between like masses stay sequential";
+    // The same chain ending in a body 10 times heavier (1/m = 0.1): its limit rows join the tree's system.
+    EXPECT_EQ(treesOf({hingeBetween(0, 1), Hinge{1, 2, true, 0.1f}}, 3), (Trees{{0, 1}}));
+    EXPECT_EQ(treesOf({hingeBetween(0, 1), Hinge{1, 2, true, 0.2f}}, 3), Trees{}) << "5 times heavier: sequential";
 }
 
 // 20 links of 0.5 m, the last 100 times a link's mass, released horizontal (stress_chain): at the

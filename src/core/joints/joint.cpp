@@ -145,7 +145,8 @@ JointKey keyOf(const PreparedJoint& j) {
             j.type,
             j.mass.mA != 0.0f || j.mass.iA != 0.0f,
             j.mass.mB != 0.0f || j.mass.iB != 0.0f,
-            j.type == JointType::Revolute && !j.data.as<RevoluteJoint>().enableLimit && !j.breakable,
+            j.type == JointType::Revolute && !j.breakable,
+            j.type == JointType::Revolute && j.data.as<RevoluteJoint>().enableLimit,
             lanes != nullptr && lanes->optionalRows(j)};
 }
 
@@ -261,7 +262,7 @@ void colorJoints(const SolverWorld& w, const StepContext& ctx) {
     GraphColoring& coloring = w.scratch.coloring;
     coloring.reset(static_cast<int>(w.scratch.bodies.states.size()));
     // Joints of revolute trees take no colour: they are solved directly (joint_tree.hpp).
-    findRevoluteTrees(d.trees, d.keys, static_cast<int>(w.scratch.bodies.states.size()));
+    findRevoluteTrees(d.trees, d.keys, w.scratch.bodies.states);
     stiffenRevoluteTrees(d.trees, d.prepared, ctx.hs, static_cast<int>(w.scratch.bodies.states.size()));
     // Lanes by colour and type: those of joints with the type's rows alone, and of joints with
     // optional rows (a motor, a limit).

@@ -118,9 +118,10 @@ void warmStartRevolute(PreparedJoint& j, JointPair& p) { warmStartJoint<Revolute
 
 void solveRevolute(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool useBias) { solveJoint<RevoluteRowSet>(j, p, ctx, useBias); }
 
-void solveRevoluteAngleRows(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool useBias) {
+void solveRevoluteAngleRows(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool useBias, bool motor, bool limits) {
     RevoluteJoint& r = j.data.as<RevoluteJoint>();
-    const MotorLimitsT<float> angle{r.motorSpeed, r.maxMotorTorque, r.lowerAngle, r.upperAngle, r.enableMotor ? 1.0f : 0.0f, r.enableLimit ? 1.0f : 0.0f};
+    const MotorLimitsT<float> angle{r.motorSpeed,         r.maxMotorTorque, r.lowerAngle, r.upperAngle, motor && r.enableMotor ? 1.0f : 0.0f,
+                                    limits && r.enableLimit ? 1.0f : 0.0f};
     solveMotorAndLimits(p, angularRow, r.axialMass, j.deltaAngle + p.rotation, angle, ctx, useBias, r.motorImpulse, r.lowerImpulse,
                         r.upperImpulse);
 }

@@ -119,7 +119,8 @@ struct JointKey {
     int indexA = 0, indexB = 0;  // solver slots
     JointType type = JointType::Revolute;
     bool movesA = false, movesB = false;  // the side has mass or inertia (static, asleep or kinematic: not)
-    bool hinge = false;                   // an unbreakable revolute joint without limit: a tree may take it (joint_tree.hpp)
+    bool hinge = false;                   // an unbreakable revolute joint: a tree may take it (joint_tree.hpp)
+    bool limited = false;                 // a revolute joint with limits
     bool optionalRows = false;            // in lanes, rows others of its type lack (JointLaneStages)
 };
 
@@ -246,9 +247,10 @@ constexpr int jointTypeCount = static_cast<int>(JointType::Friction) + 1;
 const JointKind* kindOf(JointType type);
 const JointStages& stagesOf(JointType type);  // of a type that exists
 
-// For revolute trees (joint_tree.cpp): a revolute joint's warm start, and its motor and limit rows
-// alone, solved before the tree's point rows.
+// For revolute trees (joint_tree.cpp): a revolute joint's warm start, and its motor row (`motor`)
+// or limit rows (`limits`) alone, where it has them: the motor solved before the tree's block, the
+// limits row by row where the block could not be solved.
 void warmStartRevolute(PreparedJoint& joint, JointPair& pair);
-void solveRevoluteAngleRows(PreparedJoint& joint, JointPair& pair, const StepContext& ctx, bool useBias);
+void solveRevoluteAngleRows(PreparedJoint& joint, JointPair& pair, const StepContext& ctx, bool useBias, bool motor, bool limits);
 
 }  // namespace perpdot
