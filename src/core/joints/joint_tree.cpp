@@ -10,6 +10,7 @@
 #include "core/joints/joint_rows.hpp"
 #include "core/base/union_find.hpp"
 #include "core/solver/cholesky.hpp"
+#include "core/solver/row_sides.hpp"
 #include "core/world/step_scratch.hpp"
 
 namespace perpdot {
@@ -158,27 +159,11 @@ Row treeRow(Kind kind, const JointFrame& f) {
     }
 }
 
-// K_rs of rows r (of joint jr) and s (of joint js, which comes first or is jr): Σ over the moving
-// bodies they share of ±(n_r·n_s/m + s_r s_s/I), with the inverse masses of joint js's sides (a
-// body's inertia is raised per joint by the geometric stiffness, joint_tree_stiffness.hpp).
-double coupling(const PreparedJoint& jr, const Row& r, const PreparedJoint& js, const Row& s) {
-    struct Side {
-        int slot;
-        double sign;
-        Vec2 n;
-        float arm;
-    };
-    const Side sidesR[2] = {{jr.indexA, -1.0, r.n, r.sA}, {jr.indexB, 1.0, r.n, r.sB}};
-    const Side sidesS[2] = {{js.indexA, -1.0, s.n, s.sA}, {js.indexB, 1.0, s.n, s.sB}};
-    const float invMass[2] = {js.mass.mA, js.mass.mB}, invInertia[2] = {js.mass.iA, js.mass.iB};
-    double k = 0.0;
-    for (const Side& a : sidesR)
-        for (int side = 0; side < 2; ++side) {
-            const Side& b = sidesS[side];
-            if (a.slot != b.slot || (invMass[side] == 0.0f && invInertia[side] == 0.0f)) continue;
-            k += a.sign * b.sign * (static_cast<double>(invMass[side]) * dot(a.n, b.n) + static_cast<double>(invInertia[side]) * a.arm * b.arm);
-        }
-    return k;
+// A joint row's sides (row_sides.hpp): −n, −sA on A, n, sB on B, with the joint's inverse masses
+// (its inertias raised by the geometric stiffness, joint_tree_stiffness.hpp, alike for every tree
+// joint at a body).
+std::array<RowSide, 2> sidesOf(const PreparedJoint& j, const Row& r) {
+    return {RowSide{j.indexA, -r.n, -r.sA, j.mass.mA, j.mass.iA}, RowSide{j.indexB, r.n, r.sB, j.mass.mB, j.mass.iB}};
 }
 
 // The rows of tree `tree` at the anchors now (those `keep` takes, by index into rowJoint), into t.rows, and
@@ -214,12 +199,10 @@ EnvelopeShape assemble(SolverBodies& bodies, RevoluteTrees& t, const std::vector
     const size_t size = envelopeLayout(t.firstColumn.data(), n, t.diagonal.data());
     t.K.resize(size);
     const EnvelopeShape shape{n, t.firstColumn.data(), t.lastRow.data(), t.diagonal.data()};
+    auto sides = [&](int r) { return sidesOf(prepared[t.joints[first + t.rowJoint[t.passRows[r]]]], rowOf(t.rows[r])); };
     for (int r = 0; r < n; ++r) {
-        const PreparedJoint& jr = prepared[t.joints[first + t.rowJoint[t.passRows[r]]]];
-        for (int s = 0; s <= r; ++s) {
-            const PreparedJoint& js = prepared[t.joints[first + t.rowJoint[t.passRows[s]]]];
-            t.K[shape.origin(r) + s] = coupling(jr, rowOf(t.rows[r]), js, rowOf(t.rows[s]));
-        }
+        const std::array<RowSide, 2> sr = sides(r);
+        for (int s = 0; s <= r; ++s) t.K[shape.origin(r) + s] = coupling(sr, sides(s));
         t.K[shape.origin(r) + r] *= 1.0 + RevoluteTrees::diagonalRaise;
     }
     t.L = t.K;

@@ -8,6 +8,7 @@
 #include "core/solver/cholesky.hpp"
 #include "core/solver/complementarity.hpp"
 #include "core/solver/contact_prepare.hpp"
+#include "core/solver/row_sides.hpp"
 #include "core/base/union_find.hpp"
 
 namespace perpdot {
@@ -19,14 +20,6 @@ enum SlotKind : uint8_t { Fixed, Free, Jointed };
 // tiles: four rows, three freedoms) make K singular, and rows pushing against each other would
 // take any impulse. The rest state gains compliance·F K_ii / ω², a thousandth of the sequential sink.
 constexpr double compliance = 1e-3;
-
-// One side of a normal row: J's entries for the body in solver slot `slot` (lin·v + ang·ω), with
-// the body's inverse mass and inertia. A body that cannot move has zero inverse mass and inertia.
-struct RowSide {
-    int slot;
-    Vec2 lin;
-    float ang, invMass, invInertia;
-};
 
 // −n, −perpDot(rA, n) for A; n, perpDot(rB, n) for B.
 std::array<RowSide, 2> sidesOf(const SolverBodies& bodies, const ContactConstraint& c, const ContactRows<float>& rows,
@@ -68,16 +61,6 @@ void applyRow(const std::array<RowSide, 2>& sides, SolverBodies& bodies, float i
         s.v = s.v + (p.invMass * impulse) * p.lin;
         s.w += p.invInertia * impulse * p.ang;
     }
-}
-
-// K_rs = Σ over the bodies rows r and s share: lin_r·lin_s / m + ang_r ang_s / I.
-double coupling(const std::array<RowSide, 2>& r, const std::array<RowSide, 2>& s) {
-    double k = 0.0;
-    for (const RowSide& p : r)
-        for (const RowSide& q : s)
-            if (p.slot == q.slot && p.slot != 0)
-                k += static_cast<double>(p.invMass) * dot(p.lin, q.lin) + static_cast<double>(p.invInertia) * p.ang * q.ang;
-    return k;
 }
 
 // Group `group`'s K, stored on its envelope.
