@@ -1,4 +1,4 @@
-// Revolute trees solved directly (src/core/joints/joint_tree.hpp): which joints form a tree, and what the
+// Joint trees solved directly (src/core/joints/joint_tree.hpp): which joints form a tree, and what the
 // direct solve and the position projection keep — closed hinges under a heavy load at the default
 // 4 substeps, the momentum and centre of mass of a free chain, a branched tree at rest.
 #include <gtest/gtest.h>
@@ -16,12 +16,13 @@ namespace {
 
 using namespace joint_test;
 
-// A revolute joint between solver slots a and b (slot 0: cannot move), with a limit or not; its
-// body b's inverse mass where given (every other body that moves: 1).
+// A revolute joint (or another `type`) between solver slots a and b (slot 0: cannot move), with a
+// limit or not; its body b's inverse mass where given (every other body that moves: 1).
 struct Hinge {
     int a, b;
     bool limit = false;
     float invMassB = 1.0f;
+    JointType type = JointType::Revolute;
 };
 Hinge hingeBetween(int a, int b, bool limit = false) { return {a, b, limit}; }
 
@@ -30,11 +31,11 @@ std::vector<std::vector<int>> treesOf(const std::vector<Hinge>& hinges, int slot
     std::vector<BodyState> states(static_cast<size_t>(slots));
     for (int slot = 1; slot < slots; ++slot) states[slot].invMass = 1.0f;
     for (const Hinge& h : hinges) {
-        keys.push_back({h.a, h.b, JointType::Revolute, h.a != 0, h.b != 0, true, h.limit, h.limit});
+        keys.push_back({h.a, h.b, h.type, h.a != 0, h.b != 0, true, h.limit, h.limit});
         if (h.b != 0) states[h.b].invMass = h.invMassB;
     }
-    RevoluteTrees t;
-    findRevoluteTrees(t, keys, states);
+    JointTrees t;
+    findJointTrees(t, keys, states);
     std::vector<std::vector<int>> out;
     for (size_t k = 0; k + 1 < t.start.size(); ++k) out.emplace_back(t.joints.begin() + t.start[k], t.joints.begin() + t.start[k + 1]);
     return out;
@@ -54,6 +55,10 @@ TEST(RevoluteTree, LinkedHingesAreTreesLoopsIncludedWithLimitsWhereMassesDiffer)
     // The same chain ending in a body 10 times heavier (1/m = 0.1): its limit rows join the tree's system.
     EXPECT_EQ(treesOf({hingeBetween(0, 1), Hinge{1, 2, true, 0.1f}}, 3), (Trees{{0, 1}}));
     EXPECT_EQ(treesOf({hingeBetween(0, 1), Hinge{1, 2, true, 0.2f}}, 3), Trees{}) << "5 times heavier: sequential";
+    // Welds and sliders are taken as limited hinges are: where the masses they join differ 10 times.
+    const Hinge weld{1, 2, false, 1.0f, JointType::Weld}, slider{2, 3, false, 1.0f, JointType::Prismatic};
+    EXPECT_EQ(treesOf({hingeBetween(0, 1), weld, slider}, 4), Trees{}) << "welded and sliding parts of like masses";
+    EXPECT_EQ(treesOf({hingeBetween(0, 1), weld, Hinge{2, 3, false, 0.1f, JointType::Prismatic}}, 4), (Trees{{0, 1, 2}}));
 }
 
 // 20 links of 0.5 m, the last 100 times a link's mass, released horizontal (stress_chain): at the

@@ -6,9 +6,11 @@
 #include <string>
 
 #include "core/contacts/contact_world.hpp"
+#include "core/joints/joint_prismatic.hpp"
 #include "core/joints/joint_revolute.hpp"
 #include "core/joints/joint_solver_wide.hpp"
 #include "core/joints/joint_tree_stiffness.hpp"
+#include "core/joints/joint_weld.hpp"
 #include "core/solver/solver_world.hpp"
 #include "core/world/world_impl.hpp"
 
@@ -137,6 +139,14 @@ void prepareJoint(PreparedJoint& j, const SolverWorld& w, const Joint& joint, co
     stagesOf(j.type).prepare(j, ctx, a, b);
 }
 
+// Joints a tree may take (joint_tree.hpp): unbreakable revolute and prismatic joints, and welds
+// that do not bend (a spring weld's angle row is soft).
+bool treeJoint(const PreparedJoint& j) {
+    if (j.breakable) return false;
+    return j.type == JointType::Revolute || j.type == JointType::Prismatic ||
+           (j.type == JointType::Weld && j.data.as<WeldJoint>().hertz == 0.0f);
+}
+
 // What colorJoints reads of a prepared joint (JointKey); a side moves where it has mass or inertia.
 JointKey keyOf(const PreparedJoint& j) {
     const JointLaneStages* lanes = stagesOf(j.type).lanes;
@@ -145,8 +155,9 @@ JointKey keyOf(const PreparedJoint& j) {
             j.type,
             j.mass.mA != 0.0f || j.mass.iA != 0.0f,
             j.mass.mB != 0.0f || j.mass.iB != 0.0f,
-            j.type == JointType::Revolute && !j.breakable,
-            j.type == JointType::Revolute && j.data.as<RevoluteJoint>().enableLimit,
+            treeJoint(j),
+            (j.type == JointType::Revolute && j.data.as<RevoluteJoint>().enableLimit) ||
+                (j.type == JointType::Prismatic && j.data.as<PrismaticJoint>().enableLimit),
             lanes != nullptr && lanes->optionalRows(j)};
 }
 
@@ -248,7 +259,7 @@ void prepareJoints(const SolverWorld& w, const StepContext& ctx) {
 
 // One by one, the prepared joints are coloured (graph_color.hpp: joints of one colour share no
 // moving body, so a pass never waits for the velocities the previous joint wrote, and four of a
-// type can share SIMD lanes), the revolute trees leave the colours, and each joint is sent to the
+// type can share SIMD lanes), the joint trees leave the colours, and each joint is sent to the
 // next lane of its colour and type or to its colour's next scalar slot (within a colour the order
 // is free); the workers pack the blocks' lanes.
 void colorJoints(const SolverWorld& w, const StepContext& ctx) {
@@ -261,9 +272,9 @@ void colorJoints(const SolverWorld& w, const StepContext& ctx) {
     // take the colours their bodies' joints left (prepareContactBlocks).
     GraphColoring& coloring = w.scratch.coloring;
     coloring.reset(static_cast<int>(w.scratch.bodies.states.size()));
-    // Joints of revolute trees take no colour: they are solved directly (joint_tree.hpp).
-    findRevoluteTrees(d.trees, d.keys, w.scratch.bodies.states);
-    stiffenRevoluteTrees(d.trees, d.prepared, ctx.hs, static_cast<int>(w.scratch.bodies.states.size()));
+    // Joints of joint trees take no colour: they are solved directly (joint_tree.hpp).
+    findJointTrees(d.trees, d.keys, w.scratch.bodies.states);
+    stiffenJointTrees(d.trees, d.prepared, ctx.hs, static_cast<int>(w.scratch.bodies.states.size()));
     // Lanes by colour and type: those of joints with the type's rows alone, and of joints with
     // optional rows (a motor, a limit).
     constexpr int types = jointTypeCount;
@@ -340,13 +351,13 @@ void serialJointRows(JointScratch& d, SolverBodies& bodies, const StepContext& c
     constexpr int overflow = GraphColoring::overflow;
     jointRows(d, bodies, ctx, pass, overflow, 0, jointUnitCount(d, overflow));
     if (pass == RowPass::WarmStart)
-        warmStartRevoluteTrees(bodies, d.trees, d.prepared);
+        warmStartJointTrees(bodies, d.trees, d.prepared);
     else
-        solveRevoluteTrees(bodies, d.trees, d.prepared, ctx, pass == RowPass::Solve);
+        solveJointTrees(bodies, d.trees, d.prepared, ctx, pass == RowPass::Solve);
 }
 
 void projectJoints(JointScratch& d, SolverBodies& bodies) {
-    projectRevoluteTrees(bodies, d.trees, d.prepared);
+    projectJointTrees(bodies, d.trees, d.prepared);
 }
 
 // The accumulated impulses go back to the joints, ready for the next step's warm start.

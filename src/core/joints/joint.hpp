@@ -37,18 +37,18 @@ JointScratchPtr makeJointScratch();
 // Solver stages, run by World::step (step.cpp, solver_stages.cpp) like the contact stages; they read
 // the world through the solver's view (solver_world.hpp).
 // prepareJoints: the awake joints, each prepared (anchors, effective masses) on the workers;
-// colorJoints: then coloured, the revolute trees found (and stiffened), and laid out in blocks and slots.
+// colorJoints: then coloured, the joint trees found (and stiffened), and laid out in blocks and slots.
 void prepareJoints(const SolverWorld& world, const StepContext& ctx);
 void colorJoints(const SolverWorld& world, const StepContext& ctx);
 // The work of colour `color` (below GraphColoring::overflow) in a pass: units that share no
 // moving body, to be run in any order or side by side.
 int jointUnitCount(const JointScratch& joints, int color);
 void jointRows(JointScratch& joints, SolverBodies& bodies, const StepContext& ctx, RowPass pass, int color, int begin, int end);
-// The joints no colour could take, then the revolute trees: one after another.
+// The joints no colour could take, then the joint trees: one after another.
 int serialJointCount(const JointScratch& joints);
 void serialJointRows(JointScratch& joints, SolverBodies& bodies, const StepContext& ctx, RowPass pass);
 void storeJointImpulses(const SolverWorld& world, const StepContext& ctx);
-// After the substeps: a Newton step on the positions of each revolute tree (joint_tree.hpp).
+// After the substeps: a Newton step on the positions of each joint tree (joint_tree.hpp).
 void projectJoints(JointScratch& joints, SolverBodies& bodies);
 
 // A joint's rows in a contact group's direct solve (contact_groups.hpp): row i measures

@@ -1,6 +1,8 @@
-// The rows of revolute, weld and prismatic joints as a contact group's direct solve takes them
-// (joint.hpp, contact_groups.hpp): the same rows the joints' own passes solve, with the arms at
-// step start, and their position errors now.
+// The rows of revolute, weld and prismatic joints as a direct solve takes them (joint_direct.hpp):
+// the same rows the joints' own passes solve, at step start for a contact group (joint.hpp,
+// contact_groups.hpp) or now for a joint tree, and their position errors now.
+#include "core/joints/joint_direct.hpp"
+
 #include <type_traits>
 
 #include "core/joints/joint_prismatic.hpp"
@@ -16,13 +18,38 @@ namespace {
 DirectJointRow equalityRow(const Row& r) { return {r.n, r.sA, r.sB, false}; }
 DirectJointRow limitRow(const Row& r) { return {r.n, r.sA, r.sB, true}; }
 
-// The axis rows at step start (axisRows at no motion): A's arm to B's anchor is rA + d.
-AxisRowsT<float> startAxisRows(const PreparedJoint& j, Vec2 axis) {
-    const Vec2 d = j.deltaCenter + j.anchorB - j.anchorA;
-    return {linearRow(j.anchorA + d, j.anchorB, axis), linearRow(j.anchorA + d, j.anchorB, perp(axis)), dot(axis, d), dot(perp(axis), d)};
+// The rows at frame f (the arms rA, rB and d = pB − pA), a prismatic joint's along `axis`, its axis
+// in the world; the axis rows take A's arm to B's anchor, rA + d.
+int rowsAt(const PreparedJoint& j, const JointFrame& f, Vec2 axis, DirectJointRow* rows) {
+    const Row pointX = linearRow(f.rA, f.rB, Vec2{1.0f, 0.0f}), pointY = linearRow(f.rA, f.rB, Vec2{0.0f, 1.0f});
+    switch (j.type) {
+        case JointType::Revolute:
+            rows[0] = equalityRow(pointX), rows[1] = equalityRow(pointY);
+            if (!j.data.as<RevoluteJoint>().enableLimit) return 2;
+            rows[2] = limitRow(angularRow), rows[3] = limitRow(negated(angularRow));
+            return 4;
+        case JointType::Weld:
+            rows[0] = equalityRow(pointX), rows[1] = equalityRow(pointY), rows[2] = equalityRow(angularRow);
+            return 3;
+        case JointType::Prismatic: {
+            const Row axial = linearRow(f.rA + f.d, f.rB, axis);
+            rows[0] = equalityRow(linearRow(f.rA + f.d, f.rB, perp(axis))), rows[1] = equalityRow(angularRow);
+            if (!j.data.as<PrismaticJoint>().enableLimit) return 2;
+            rows[2] = limitRow(axial), rows[3] = limitRow(negated(axial));
+            return 4;
+        }
+        default: return 0;
+    }
 }
 
 }  // namespace
+
+int equalityRowCount(JointType type) { return type == JointType::Weld ? 3 : 2; }
+
+int jointRowsNow(const PreparedJoint& j, const JointPair& p, DirectJointRow* rows) {
+    const Vec2 axis = j.type == JointType::Prismatic ? rotate(p.a.dq, j.data.as<PrismaticJoint>().axisA) : Vec2{};
+    return rowsAt(j, currentFrame(j, p), axis, rows);
+}
 
 int awakeJointCount(const JointScratch& d) { return static_cast<int>(d.prepared.size()); }
 
@@ -31,36 +58,24 @@ std::pair<int, int> jointSlots(const JointScratch& d, int k) { return {d.prepare
 int directJointRows(const JointScratch& d, int k, DirectJointRow* rows) {
     const PreparedJoint& j = d.prepared[k];
     if (j.breakable) return 0;  // its substeps' impulses are summed one joint at a time (breakJoints)
-    const Row pointX = linearRow(j.anchorA, j.anchorB, Vec2{1.0f, 0.0f}), pointY = linearRow(j.anchorA, j.anchorB, Vec2{0.0f, 1.0f});
     switch (j.type) {
-        case JointType::Revolute: {
-            const RevoluteJoint& r = j.data.as<RevoluteJoint>();
-            if (r.enableMotor) return 0;
-            rows[0] = equalityRow(pointX), rows[1] = equalityRow(pointY);
-            if (!r.enableLimit) return 2;
-            rows[2] = limitRow(angularRow), rows[3] = limitRow(negated(angularRow));
-            return 4;
-        }
+        case JointType::Revolute:
+            if (j.data.as<RevoluteJoint>().enableMotor) return 0;
+            break;
         case JointType::Weld:
             if (j.data.as<WeldJoint>().hertz > 0.0f) return 0;
-            rows[0] = equalityRow(pointX), rows[1] = equalityRow(pointY), rows[2] = equalityRow(angularRow);
-            return 3;
-        case JointType::Prismatic: {
-            const PrismaticJoint& s = j.data.as<PrismaticJoint>();
-            if (s.enableMotor) return 0;
-            const AxisRowsT<float> axis = startAxisRows(j, s.axisA);
-            rows[0] = equalityRow(axis.perpendicular), rows[1] = equalityRow(angularRow);
-            if (!s.enableLimit) return 2;
-            rows[2] = limitRow(axis.axial), rows[3] = limitRow(negated(axis.axial));
-            return 4;
-        }
+            break;
+        case JointType::Prismatic:
+            if (j.data.as<PrismaticJoint>().enableMotor) return 0;
+            break;
         default: return 0;
     }
+    // At step start: the arms as prepared, d = (cB − cA)₀ + rB − rA, the axis as prepared.
+    const Vec2 axis = j.type == JointType::Prismatic ? j.data.as<PrismaticJoint>().axisA : Vec2{};
+    return rowsAt(j, JointFrame{j.anchorA, j.anchorB, j.deltaCenter + j.anchorB - j.anchorA}, axis, rows);
 }
 
-void directJointErrors(const JointScratch& d, SolverBodies& bodies, int k, float* C) {
-    const PreparedJoint& j = d.prepared[k];
-    const JointPair p = pairOf(bodies.states, bodies.stepRotation, j);
+void jointRowErrors(const PreparedJoint& j, const JointPair& p, float* C) {
     const float angle = currentAngle(j, p);
     switch (j.type) {
         case JointType::Revolute: {
@@ -84,10 +99,14 @@ void directJointErrors(const JointScratch& d, SolverBodies& bodies, int k, float
     }
 }
 
+void directJointErrors(const JointScratch& d, SolverBodies& bodies, int k, float* C) {
+    const PreparedJoint& j = d.prepared[k];
+    jointRowErrors(j, pairOf(bodies.states, bodies.stepRotation, j), C);
+}
+
 namespace {
 
-// Where row `row` of a joint keeps its accumulated λ (directJointRows' order); J is PreparedJoint,
-// const or not.
+// Where row `row` of a joint keeps its accumulated λ; J is PreparedJoint, const or not.
 template <class J>
 auto& impulseOf(J& j, int row) {
     using Impulse = std::conditional_t<std::is_const_v<J>, const float, float>;
@@ -112,13 +131,15 @@ auto& impulseOf(J& j, int row) {
 
 }  // namespace
 
+float& jointRowImpulse(PreparedJoint& j, int row) { return impulseOf(j, row); }
+
 void solveJointDirectly(JointScratch& d, int k) {
     d.direct[k] = 1;
-    d.keys[k].hinge = false;  // no revolute tree takes it
+    d.keys[k].treeJoint = false;  // no joint tree takes it
 }
 
 float directJointImpulse(const JointScratch& d, int k, int row) { return impulseOf(d.prepared[k], row); }
 
-void setDirectJointImpulse(JointScratch& d, int k, int row, float impulse) { impulseOf(d.prepared[k], row) = impulse; }
+void setDirectJointImpulse(JointScratch& d, int k, int row, float impulse) { jointRowImpulse(d.prepared[k], row) = impulse; }
 
 }  // namespace perpdot

@@ -125,6 +125,12 @@ void preparePrismatic(PreparedJoint& j, const StepContext& ctx, const Body& a, c
     }
 }
 
+void solvePrismaticMotor(PreparedJoint& j, JointPair& p, const StepContext& ctx) {
+    PrismaticJoint& s = j.data.as<PrismaticJoint>();
+    if (!s.enableMotor) return;
+    const AxisRowsT<float> rows = axisRows(p, j.anchorA, j.anchorB, j.deltaCenter, s.axisA);
+    solveMotorRow(p, rows.axial, s.axialMass, s.motorSpeed, s.maxMotorForce * ctx.hs, s.motorImpulse);
+}
 JointReaction reactionPrismatic(const JointData& data) {
     const PrismaticJoint& s = data.as<PrismaticJoint>();
     return {(s.motorImpulse + s.lowerImpulse - s.upperImpulse) * s.axisA + s.impulse.x * perp(s.axisA), s.impulse.y};

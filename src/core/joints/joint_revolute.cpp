@@ -114,18 +114,10 @@ void prepareRevolute(PreparedJoint& j, const StepContext& ctx, const Body&, cons
     }
 }
 
-void warmStartRevolute(PreparedJoint& j, JointPair& p) { warmStartJoint<RevoluteRowSet>(j, p); }
-
-void solveRevolute(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool useBias) { solveJoint<RevoluteRowSet>(j, p, ctx, useBias); }
-
-void solveRevoluteAngleRows(PreparedJoint& j, JointPair& p, const StepContext& ctx, bool useBias, bool motor, bool limits) {
+void solveRevoluteMotor(PreparedJoint& j, JointPair& p, const StepContext& ctx) {
     RevoluteJoint& r = j.data.as<RevoluteJoint>();
-    const MotorLimitsT<float> angle{r.motorSpeed,         r.maxMotorTorque, r.lowerAngle, r.upperAngle, motor && r.enableMotor ? 1.0f : 0.0f,
-                                    limits && r.enableLimit ? 1.0f : 0.0f};
-    solveMotorAndLimits(p, angularRow, r.axialMass, j.deltaAngle + p.rotation, angle, ctx, useBias, r.motorImpulse, r.lowerImpulse,
-                        r.upperImpulse);
+    if (r.enableMotor) solveMotorRow(p, angularRow, r.axialMass, r.motorSpeed, r.maxMotorTorque * ctx.hs, r.motorImpulse);
 }
-
 JointReaction reactionRevolute(const JointData& data) {
     const RevoluteJoint& r = data.as<RevoluteJoint>();
     return {r.linearImpulse, r.motorImpulse + r.lowerImpulse - r.upperImpulse};
@@ -133,6 +125,6 @@ JointReaction reactionRevolute(const JointData& data) {
 
 template JointId World::createJoint(const RevoluteJointDef&);
 extern const JointKind revoluteKind = jointKind<RevoluteJoint, &RevoluteJoint::motorSpeed>(
-    {prepareRevolute, warmStartRevolute, solveRevolute, reactionRevolute, &revoluteLanes});
+    {prepareRevolute, warmStartJoint<RevoluteRowSet>, solveJoint<RevoluteRowSet>, reactionRevolute, &revoluteLanes});
 
 }  // namespace perpdot

@@ -1,4 +1,4 @@
-// The revolute joint's data, shared by its file (joint_revolute.cpp) with the revolute trees
+// The revolute joint's data, shared by its file (joint_revolute.cpp) with the joint trees
 // (joint_tree.cpp) and the tests, and its field list.
 #pragma once
 
@@ -35,7 +35,7 @@ constexpr auto fields(const RevoluteJoint*) {
                       field("upperImpulse", &J::upperImpulse).anyBits()};
 }
 
-// A revolute joint without motor or limit: its point rows alone (a revolute tree solves the motor
+// A revolute joint without motor or limit: its point rows alone (a joint tree solves the motor
 // row of the others first, joint_tree.hpp).
 inline bool pointRowsOnly(const PreparedJoint& j) {
     if (j.type != JointType::Revolute) return false;

@@ -1,6 +1,6 @@
 // Joints solved four at a time in SIMD lanes. A joint type that goes wide writes its rows once over
-// a lane type F, as a row set (below): float solves one joint (the overflow colour; revolute trees
-// that do not factor), simd::Float4 solves a JointBlock of four joints of that type from one graph
+// a lane type F, as a row set (below): float solves one joint (the overflow colour),
+// simd::Float4 solves a JointBlock of four joints of that type from one graph
 // colour. A joint's values are gathered straight into its lane field by field (row_lanes.hpp, as
 // the contacts' are), the same gather at one lane fills a scalar joint's own rows, and the impulses
 // are read back from the lanes into the joints. A row some joints of the type lack (a motor, a

@@ -119,8 +119,8 @@ struct JointKey {
     int indexA = 0, indexB = 0;  // solver slots
     JointType type = JointType::Revolute;
     bool movesA = false, movesB = false;  // the side has mass or inertia (static, asleep or kinematic: not)
-    bool hinge = false;                   // an unbreakable revolute joint: a tree may take it (joint_tree.hpp)
-    bool limited = false;                 // a revolute joint with limits
+    bool treeJoint = false;  // an unbreakable revolute, prismatic or rigid weld joint: a tree may take it (joint_tree.hpp)
+    bool limited = false;    // a revolute or prismatic joint with limits
     bool optionalRows = false;            // in lanes, rows others of its type lack (JointLaneStages)
 };
 
@@ -172,7 +172,7 @@ struct JointScratch {
     std::vector<int> scalarOrder;
     ColorStarts blockStart{}, scalarStart{};
     // Revolute trees (joint_tree.hpp): solved directly after the colours, outside them.
-    RevoluteTrees trees;
+    JointTrees trees;
     // Scratch of colorJoints, kept to reuse its memory.
     std::vector<int> colors;  // of prepared[k], from the step scratch's one colouring
     // Of prepared[k]: -1 solved alone, 0 in lanes with its type's rows alone, 1 in lanes with
@@ -247,10 +247,9 @@ constexpr int jointTypeCount = static_cast<int>(JointType::Friction) + 1;
 const JointKind* kindOf(JointType type);
 const JointStages& stagesOf(JointType type);  // of a type that exists
 
-// For revolute trees (joint_tree.cpp): a revolute joint's warm start, and its motor row (`motor`)
-// or limit rows (`limits`) alone, where it has them: the motor solved before the tree's block, the
-// limits row by row where the block could not be solved.
-void warmStartRevolute(PreparedJoint& joint, JointPair& pair);
-void solveRevoluteAngleRows(PreparedJoint& joint, JointPair& pair, const StepContext& ctx, bool useBias, bool motor, bool limits);
+// For joint trees (joint_tree.cpp), which solve a joint's motor row before their block: that row of
+// a revolute or prismatic joint, where it has a motor.
+void solveRevoluteMotor(PreparedJoint& joint, JointPair& pair, const StepContext& ctx);
+void solvePrismaticMotor(PreparedJoint& joint, JointPair& pair, const StepContext& ctx);
 
 }  // namespace perpdot

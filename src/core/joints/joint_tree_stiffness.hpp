@@ -1,4 +1,4 @@
-// Geometric stiffness of revolute trees (Andrews, Teichmann, Kry, "Geometric Stiffness for
+// Geometric stiffness of joint trees (Andrews, Teichmann, Kry, "Geometric Stiffness for
 // Real-time Constrained Multibody Dynamics", 2017). A chain pulled taut by a heavy end has
 // transverse modes as fast as ω ≈ √(T / (m·l)): the tension T of a 1000:1 end turns a 50 g link
 // at hundreds of rad/s, beyond what a substep's velocity solve (the Jacobian held at the
@@ -17,6 +17,6 @@
 namespace perpdot {
 
 // Each tree joint's inverse inertias become 1/Ĩ of its bodies; `slots` is the solver's body count.
-void stiffenRevoluteTrees(RevoluteTrees& trees, std::vector<PreparedJoint>& prepared, float hs, int slots);
+void stiffenJointTrees(JointTrees& trees, std::vector<PreparedJoint>& prepared, float hs, int slots);
 
 }  // namespace perpdot

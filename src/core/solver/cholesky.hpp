@@ -1,5 +1,5 @@
 // Cholesky factorisation K = L Lᵀ of a symmetric positive definite n x n system in double
-// precision, on K's envelope: the direct solves of revolute trees (joint_tree.hpp, dense) and
+// precision, on K's envelope: the direct solves of joint trees (joint_tree.hpp, dense) and
 // contact groups (contact_groups.hpp, banded). Row r of the lower triangle is zero left of its
 // first column f_r, and Cholesky fills only inside that envelope, so L keeps it and the factor
 // costs Σ_r p_r²/2 multiply-adds, p_r = r − f_r + 1 the row's profile: n³/6 dense, about n b²/2

@@ -1,5 +1,5 @@
 // The linear complementarity problem of a block of rows solved directly (contact groups,
-// contact_groups.hpp; revolute trees with limits, joint_tree.hpp): K Δλ − y = w, where a one-sided
+// contact_groups.hpp; joint trees with limits, joint_tree.hpp): K Δλ − y = w, where a one-sided
 // row keeps λ + Δλ ≥ 0, w ≥ 0 and (λ + Δλ)·w = 0 (it either pushes or is left separating faster
 // than its target) and a free row (an equality) keeps w = 0, λ of either sign. K is stored on its
 // envelope (cholesky.hpp) and factored into L beforehand; block principal pivoting (Júdice and

@@ -155,7 +155,7 @@ void findContactGroups(const SolverWorld& w, const StepContext& ctx) {
     // Each solver slot's kind: Fixed (the static slot, kinematic bodies: they join nothing),
     // Free (dynamic, anchored or without joints: each of its joints ties it to a Fixed slot with
     // rows its group takes), Jointed (dynamic with a joint to another dynamic body, or one whose
-    // rows stay sequential: its group is not solved directly, so chains keep their revolute trees).
+    // rows stay sequential: its group is not solved directly, so chains keep their joint trees).
     JointScratch& joints = w.scratch.joints;
     const int jointCount = awakeJointCount(joints);
     std::array<DirectJointRow, maxDirectJointRows> jointRows;

@@ -14,7 +14,7 @@
 // directly when it has at most denseRows normal rows, or more in a band (a column of boxes, each
 // touching two others: a few multiply-adds a row; admitted), none of its bodies is jointed to
 // another dynamic body or by a joint with a motor, spring or break limit (such rows stay sequential
-// between the passes: chains keep their revolute trees, and the anvil of a jointed bridge is
+// between the passes: chains keep their joint trees, and the anvil of a jointed bridge is
 // already held by them), and
 //   - without joints, one of its rows carried, last step, a load that would sink it one at a time
 //     more than loadTrigger times the direct solve's g/ω²;

@@ -1,4 +1,4 @@
-// A row of a block solved directly (contact groups, contact_groups.hpp; revolute trees,
+// A row of a block solved directly (contact groups, contact_groups.hpp; joint trees,
 // joint_tree.hpp) by the bodies it moves, and the entries of K = J M⁻¹ Jᵀ between two rows.
 #pragma once
 

@@ -112,7 +112,7 @@ void World::step(float timeStep) {
     // the workers).
     w.scratch.solverStages.build(solver);
     w.scratch.solverStages.run(solver, ctx);
-    projectJoints(*w.scratch.joints, w.scratch.bodies);         // project: the anchors of revolute trees meet again
+    projectJoints(*w.scratch.joints, w.scratch.bodies);         // project: the joints of joint trees hold again
     storeContactImpulses(w.scratch.contacts, w.contactCache);  // store: impulses for the next step's warm start (the lanes' stored by the solver)
     storeJointImpulses(solver, ctx);
     reportHitEvents(w.events, w.scratch.contacts, w.contactCache, w.shapes, w.identity, w.def.hitEventThreshold);
