@@ -193,42 +193,77 @@ private:
     float sink_ = -std::numeric_limits<float>::infinity(), tilt_ = 0;
 };
 
-// Revolute joints: the worst distance, over all steps, between a joint's anchor on body A and on body B.
+// The hinges, welds and sliders of a chain or bridge, each judged by what it holds at every step:
+// a hinge's anchor gap, a weld's gap and bend, a slider's offset from its axis, its turn and how
+// far it is past a limit; each gap within 1 % of a link (`linkLength`), each turn within 0.01 rad.
 class JointGapProbe final : public Probe {
 public:
     JointGapProbe(const Scene& scene, float linkLength) : link_(linkLength) {
         for (const SceneJoint& j : scene.joints) {
-            if (j.type != JointType::Revolute || !j.anchor) continue;
-            joints_.push_back({side(scene, j.bodyA, *j.anchor), side(scene, j.bodyB, *j.anchor)});
+            const bool held = j.type == JointType::Revolute || j.type == JointType::Weld || j.type == JointType::Prismatic;
+            if (!held || !j.anchor) continue;
+            Held h{j.type, side(scene, j.bodyA, *j.anchor), side(scene, j.bodyB, *j.anchor)};
+            h.referenceAngle = h.b.startAngle - h.a.startAngle;
+            h.axis = rotate(Rot::fromAngle(-h.a.startAngle), normalize(j.axis));
+            if (j.type == JointType::Prismatic && j.enableLimit) h.lower = j.lower, h.upper = j.upper;
+            turns_ = turns_ || j.type != JointType::Revolute;
+            joints_.push_back(h);
         }
     }
     void observe(float, const Samples& bodies) override {
-        for (const auto& [a, b] : joints_) worst_ = std::max(worst_, distance(a.world(bodies), b.world(bodies)));
+        for (const Held& h : joints_) {
+            const Vec2 d = h.b.world(bodies) - h.a.world(bodies);
+            const float turn = std::fabs(h.b.angle(bodies) - h.a.angle(bodies) - h.referenceAngle);
+            if (h.type == JointType::Revolute) {
+                worst_ = std::max(worst_, length(d));
+                continue;
+            }
+            turn_ = std::max(turn_, turn);
+            if (h.type == JointType::Weld) {
+                worst_ = std::max(worst_, length(d));
+                continue;
+            }
+            const Vec2 axis = rotate(Rot::fromAngle(h.a.angle(bodies)), h.axis);
+            const float translation = dot(axis, d);
+            worst_ = std::max(worst_, std::fabs(dot(perp(axis), d)));
+            past_ = std::max({past_, translation - h.upper, h.lower - translation});
+        }
     }
     StressResult result() const override {
-        return {.figure = format("worst joint gap %.4f m (%.2f %% of a link)", worst_, 100.0f * worst_ / link_),
-                .pass = worst_ < 0.01f * link_};
+        std::string figure = format("worst joint gap %.4f m (%.2f %% of a link)", worst_, 100.0f * worst_ / link_);
+        if (turns_) figure += format("; welds and sliders turned at most %.4f rad, sliders at most %.4f m past a limit", turn_, past_);
+        return {.figure = figure, .pass = worst_ < 0.01f * link_ && turn_ < 0.01f && past_ < 0.01f * link_};
     }
 
 private:
     struct Side {
-        int sample;   // -1: a static body, at `anchor` for ever
-        Vec2 anchor;  // body frame (world for a static body)
+        int sample;        // -1: a static body, at `anchor` for ever
+        Vec2 anchor;       // body frame (world for a static body)
+        float startAngle;  // the body's angle in the scene
         Vec2 world(const Samples& bodies) const {
             if (sample < 0) return anchor;
             const BodyState& s = bodies[size_t(sample)].state;
             return transformPoint({s.position, Rot::fromAngle(s.angle)}, anchor);
         }
+        float angle(const Samples& bodies) const { return sample < 0 ? startAngle : bodies[size_t(sample)].state.angle; }
+    };
+    struct Held {
+        JointType type;
+        Side a, b;
+        float referenceAngle = 0;
+        Vec2 axis;  // a slider's, in A's frame
+        float lower = -std::numeric_limits<float>::infinity(), upper = std::numeric_limits<float>::infinity();
     };
     static Side side(const Scene& scene, const std::string& name, Vec2 worldAnchor) {
-        const int sample = sampleIndex(scene, name);
-        if (sample < 0) return {-1, worldAnchor};
         const auto body = std::find_if(scene.bodies.begin(), scene.bodies.end(), [&](const SceneBody& b) { return b.name == name; });
-        return {sample, invTransformPoint({body->position, Rot::fromAngle(body->angle)}, worldAnchor)};
+        const int sample = sampleIndex(scene, name);
+        if (sample < 0) return {-1, worldAnchor, body->angle};
+        return {sample, invTransformPoint({body->position, Rot::fromAngle(body->angle)}, worldAnchor), body->angle};
     }
     float link_;
-    std::vector<std::pair<Side, Side>> joints_;
-    float worst_ = 0;
+    std::vector<Held> joints_;
+    bool turns_ = false;
+    float worst_ = 0, turn_ = 0, past_ = 0;
 };
 
 // A bridge's hinges (JointGapProbe) and its load: the load's centre never more than `maxDrop`
@@ -447,6 +482,8 @@ const std::vector<Entry>& entries() {
         {{"chain1000", "every joint gap under 1 % of a link (5 mm) at every step", 300},
          [](const Scene& s) -> std::unique_ptr<Probe> { return std::make_unique<JointGapProbe>(s, 0.5f); }},
         {{"chain10k", "every joint gap under 1 % of a link (5 mm) at every step", 300},
+         [](const Scene& s) -> std::unique_ptr<Probe> { return std::make_unique<JointGapProbe>(s, 0.5f); }},
+        {{"mixed1000", "every joint within 1 % of a link (5 mm) of its axis, the welds and sliders turned under 0.01 rad, the sliders under 5 mm past their limits, at every step", 300},
          [](const Scene& s) -> std::unique_ptr<Probe> { return std::make_unique<JointGapProbe>(s, 0.5f); }},
         {{"bridge1000", "every joint gap under 1 % of a plank (5 mm) at every step; the load carried, never 1 m below its start", 300},
          [](const Scene& s) -> std::unique_ptr<Probe> { return std::make_unique<LoadedBridgeProbe>(s, 0.5f, 1.0f); }},

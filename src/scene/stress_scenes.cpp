@@ -91,6 +91,29 @@ Scene heavyChain(float ratio) {
     return s;
 }
 
+// The 20-link chain of heavyChain with its joints of every kind the direct solve takes: joint i is,
+// by i mod 4, a hinge; a hinge limited to ±1 rad with a 1 N·m motor toward 0.5 rad/s; a weld; a
+// slider along the link, limited to ±5 cm. The last link has density `ratio`.
+Scene mixedChain(float ratio) {
+    Scene s = heavyChain(ratio);
+    for (size_t i = 0; i < s.joints.size(); ++i) {
+        SceneJoint& j = s.joints[i];
+        switch (i % 4) {
+            case 1:
+                j.enableLimit = true, j.lowerAngle = -1.0f, j.upperAngle = 1.0f;
+                j.enableMotor = true, j.motorSpeed = 0.5f, j.maxMotorTorque = 1.0f;
+                break;
+            case 2: j.type = JointType::Weld; break;
+            case 3:
+                j.type = JointType::Prismatic, j.axis = {1.0f, 0.0f};
+                j.enableLimit = true, j.lower = -0.05f, j.upper = 0.05f;
+                break;
+            default: break;
+        }
+    }
+    return s;
+}
+
 // A 1 m box sliding without friction at 6 m/s over 40 separate 1 m box tiles (one static body).
 Scene tiles() {
     Scene s;
@@ -261,6 +284,9 @@ std::vector<BuiltinScene> stressScenes() {
          sliderStruck},
         {"stress_chain1000", "stress: the 20-link chain with an end 1000 times a link's mass, 10 s", [] { return heavyChain(1000.0f); }},
         {"stress_chain10k", "stress: the 20-link chain with an end 10,000 times a link's mass, 10 s", [] { return heavyChain(10000.0f); }},
+        {"stress_mixed1000",
+         "stress: the 20-link chain of hinges, limited motored hinges, welds and limited sliders, its end 1000 times a link's mass, 10 s",
+         [] { return mixedChain(1000.0f); }},
         {"stress_bridge1000", "stress: a hanging 20-plank bridge carrying 1000 times a plank's mass, 10 s", loadedBridge},
     };
 }

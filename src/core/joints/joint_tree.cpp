@@ -30,17 +30,19 @@ void findJointTrees(JointTrees& t, const std::vector<JointKey>& keys, const std:
     t.rowFree.clear();
     t.inTree.assign(keys.size(), 0);
     if (count < 2) return;
-    // Selective joints (limited hinges, welds, sliders) join the groups only where one joins bodies
-    // of unlike masses: a world of ragdolls or welded structures alone is not searched for them.
+    // Selective joints (limited hinges, welds, sliders) join the groups only where some joint joins
+    // bodies of unlike masses: a world of ragdolls or welded structures alone is not searched for them.
     const auto selective = [](const JointKey& j) { return j.limited || j.type != JointType::Revolute; };
     const auto unlike = [](float lighter, float heavier) { return lighter >= JointTrees::unlikeMasses * heavier; };
     bool unlikeSelective = false;
-    for (const JointKey& j : keys) {
-        if (!j.treeJoint || !selective(j) || !j.movesA || !j.movesB) continue;
-        const float a = states[j.indexA].invMass, b = states[j.indexB].invMass;
-        if (unlike(std::max(a, b), std::min(a, b))) {
-            unlikeSelective = true;
-            break;
+    if (std::any_of(keys.begin(), keys.end(), [&](const JointKey& j) { return j.treeJoint && selective(j); })) {
+        for (const JointKey& j : keys) {
+            if (!j.treeJoint || !j.movesA || !j.movesB) continue;
+            const float a = states[j.indexA].invMass, b = states[j.indexB].invMass;
+            if (unlike(std::max(a, b), std::min(a, b))) {
+                unlikeSelective = true;
+                break;
+            }
         }
     }
     const auto takes = [&](const JointKey& j) { return j.treeJoint && (!selective(j) || unlikeSelective); };
