@@ -32,7 +32,6 @@ SceneWorld mixedChain(float ratio, bool sliders, int substeps) {
     return buildWorld(scene);
 }
 
-
 // How far a joint is from what it holds, m or rad: a hinge's anchor gap; a weld's gap and bend; a
 // slider's offset from its axis, its turn, and how far it is past a limit.
 struct Worst {

@@ -213,16 +213,10 @@ public:
     void observe(float, const Samples& bodies) override {
         for (const Held& h : joints_) {
             const Vec2 d = h.b.world(bodies) - h.a.world(bodies);
-            const float turn = std::fabs(h.b.angle(bodies) - h.a.angle(bodies) - h.referenceAngle);
-            if (h.type == JointType::Revolute) {
-                worst_ = std::max(worst_, length(d));
-                continue;
-            }
-            turn_ = std::max(turn_, turn);
-            if (h.type == JointType::Weld) {
-                worst_ = std::max(worst_, length(d));
-                continue;
-            }
+            if (h.type != JointType::Prismatic) worst_ = std::max(worst_, length(d));
+            if (h.type == JointType::Revolute) continue;
+            turn_ = std::max(turn_, std::fabs(h.b.angle(bodies) - h.a.angle(bodies) - h.referenceAngle));
+            if (h.type == JointType::Weld) continue;
             const Vec2 axis = rotate(Rot::fromAngle(h.a.angle(bodies)), h.axis);
             const float translation = dot(axis, d);
             worst_ = std::max(worst_, std::fabs(dot(perp(axis), d)));

@@ -140,6 +140,6 @@ void solveJointDirectly(JointScratch& d, int k) {
 
 float directJointImpulse(const JointScratch& d, int k, int row) { return impulseOf(d.prepared[k], row); }
 
-void setDirectJointImpulse(JointScratch& d, int k, int row, float impulse) { jointRowImpulse(d.prepared[k], row) = impulse; }
+void setDirectJointImpulse(JointScratch& d, int k, int row, float impulse) { impulseOf(d.prepared[k], row) = impulse; }
 
 }  // namespace perpdot

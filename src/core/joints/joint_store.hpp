@@ -171,7 +171,7 @@ struct JointScratch {
     std::vector<JointBlock> blocks;
     std::vector<int> scalarOrder;
     ColorStarts blockStart{}, scalarStart{};
-    // Revolute trees (joint_tree.hpp): solved directly after the colours, outside them.
+    // Joint trees (joint_tree.hpp): solved directly after the colours, outside them.
     JointTrees trees;
     // Scratch of colorJoints, kept to reuse its memory.
     std::vector<int> colors;  // of prepared[k], from the step scratch's one colouring

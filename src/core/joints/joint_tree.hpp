@@ -33,7 +33,7 @@ struct PreparedJoint;
 struct SolverBodies;  // step_scratch.hpp
 
 struct JointTrees {
-    static constexpr int maxJoints = 32;  // K is 2n x 2n: about (2n)³/6 multiply-adds a pass
+    static constexpr int maxJoints = 32;  // K is m x m for m ≤ 4n rows: about m³/6 multiply-adds a pass
     // K's diagonal × (1 + diagonalRaise). A closed loop pulled straight (a bridge between two
     // posts) has a singular K: a tension along it moves no body. Its entries come from floats
     // (relative rounding 6e-8), so a singular K may fail to factor or factor with pivots of noise;
@@ -52,15 +52,16 @@ struct JointTrees {
     std::vector<uint8_t> rowIndex;  // which of its joint's rows (joint_direct.hpp's order)
     std::vector<uint8_t> rowFree;   // 1 for an equality row, 0 for a limit
     std::vector<uint8_t> inTree;  // by prepared index: 1 if the joint is in a tree
-    // Scratch, kept to reuse its memory: union-find by solver slot, each root's joint count, limits
-    // and lightest and heaviest moving body (inverse masses), each joint's tree root; a pass's rows,
-    // its system (K, its factor L, on an envelope from column 0) and its complementarity problem;
-    // each joint's rows and position errors now.
+    // Scratch, kept to reuse its memory: union-find by solver slot, each root's joint count, whether
+    // it has a selective joint (a limited hinge, a weld, a slider) and its lightest and heaviest
+    // moving body (inverse masses), each joint's tree root; a pass's rows, its system (K, its factor
+    // L, on an envelope from column 0) and its complementarity problem; each joint's rows and
+    // position errors now.
     std::vector<int> root, jointCount, treeIndex, treeOf;
     std::vector<uint8_t> selective;
     std::vector<float> lightest, heaviest;
     std::vector<DirectJointRow> rows;
-    std::vector<int> passRows;               // each one's index in rowJoint/rowKind
+    std::vector<int> passRows;               // each one's index in rowJoint/rowIndex/rowFree
     std::vector<uint8_t> freeRow;
     std::vector<int> firstColumn, lastRow;
     std::vector<size_t> diagonal;
