@@ -146,7 +146,7 @@ struct Plan {
 
 Plan planFor(const std::string& name, int sceneSteps) {
     if (name == "many_pyramids" || name == "smash" || name == "spinner" || name == "joint_grid" || name == "large_pyramid" ||
-        name == "washer" || name == "compounds" || name == "junkyard")
+        name == "stress_large_pile" || name == "washer" || name == "compounds" || name == "junkyard")
         return {12, 2};
     if (name == "ragdoll_rain") return {40, 4};  // past a few spawns
     if (name == "bench_tumbler") return {24, 3};

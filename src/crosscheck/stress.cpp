@@ -447,6 +447,10 @@ const std::vector<Entry>& entries() {
          [](const Scene& s) -> std::unique_ptr<Probe> {
              return std::make_unique<ColumnProbe>(s, ColumnBounds{.fall = 0.005f, .rise = 0.005f});
          }},
+        {{"large_pile", "the large_pyramid scene's top within 5 cm of its placed height and 5 cm of its column, all 10 s", 0},
+         [](const Scene& s) -> std::unique_ptr<Probe> {
+             return std::make_unique<ColumnProbe>(s, ColumnBounds{.fall = 0.05f, .rise = 0.05f});
+         }},
         {{"column100", "the top box within 1 cm of its placed height and 5 cm of its column, all 30 s", 600},
          [](const Scene& s) -> std::unique_ptr<Probe> {
              return std::make_unique<ColumnProbe>(s, ColumnBounds{.fall = 0.01f, .rise = 0.01f});

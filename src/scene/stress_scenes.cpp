@@ -138,6 +138,13 @@ Scene pyramid20() {
 }
 
 
+// The large_pyramid benchmark scene (100 rows, 5,050 boxes, sleep off) for 10 s.
+Scene largePile() {
+    Scene s = findScene("large_pyramid");
+    s.steps = 10 * seconds;
+    return s;
+}
+
 // A 0.1 m ball of mass `mass` at `at`, falling at 10 m/s (the blow of the joint cases).
 void addStriker(Scene& s, Vec2 at, float mass) {
     SceneShape ball = circleShape(0.1f);
@@ -272,6 +279,7 @@ std::vector<BuiltinScene> stressScenes() {
         {"stress_tiles", "stress: a 1 m box sliding frictionless at 6 m/s over 40 separate 1 m tiles, 5 s", tiles},
         {"stress_pyramid20", "stress: a 20-row pyramid of unit boxes, sleep off, 60 s", pyramid20},
         {"stress_pile20", "stress: the 20-row pyramid of unit boxes, judged on its height, 60 s", pyramid20},
+        {"stress_large_pile", "stress: the large_pyramid benchmark's 100-row pyramid (5,050 boxes), judged on its height, 10 s", largePile},
         {"stress_column100", "stress: 100 unit boxes stacked exactly touching, sleep off, 30 s", [] { return stack(100, 30 * seconds); }},
         {"stress_cradle5", "stress: a ball at 2 m/s into 4 touching balls, e = 1, zero gravity, 3 s", [] { return cradle(5, 1, 0.0f); }},
         {"stress_cradle7_two", "stress: two touching balls at 2 m/s into 5 touching balls, e = 1, 3 s", [] { return cradle(7, 2, 0.0f); }},
