@@ -64,13 +64,14 @@ public:
     void observe(float time, const Samples& bodies) override {
         end_ = bodies[size_t(top_)].state.position;
         rose_ = std::max(rose_, end_.y - start_.y);
+        drift_ = std::max(drift_, std::fabs(end_.x - start_.x));
         const bool out = std::fabs(end_.x - start_.x) >= bounds_.drift || start_.y - end_.y >= bounds_.fall ||
                          end_.y - start_.y >= bounds_.rise;
         if (brokeAt_ < 0.0f && out) brokeAt_ = time;
     }
     StressResult result() const override {
-        std::string figure = format("top drift %.3f m, fell %.3f m, rose at most %.4f m", std::fabs(end_.x - start_.x),
-                                    start_.y - end_.y, rose_);
+        std::string figure = format("top drift %.3f m (at most %.3f m), fell %.3f m, rose at most %.4f m", std::fabs(end_.x - start_.x),
+                                    drift_, start_.y - end_.y, rose_);
         if (brokeAt_ >= 0.0f) figure += format(" (out from %.2f s)", brokeAt_);
         return {.figure = figure, .pass = brokeAt_ < 0.0f};
     }
@@ -78,7 +79,8 @@ private:
     ColumnBounds bounds_;
     int top_ = -1;
     Vec2 start_{}, end_{};
-    float rose_ = 0;  // the highest the top box went above where it started
+    float rose_ = 0;   // the highest the top box went above where it started
+    float drift_ = 0;  // the farthest it went sideways
     float brokeAt_ = -1.0f;  // first time the top box was out of bounds
 };
 
