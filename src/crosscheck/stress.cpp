@@ -64,9 +64,9 @@ public:
     void observe(float time, const Samples& bodies) override {
         end_ = bodies[size_t(top_)].state.position;
         rose_ = std::max(rose_, end_.y - start_.y);
-        drift_ = std::max(drift_, std::fabs(end_.x - start_.x));
-        const bool out = std::fabs(end_.x - start_.x) >= bounds_.drift || start_.y - end_.y >= bounds_.fall ||
-                         end_.y - start_.y >= bounds_.rise;
+        const float drift = std::fabs(end_.x - start_.x);
+        drift_ = std::max(drift_, drift);
+        const bool out = drift >= bounds_.drift || start_.y - end_.y >= bounds_.fall || end_.y - start_.y >= bounds_.rise;
         if (brokeAt_ < 0.0f && out) brokeAt_ = time;
     }
     StressResult result() const override {

@@ -137,7 +137,6 @@ Scene pyramid20() {
     return s;
 }
 
-
 // The large_pyramid benchmark scene (100 rows, 5,050 boxes, sleep off) for 10 s.
 Scene largePile() {
     Scene s = findScene("large_pyramid");
