@@ -262,12 +262,13 @@ struct CollisionSystem::Impl {
     // D ≥ |pB − pA| − (extentA − rA) − (extentB − rB) apart, r = rA + rB the radii. b2CollidePolygons
     // keeps clipped points up to r past a face's ends, where their separation along the face
     // normal is only √(D² − r²): a point comes while D ≤ √2 r, never once |pB − pA| > extentA +
-    // extentB + (√2 − 1) r. Half of r and a slop more absorb the float error.
+    // extentB + (√2 − 1) r. Half of r and a slop more absorb the float error, and the collision
+    // skins circles may be grown by.
     bool apart(int shapeA, Vec2 originA, int shapeB, Vec2 originB) const {
         const Bound& a = bounds[shapeA];
         const Bound& b = bounds[shapeB];
         if (!(a.extent > 0.0f && b.extent > 0.0f)) return false;
-        const float reach = a.extent + b.extent + 0.5f * (a.radius + b.radius) + linearSlop;
+        const float reach = a.extent + b.extent + 0.5f * (a.radius + b.radius) + linearSlop + 2.0f * circleSkin;
         return lengthSquared(originB - originA) > reach * reach;
     }
 };
@@ -534,9 +535,21 @@ void CollisionSystem::shiftOrigin(Vec2 newOrigin) {
 namespace {
 
 // What perpdot adds to a b2 shape's separations: collision.hpp's skinOffset, where polygons and
-// edges have Box2D's polygon skin and circles and capsules (b2 polygons with a radius) none.
-float skinOffset(const b2Shape& shape, Skin skin) {
-    return shape.m_type == b2Shape::e_circle || isCapsule(shape) ? 0.0f : collide::skinOffset(ShapeType::Polygon, skin);
+// edges have Box2D's polygon skin, a circle against a circle its collision skin and capsules (b2
+// polygons with a radius) none.
+float skinOffset(const b2Shape& shape, const b2Shape& other, Skin skin) {
+    if (isCapsule(shape)) return 0.0f;
+    auto type = [](const b2Shape& s) { return s.m_type == b2Shape::e_circle ? ShapeType::Circle : ShapeType::Polygon; };
+    return collide::skinOffset(type(shape), type(other), skin);
+}
+
+// Two circles grown by their collision skins (collision.hpp), which skinOffset takes off again.
+std::pair<b2CircleShape, b2CircleShape> withCollisionSkins(const b2CircleShape& a, const b2CircleShape& b, Skin skin) {
+    const float grow = collide::collisionSkin(ShapeType::Circle, ShapeType::Circle, skin);
+    b2CircleShape grownA = a, grownB = b;
+    grownA.m_radius += grow;
+    grownB.m_radius += grow;
+    return {grownA, grownB};
 }
 
 }  // namespace
@@ -552,9 +565,14 @@ Manifold CollisionSystem::collide(ChildKey a, const Transform& xfA, ChildKey b, 
     b2Manifold m;
     m.pointCount = 0;
     const auto* circleB = shapeB.m_type == b2Shape::e_circle ? static_cast<const b2CircleShape*>(&shapeB) : nullptr;
+    // Two circles, grown by their skins: wm below measures between the grown circles.
+    std::pair<b2CircleShape, b2CircleShape> grown;
+    float radiusA = shapeA.m_radius, radiusB = shapeB.m_radius;
     switch (shapeA.m_type) {
         case b2Shape::e_circle:
-            b2CollideCircles(&m, static_cast<const b2CircleShape*>(&shapeA), ta, circleB, tb);
+            grown = withCollisionSkins(static_cast<const b2CircleShape&>(shapeA), *circleB, skin);
+            b2CollideCircles(&m, &grown.first, ta, &grown.second, tb);
+            radiusA = grown.first.m_radius, radiusB = grown.second.m_radius;
             break;
         case b2Shape::e_polygon:
             if (circleB)
@@ -583,11 +601,11 @@ Manifold CollisionSystem::collide(ChildKey a, const Transform& xfA, ChildKey b, 
     out.pointCount = m.pointCount;
     if (m.pointCount == 0) return out;
     b2WorldManifold wm;
-    wm.Initialize(&m, ta, shapeA.m_radius, tb, shapeB.m_radius);
+    wm.Initialize(&m, ta, radiusA, tb, radiusB);
     out.normal = fromB2(wm.normal);
     // Between the true surfaces the gap is skinA + skinB wider, and its midpoint moves by half the
     // difference along n.
-    const float skinA = skinOffset(shapeA, skin), skinB = skinOffset(shapeB, skin);
+    const float skinA = skinOffset(shapeA, shapeB, skin), skinB = skinOffset(shapeB, shapeA, skin);
     for (int i = 0; i < m.pointCount; ++i) {
         out.points[i].point = fromB2(wm.points[i]) + (0.5f * (skinB - skinA)) * out.normal;
         out.points[i].separation = wm.separations[i] + skinA + skinB;

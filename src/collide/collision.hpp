@@ -30,10 +30,22 @@ enum class Skin : uint8_t { Box2D, Kept, None };
 constexpr float box2dSkin(ShapeType type) {
     return type == ShapeType::Polygon || type == ShapeType::Segment || type == ShapeType::Chain ? polygonRadius : 0.0f;
 }
-// What perpdot adds to Box2D's separations for a shape: nothing on Box2D's skin, else its skin,
-// less keptSkin where the pair keeps it.
-constexpr float skinOffset(ShapeType type, Skin skin) {
-    if (skin == Skin::Box2D || box2dSkin(type) == 0.0f) return 0.0f;
+// The skin collide() gives a shape against `other`, within which it reports points before the
+// true surfaces touch: Box2D's, where a polygon's gives every pair with a polygon a margin of at
+// least one skin. Two circles have none, so off Box2D's skin each is collided grown by half a
+// polygon skin: a pair of circles about to meet has its contact (and its impact) from the step
+// before, as a circle about to meet a polygon does.
+inline constexpr float circleSkin = 0.5f * polygonRadius;
+constexpr float collisionSkin(ShapeType type, ShapeType other, Skin skin) {
+    const bool circles = type == ShapeType::Circle && other == ShapeType::Circle;
+    return circles && skin != Skin::Box2D ? circleSkin : box2dSkin(type);
+}
+// What perpdot adds to Box2D's separations for a shape against `other`: nothing on Box2D's skin,
+// else its collision skin, less keptSkin of a polygon's where the pair keeps it (a circle's is all
+// taken off: it only reports points early).
+constexpr float skinOffset(ShapeType type, ShapeType other, Skin skin) {
+    if (skin == Skin::Box2D) return 0.0f;
+    if (box2dSkin(type) == 0.0f) return collisionSkin(type, other, skin);
     return skin == Skin::Kept ? box2dSkin(type) - keptSkin : box2dSkin(type);
 }
 

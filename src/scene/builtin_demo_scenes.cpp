@@ -47,9 +47,8 @@ Scene cardHouse() {
 }
 
 // Five touching balls (restitution 1, no friction) on a frictionless table between two walls;
-// a sixth ball arrives at 4 m/s. Momentum is conserved, but a sequential-impulse solver meets
-// all five contacts in the same step and spreads the momentum along the row instead of handing
-// it all to the far ball as the ideal cradle does: the scene shows that limitation honestly.
+// a sixth ball arrives at 4 m/s. The impact passes down the row as the textbook's sequence of
+// two-body impacts (impact_propagation.cpp) and the far ball leaves at the striker's speed.
 Scene newtonsCradle() {
     Scene s;
     s.steps = 900;

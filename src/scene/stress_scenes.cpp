@@ -168,6 +168,29 @@ Scene cradle(int count, int moving, float gap) {
     return s;
 }
 
+// The cradle on strings: `count` frictionless e = 1 balls (0.25 m) hung on 1 m rigid strings
+// (distance joints) from a ceiling, their pivots 2r + `gap` apart; the first `released` pulled aside
+// together to 30° and let go, under gravity (they meet the row at √(2 g L (1 − cos 30°)) = 1.64 m/s).
+Scene cradleOnStrings(int count, int released, float gap) {
+    Scene s;
+    s.steps = 2 * seconds;
+    const float radius = 0.25f, stringLength = 1.0f, release = 30.0f * pi / 180.0f;
+    addBody(s, {.name = "ceiling", .type = BodyType::Static, .position = {0.0f, 0.0f}});
+    for (int i = 0; i < count; ++i) {
+        SceneShape ball = circleShape(radius);
+        ball.restitution = 1.0f;
+        ball.friction = 0.0f;
+        const float pivot = float(i) * (2.0f * radius + gap);
+        const SinCos a = sinCos(i < released ? release : 0.0f);
+        const std::string name = "ball" + std::to_string(i);
+        addBody(s, {.name = name, .position = {pivot - stringLength * a.sin, -stringLength * a.cos},
+                    .allowSleep = false, .shapes = {ball}});
+        s.joints.push_back({.type = JointType::Distance, .bodyA = "ceiling", .bodyB = name, .anchor = Vec2{pivot, 0.0f},
+                            .anchorB = s.bodies.back().position});
+    }
+    return s;
+}
+
 // A billiard break: a cue ball at 5 m/s into a racked triangle of 15 touching balls (top-down:
 // zero gravity, frictionless, e = 1).
 Scene billiards() {
@@ -283,6 +306,8 @@ std::vector<BuiltinScene> stressScenes() {
         {"stress_cradle5", "stress: a ball at 2 m/s into 4 touching balls, e = 1, zero gravity, 3 s", [] { return cradle(5, 1, 0.0f); }},
         {"stress_cradle7_two", "stress: two touching balls at 2 m/s into 5 touching balls, e = 1, 3 s", [] { return cradle(7, 2, 0.0f); }},
         {"stress_cradle_gaps", "stress: 5 balls 1 mm apart, the first three at 2 m/s, e = 1, 3 s", [] { return cradle(5, 3, 0.001f); }},
+        {"stress_cradle_strings", "stress: 7 balls on 1 m strings 1 mm apart, the first three released from 30 degrees, e = 1, 2 s",
+         [] { return cradleOnStrings(7, 3, 0.001f); }},
         {"stress_billiards", "stress: a cue ball at 5 m/s into a rack of 15 touching balls, e = 1, top-down, 2 s", billiards},
         {"stress_hinge_hit", "stress: a 0.1 kg hinged arm limited to +-0.05 rad struck by a 5 kg ball at 10 m/s, 1 s",
          [] { return armStruck(JointType::Revolute); }},

@@ -120,8 +120,8 @@ Narrowphase collideContact(Contact& c, const Pool<Body>& bodies, const ShapeStor
     };
     const ReuseLimits limits{.distance = reuseDistance,
                              .reach = c.pointCount > 0 ? 0.0f : reach(),
-                             .box2dMargin = collide::box2dSkin(c.typeA) + collide::box2dSkin(c.typeB),
-                             .skinOffset = collide::skinOffset(c.typeA, c.skin) + collide::skinOffset(c.typeB, c.skin)};
+                             .margin = collide::collisionSkin(c.typeA, c.typeB, c.skin) + collide::collisionSkin(c.typeB, c.typeA, c.skin),
+                             .skinOffset = collide::skinOffset(c.typeA, c.typeB, c.skin) + collide::skinOffset(c.typeB, c.typeA, c.skin)};
     if (!reuseManifold(c, ba, bb, limits))
         takeManifold(c, collision.collide(c.a, ba.xf, c.b, bb.xf, c.skin), ba, bb, c.turnsA && c.turnsB);
     c.touching = c.pointCount > 0;

@@ -30,9 +30,9 @@ bool reuseManifold(Contact& c, const Body& a, const Body& b, const ReuseLimits& 
         reach = std::sqrt(reachSquared);
     }
     const float drift = length(relativeOffset(a, b) - c.reuseOffset) + reach * std::fabs(turnB - turnA);
-    // Apart, the shapes were more than Box2D's margin apart: travelling less than half of it they
+    // Apart, the shapes were more than the margin apart: travelling less than half of it they
     // stay apart (and reach the speculative margin with half of it to spare).
-    const float tolerance = c.pointCount == 0 ? std::min(limits.distance, 0.5f * limits.box2dMargin) : limits.distance;
+    const float tolerance = c.pointCount == 0 ? std::min(limits.distance, 0.5f * limits.margin) : limits.distance;
     if (!(drift < tolerance)) return false;
     if (c.pointCount == 0) return true;
 

@@ -17,7 +17,7 @@ namespace perpdot {
 struct ReuseLimits {
     float distance = 0.0f;     // WorldDef::contactReuseDistance: travel of the farthest anchor
     float reach = 0.0f;        // of the two shapes from their bodies' origins, for a contact without points
-    float box2dMargin = 0.0f;  // Box2D's skins: it reports points this far before the shapes touch
+    float margin = 0.0f;       // the collision skins: collide() reports points this far before the shapes touch
     float skinOffset = 0.0f;   // what collide() adds to Box2D's separations (0 on Box2D's skin)
 };
 
