@@ -7,9 +7,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "perpdot/joints.hpp"
+#include "perpdot/scene.hpp"
 #include "perpdot/world.hpp"
 #include "physics_scenes.hpp"
 
@@ -138,6 +140,20 @@ INSTANTIATE_TEST_SUITE_P(Released30Degrees, NewtonsCradleOnStrings,
                          testing::Values(Cradle{5, 1, 0.0f}, Cradle{5, 2, 0.0f}, Cradle{5, 3, 0.0f}, Cradle{7, 1, 0.0f},
                                          Cradle{7, 2, 0.0f}, Cradle{7, 3, 0.0f}, Cradle{5, 1, 0.001f}, Cradle{5, 2, 0.001f},
                                          Cradle{5, 3, 0.001f}, Cradle{7, 3, 0.001f}));
+
+// The built-in newtons_cradle: the striker at 4 m/s ends its 30th step exactly touching the row,
+// and the contact (within a circle pair's 1 cm skin) exists then: after 1 s the far ball runs at
+// 4 m/s and the others are at rest, each to 0.01 m/s.
+TEST(ImpactChain, TheBuiltInCradleHandsTheStrikersSpeedToTheFarBall) {
+    SceneWorld cradle = buildWorld(findScene("newtons_cradle"));
+    for (int i = 0; i < 60; ++i) cradle.step();
+    for (size_t i = 0; i < cradle.bodies.size(); ++i) {
+        const std::string& name = cradle.scene.bodies[i].name;
+        if (cradle.scene.bodies[i].type != BodyType::Dynamic) continue;
+        const float expected = name == "ball4" ? 4.0f : 0.0f;
+        EXPECT_NEAR(length(cradle.world.linearVelocity(cradle.bodies[i]) - Vec2{expected, 0.0f}), 0.0f, 0.01f) << name;
+    }
+}
 
 // Two touching balls head-on, e = 0.5: A keeps (1 − e) u / 2, B takes (1 + e) u / 2.
 TEST(ImpactChainRestitution, HeadOnPairEndsAtHeckersVelocities) {
