@@ -85,11 +85,10 @@ INSTANTIATE_TEST_SUITE_P(Gaps, NewtonsCradle, testing::Values(Cradle{5, 1, 0.001
 // joints) from pivots 2r + gap apart, the first `released` pulled aside together to 30° and let go.
 // They meet the row at u = √(2 g L (1 − cos 30°)) = 1.64 m/s; after the impact the last `released`
 // swing out at u and the others hang still: each ball's largest speed over the next quarter swing
-// within 5 % of the textbook's (u or 0), and the mechanical energy (height from where the balls hang)
-// kept within 1 %. A pair of
-// circles has its contact from the step before they meet (collision.hpp, collisionSkin), so a
-// ball that closes a gap mid-step passes the impact on the same step instead of a step's travel
-// into its neighbour (which left the row swinging by up to 9 % of u).
+// within 5 % of the textbook's (u or 0), and the mechanical energy (height from where the balls
+// hang) kept within 1 %. A pair of circles has its contact from the step before they meet
+// (collision.hpp, collisionSkin), so a ball that closes a gap mid-step passes the impact on the
+// same step instead of going a step's travel into its neighbour first.
 class NewtonsCradleOnStrings : public testing::TestWithParam<Cradle> {};
 
 TEST_P(NewtonsCradleOnStrings, TheLastBallsSwingOut) {

@@ -543,13 +543,12 @@ float skinOffset(const b2Shape& shape, const b2Shape& other, Skin skin) {
     return collide::skinOffset(type(shape), type(other), skin);
 }
 
-// Two circles grown by their collision skins (collision.hpp), which skinOffset takes off again.
-std::pair<b2CircleShape, b2CircleShape> withCollisionSkins(const b2CircleShape& a, const b2CircleShape& b, Skin skin) {
-    const float grow = collide::collisionSkin(ShapeType::Circle, ShapeType::Circle, skin);
-    b2CircleShape grownA = a, grownB = b;
-    grownA.m_radius += grow;
-    grownB.m_radius += grow;
-    return {grownA, grownB};
+// `circle` grown by its collision skin against another circle (collision.hpp), which skinOffset
+// takes off again.
+b2CircleShape withCircleSkin(const b2CircleShape& circle, Skin skin) {
+    b2CircleShape grown = circle;
+    grown.m_radius += collide::collisionSkin(ShapeType::Circle, ShapeType::Circle, skin);
+    return grown;
 }
 
 }  // namespace
@@ -565,15 +564,16 @@ Manifold CollisionSystem::collide(ChildKey a, const Transform& xfA, ChildKey b, 
     b2Manifold m;
     m.pointCount = 0;
     const auto* circleB = shapeB.m_type == b2Shape::e_circle ? static_cast<const b2CircleShape*>(&shapeB) : nullptr;
-    // Two circles, grown by their skins: wm below measures between the grown circles.
-    std::pair<b2CircleShape, b2CircleShape> grown;
+    // The radii wm below measures from: two circles' grown by their skins.
     float radiusA = shapeA.m_radius, radiusB = shapeB.m_radius;
     switch (shapeA.m_type) {
-        case b2Shape::e_circle:
-            grown = withCollisionSkins(static_cast<const b2CircleShape&>(shapeA), *circleB, skin);
-            b2CollideCircles(&m, &grown.first, ta, &grown.second, tb);
-            radiusA = grown.first.m_radius, radiusB = grown.second.m_radius;
+        case b2Shape::e_circle: {
+            const b2CircleShape grownA = withCircleSkin(static_cast<const b2CircleShape&>(shapeA), skin);
+            const b2CircleShape grownB = withCircleSkin(*circleB, skin);
+            b2CollideCircles(&m, &grownA, ta, &grownB, tb);
+            radiusA = grownA.m_radius, radiusB = grownB.m_radius;
             break;
+        }
         case b2Shape::e_polygon:
             if (circleB)
                 b2CollidePolygonAndCircle(&m, static_cast<const b2PolygonShape*>(&shapeA), ta, circleB, tb);
