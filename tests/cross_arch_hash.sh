@@ -1,13 +1,16 @@
 #!/usr/bin/env bash
 # Determinism across CPUs: the perpdot CLI and unit tests cross-built for ARM64 (g++-aarch64-linux-gnu,
 # run under qemu-aarch64) and for 32-bit x86 (g++-i686-linux-gnu with SSE2 arithmetic, run
-# natively), each linking the Box2D that third_party/box2d-deterministic.sh builds for it, must
+# natively where the kernel runs 32-bit programs, else under qemu-i386), each linking the Box2D that third_party/box2d-deterministic.sh builds for it, must
 #   - print the x86-64 gcc build's state_hash for every scene of tests/hash_common.sh,
 #   - write snapshots of the same bytes, and continue every build's snapshot to the hash of the
 #     x86-64 run that never saved (compareSnapshots, across x86-64, ARM64 and i386),
-#   - on i386, print the same hash on 2 and 4 oneTBB workers (--workers N);
-#   - pass unit tests: on i386 all of them (natively; the tests that start the CLI start the i386
-#     one), on ARM64 under qemu the subset `armTests` below.
+#   - on i386, print the same hash on 2 and 4 oneTBB workers (--workers N; natively only, see below);
+#   - pass unit tests: on native i386 all of them (the tests that start the CLI start the i386
+#     one); under qemu, on ARM64 and on i386, the subset `qemuTests` below.
+# 32-bit x86 under qemu: some x86-64 kernels are built without IA32 emulation (CI's, among them),
+# and there a 32-bit program fails with 'Exec format error'. A probe program tells; then i386 is
+# checked as ARM64 is, its workers through the game's task system.
 # Threads on ARM64: oneTBB's workers have been seen to hang under qemu-user before they start (a
 # limitation of the emulator, not of ARM64), and a hang would stall CI, so ARM64 threads are checked through a game's task system on
 # std::threads (WorldDef::enqueueTask; the Workers.AGames* and Workers.ATask* tests), which qemu
@@ -26,24 +29,31 @@ jobs="${PERPDOT_JOBS:-2}"
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 
-# ARM64 unit tests under qemu: those that start no other program (the CLI and stress tests start
+# Unit tests under qemu: those that start no other program (the CLI and stress tests start
 # the perpdot command: an ARM64 program started by a test needs the kernel to hand it to qemu,
 # binfmt_misc, which CI machines lack) and use no oneTBB workers, chosen to fit the CI budget
 # (qemu runs perpdot about 20 times slower than the CPU): the portable sin, cos, atan2 and exp
 # bit for bit (their accuracy tests compare with long double, software-emulated on ARM64: they run
-# on x86-64 and i386), threads on a game's task system, determinism and snapshots, the SIMD lanes
+# on x86-64 and native i386), threads on a game's task system, determinism and snapshots, the SIMD lanes
 # against scalar rows, the numerics, Box2D's collision through perpdot (shapes, casts, time of
 # impact), and the dynamics checked against analytic results and Box2D's b2World.
 # SnapshotRollback (1,800 restore points) would take two thirds of the time: it runs on x86-64 and
-# i386, and snapshots across CPUs are compareSnapshots' job.
-armTests='PortableMath.SameBitsOnEveryCpu:Workers.AGames*:Workers.ATask*:Determinism.*:Snapshot.*:GearPulleySnapshot.*'
-armTests+=':ContactSolverWide.*:JointSolverWide.*:Numerics.*:Capsule.*:ShapeCast.*:TimeOfImpact.*:Mass.*'
-armTests+=':Contact.*:BoxOnGround.*:Dynamics.*:CrosscheckPhysics.*:PairSet.*:RadixSort.*:StaticTree.*'
+# native i386, and snapshots across CPUs are compareSnapshots' job.
+qemuTests='PortableMath.SameBitsOnEveryCpu:Workers.AGames*:Workers.ATask*:Determinism.*:Snapshot.*:GearPulleySnapshot.*'
+qemuTests+=':ContactSolverWide.*:JointSolverWide.*:Numerics.*:Capsule.*:ShapeCast.*:TimeOfImpact.*:Mass.*'
+qemuTests+=':Contact.*:BoxOnGround.*:Dynamics.*:CrosscheckPhysics.*:PairSet.*:RadixSort.*:StaticTree.*'
 
-buildFor() {  # arch toolchain-file
+probe="$(mktemp -d)"
+printf 'int main(void) { return 0; }\n' >"$probe/probe.c"
+i686-linux-gnu-gcc "$probe/probe.c" -o "$probe/probe"
+i386Emulator=()
+"$probe/probe" 2>/dev/null || i386Emulator=(qemu-i386)
+rm -rf "$probe"
+
+buildFor() {  # arch toolchain-file [cmake flags...]
     local prefix
     prefix="$(bash "$root/third_party/box2d-deterministic.sh" "$1")"
-    cmake -S "$root" -B "$root/build-arch-$1" -DCMAKE_TOOLCHAIN_FILE="$root/cmake/toolchains/$2" \
+    cmake -S "$root" -B "$root/build-arch-$1" -DCMAKE_TOOLCHAIN_FILE="$root/cmake/toolchains/$2" "${@:3}" \
         -DCMAKE_BUILD_TYPE=Release -DPERPDOT_BOX2D_PREFIX="$prefix" "${launcher[@]}" \
         -DPERPDOT_BUILD_DEMOS=OFF -DPERPDOT_BUILD_BENCH=OFF -DPERPDOT_BUILD_DOCS=OFF -DPERPDOT_INSTALL=OFF >/dev/null
     cmake --build "$root/build-arch-$1" --target perpdot-cli perpdot-tests -j"$jobs" >/dev/null
@@ -54,10 +64,16 @@ if [[ ! -x "$hostDir/perpdot" ]]; then
     cmake --build "$hostDir" --target perpdot-cli -j"$jobs" >/dev/null
 fi
 buildFor aarch64 aarch64-linux-gnu.cmake
-buildFor i386 i686-linux-gnu.cmake
+if [[ ${#i386Emulator[@]} -gt 0 ]]; then
+    echo "this kernel runs no 32-bit x86 program: i386 runs under qemu-i386"
+    buildFor i386 i686-linux-gnu.cmake -DCMAKE_CROSSCOMPILING_EMULATOR=qemu-i386
+else
+    buildFor i386 i686-linux-gnu.cmake -UCMAKE_CROSSCOMPILING_EMULATOR
+fi
 host="$hostDir/perpdot"
 arm="qemu-aarch64 $root/build-arch-aarch64/perpdot"
-i386="$root/build-arch-i386/perpdot"
+i386="${i386Emulator[*]} $root/build-arch-i386/perpdot"
+i386="${i386# }"
 
 failed=0
 matched=0
@@ -72,6 +88,7 @@ for scene in "${scenes[@]}"; do
         echo "same      $scene $x"
         matched=$((matched + 1))
     fi
+    [[ ${#i386Emulator[@]} -gt 0 ]] && continue
     for workers in 2 4; do
         t="$(hashOf "$i386" "$scene" --workers "$workers")"
         [[ "$t" == "$i" ]] || { echo "DIFFERENT $scene on i386 with $workers workers: $t (1 worker: $i)"; failed=1; }
@@ -80,8 +97,13 @@ done
 echo "$matched of ${#scenes[@]} scenes give the x86-64 state_hash on aarch64 and i386"
 compareSnapshots x86-64="$host" aarch64="$arm" i386="$i386"
 
-echo "== ARM64 unit tests under qemu: $armTests"
-qemu-aarch64 "$root/build-arch-aarch64/tests/perpdot-tests" --gtest_filter="$armTests" --gtest_brief=1 || failed=1
-echo "== i386 unit tests"
-"$root/build-arch-i386/tests/perpdot-tests" --gtest_brief=1 || failed=1
+echo "== ARM64 unit tests under qemu: $qemuTests"
+qemu-aarch64 "$root/build-arch-aarch64/tests/perpdot-tests" --gtest_filter="$qemuTests" --gtest_brief=1 || failed=1
+if [[ ${#i386Emulator[@]} -gt 0 ]]; then
+    echo "== i386 unit tests under qemu: $qemuTests"
+    qemu-i386 "$root/build-arch-i386/tests/perpdot-tests" --gtest_filter="$qemuTests" --gtest_brief=1 || failed=1
+else
+    echo "== i386 unit tests"
+    "$root/build-arch-i386/tests/perpdot-tests" --gtest_brief=1 || failed=1
+fi
 exit $failed
