@@ -9,7 +9,8 @@
 #      and so does the gcc build on 2, 3, 4 and 8 workers
 #   5. determinism across CPUs: ARM64 (cross-built, run under qemu-user) and 32-bit x86 builds, each
 #      linking a Box2D built without fused multiply-adds, print the x86-64 state_hash on every
-#      scene, continue each other's snapshots, and pass their unit tests (ARM64: a subset)
+#      scene, continue each other's snapshots, and pass their unit tests (under qemu: a subset; i386
+#      runs natively where the kernel runs 32-bit programs, else under qemu-i386)
 #   6. a fixed libFuzzer smoke of the scene, snapshot and API harnesses (seed 1, 20000 inputs each;
 #      open-ended exploration is tests/fuzz/explore.sh, never CI)
 #   7. clang-tidy with the checked-in .clang-tidy
