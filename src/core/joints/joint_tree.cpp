@@ -236,7 +236,8 @@ void solveJointTrees(SolverBodies& bodies, JointTrees& t, std::vector<PreparedJo
         bool solved = factored;
         if (solved) {
             // y_r from the velocities now: a limit inside its range (C > 0) rigid, Ċ → −C/hs (it may
-            // close the gap); the others the soft step, Ċ + biasRate·C and the leak of K λ.
+            // close the gap); the others the soft step, Ċ + biasRate·C and the leak of K λ, a
+            // slider past its limit pushed back at most slidePushMaxVelocity.
             for (int r = 0; r < n; ++r) t.lcp.lambda[r] = impulseOf(r);
             for (int r = 0; r < n; ++r) {
                 const PreparedJoint& j = jointOf(r);
@@ -249,7 +250,9 @@ void solveJointTrees(SolverBodies& bodies, JointTrees& t, std::vector<PreparedJo
                 }
                 double kLambda = 0.0;  // (K λ)_r
                 forEachInRow(t.K.data(), shape, r, [&](int s, double k) { kLambda += k * t.lcp.lambda[s]; });
-                t.lcp.y[r] = -soft.massScale * (v + soft.biasRate * C) - soft.impulseScale * kLambda;
+                float bias = soft.biasRate * C;
+                if (!t.freeRow[r] && j.type == JointType::Prismatic) bias = std::max(bias, -JointTrees::slidePushMaxVelocity);
+                t.lcp.y[r] = -soft.massScale * (v + bias) - soft.impulseScale * kLambda;
             }
             solved = solveComplementarity(t.lcp, shape, t.K.data(), t.L.data(), t.freeRow.data());
         }
