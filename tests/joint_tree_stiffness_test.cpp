@@ -6,9 +6,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "joint_helpers.hpp"
+#include "perpdot/scene.hpp"
 
 namespace perpdot {
 namespace {
@@ -156,62 +158,48 @@ TEST(RevoluteLoop, StraightBridgeCarriesAHeavyPlank) {
     EXPECT_LT(m.energyRise, 1e-3f * m.energyScale);
 }
 
-// `bridge1000`'s deck: 20 planks of 0.05 kg on an arc 0.99 m deep between posts 9.74 m apart,
-// hinged to each other and to the posts; `hingeAt(j)` is hinge j's point (0 and 20 on the posts).
-struct Deck {
-    static constexpr int planks = 20;
-    static constexpr float arc = 0.8f, step = arc / static_cast<float>(planks);
-    float radius = 0.25f / std::sin(0.5f * step);
-    std::vector<BodyId> bodies;
-    std::vector<JointId> joints;
-    Vec2 hingeAt(int j) const {
-        const float phi = -0.5f * arc + step * static_cast<float>(j);
-        return Vec2{radius * std::sin(phi), 10.0f - radius * (std::cos(phi) - std::cos(0.5f * arc))};
-    }
-    explicit Deck(World& world) {
-        BodyId previous = staticBody(world, hingeAt(0));
-        for (int i = 0; i < planks; ++i) {
-            const Vec2 p1 = hingeAt(i), p2 = hingeAt(i + 1);
-            bodies.push_back(dynamicBody(world, 0.5f * (p1 + p2), std::atan2(p2.y - p1.y, p2.x - p1.x)));
-            ShapeDef shape;
-            world.createShape(bodies.back(), shape, makeBox(0.25f, 0.05f));
-            joints.push_back(world.createJoint(hinge(world, previous, bodies.back(), p1)));
-            previous = bodies.back();
-        }
-        joints.push_back(world.createJoint(hinge(world, previous, staticBody(world, hingeAt(planks)), hingeAt(planks))));
-    }
-};
+// `stress_bridge1000`: 20 planks of 0.05 kg on an arc 0.99 m deep between posts 9.74 m apart,
+// hinged to each other and to the posts (joint i at hinge i, plank i from hinge i to hinge i + 1),
+// its 50 kg load (the last body) hung by the last joint from the lowest hinge, hinge 10.
+constexpr int middlePlank = 10;
+Vec2 hingeOf(const Scene& bridge, int i) { return *bridge.joints[static_cast<size_t>(i)].anchor; }
+std::vector<BodyId> planksOf(const SceneWorld& bridge) { return {bridge.bodies.begin() + 2, bridge.bodies.end() - 1}; }
 
-// The deck with a 50 kg load hung by a hinge from a middle plank, at the plank's end (a hinge of
-// the deck), a quarter or half along it: the load joins the deck's tree, falls until the deck's
-// halves are taut, and is caught, every hinge within 1 % of a link throughout 10 s.
+// The load hung by a hinge from the middle plank, at its end (the lowest hinge), a quarter or half
+// along it: the load joins the deck's tree, falls until the deck's halves are taut, and is caught,
+// every hinge within 1 % of a link throughout 10 s.
 TEST(RevoluteLoop, LoadHungAnywhereOnAPlankIsCaught) {
     for (const float along : {0.0f, 0.125f, 0.25f}) {
-        World world(WorldDef{.gravity = {0.0f, -g}});
-        Deck deck(world);
-        const Vec2 at = deck.hingeAt(Deck::planks / 2) +
-                        along * normalize(deck.hingeAt(Deck::planks / 2 + 1) - deck.hingeAt(Deck::planks / 2));
-        const BodyId load = box(world, at + Vec2{0.0f, -0.45f}, 0.25f, 0.25f, 200.0f);
-        deck.joints.push_back(world.createJoint(hinge(world, deck.bodies[Deck::planks / 2], load, at)));
-        const Motion m = run(world, deck.bodies, deck.joints, 600);
+        Scene scene = findScene("stress_bridge1000");
+        const Vec2 lowest = hingeOf(scene, middlePlank);
+        const Vec2 at = lowest + along * normalize(hingeOf(scene, middlePlank + 1) - lowest);
+        scene.bodies.back().position = at + Vec2{0.0f, -0.45f};
+        scene.joints.back().bodyA = "plank" + std::to_string(middlePlank);
+        scene.joints.back().anchor = at;
+        SceneWorld bridge = buildWorld(scene);
+        const Motion m = run(bridge.world, planksOf(bridge), bridge.joints, 600);
         EXPECT_LT(m.worstGap, 0.01f * 0.5f) << along;
-        EXPECT_GT(world.position(load).y, at.y - 1.0f) << along << ": the deck caught it";
+        EXPECT_GT(bridge.world.position(bridge.bodies.back()).y, at.y - 1.0f) << along << ": the deck caught it";
     }
 }
 
 // Outside the direct solve (docs/stress.md, "What the direct solve does not take"): a load resting
-// by contact on a loop. The deck with its 50 kg load set on the two middle planks instead of hung:
-// the contact is solved row by row against a plank's own mass, and the load goes through the deck,
-// while the loop keeps its hinges closed.
+// by contact on a loop. The load set on the two middle planks instead of hung: the contact is
+// solved row by row against a plank's own mass, and the load goes through the deck, while the loop
+// keeps its hinges closed.
 TEST(RevoluteLoop, LoadRestingOnTheDeckByContactGoesThroughIt) {
-    World world(WorldDef{.gravity = {0.0f, -g}});
-    Deck deck(world);
-    const float surface = deck.hingeAt(Deck::planks / 2).y + 0.05f + 0.25f * std::tan(0.5f * Deck::step);  // the middle planks' surface under the load's corners
-    const BodyId load = box(world, {0.0f, surface + 0.25f}, 0.25f, 0.25f, 200.0f);
-    const Motion m = run(world, deck.bodies, deck.joints, 600);
+    Scene scene = findScene("stress_bridge1000");
+    scene.joints.pop_back();
+    const Vec2 lowest = hingeOf(scene, middlePlank);
+    const float tilt = scene.bodies[2 + middlePlank].angle;                  // the middle planks' slope, ±
+    const float surface = lowest.y + 0.05f + 0.25f * std::tan(tilt);        // under the load's corners
+    scene.bodies.back().position = {lowest.x, surface + 0.25f};
+    SceneWorld bridge = buildWorld(scene);
+    const Motion m = run(bridge.world, planksOf(bridge), bridge.joints, 600);
+    const BodyId load = bridge.bodies.back();
     EXPECT_LT(m.worstGap, 0.01f * 0.5f);
-    EXPECT_TRUE(std::isfinite(world.position(load).y));
-    EXPECT_LT(world.position(load).y, deck.hingeAt(Deck::planks / 2).y - 10.0f) << "the load is through the deck and falling";
+    EXPECT_TRUE(std::isfinite(bridge.world.position(load).y));
+    EXPECT_LT(bridge.world.position(load).y, lowest.y - 10.0f) << "the load is through the deck and falling";
 }
 
 // 20 (or `links`) links of 0.5 m pinned at one end, released horizontal, the last `ratio` times a
