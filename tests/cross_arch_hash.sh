@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Determinism across CPUs: the perpdot CLI and unit tests cross-built for ARM64 (g++-aarch64-linux-gnu,
 # run under qemu-aarch64) and for 32-bit x86 (g++-i686-linux-gnu with SSE2 arithmetic, run
-# natively where the kernel runs 32-bit programs, else under qemu-i386), each linking the Box2D that third_party/box2d-deterministic.sh builds for it, must
+# natively where the kernel runs 32-bit programs, else under qemu-i386), each linking the Box2D
+# that third_party/box2d-deterministic.sh builds for it, must
 #   - print the x86-64 gcc build's state_hash for every scene of tests/hash_common.sh,
 #   - write snapshots of the same bytes, and continue every build's snapshot to the hash of the
 #     x86-64 run that never saved (compareSnapshots, across x86-64, ARM64 and i386),
@@ -43,11 +44,14 @@ qemuTests='PortableMath.SameBitsOnEveryCpu:Workers.AGames*:Workers.ATask*:Determ
 qemuTests+=':ContactSolverWide.*:JointSolverWide.*:Numerics.*:Capsule.*:ShapeCast.*:TimeOfImpact.*:Mass.*'
 qemuTests+=':Contact.*:BoxOnGround.*:Dynamics.*:CrosscheckPhysics.*:PairSet.*:RadixSort.*:StaticTree.*'
 
+# i386Emulator: empty where this kernel runs 32-bit x86 programs, else qemu-i386; i386Tests: the
+# unit tests i386 runs (all natively, the qemu subset under qemu).
 probe="$(mktemp -d)"
 printf 'int main(void) { return 0; }\n' >"$probe/probe.c"
 i686-linux-gnu-gcc "$probe/probe.c" -o "$probe/probe"
 i386Emulator=()
-"$probe/probe" 2>/dev/null || i386Emulator=(qemu-i386)
+i386Tests=()
+"$probe/probe" 2>/dev/null || { i386Emulator=(qemu-i386); i386Tests=(--gtest_filter="$qemuTests"); }
 rm -rf "$probe"
 
 buildFor() {  # arch toolchain-file [cmake flags...]
@@ -64,16 +68,11 @@ if [[ ! -x "$hostDir/perpdot" ]]; then
     cmake --build "$hostDir" --target perpdot-cli -j"$jobs" >/dev/null
 fi
 buildFor aarch64 aarch64-linux-gnu.cmake
-if [[ ${#i386Emulator[@]} -gt 0 ]]; then
-    echo "this kernel runs no 32-bit x86 program: i386 runs under qemu-i386"
-    buildFor i386 i686-linux-gnu.cmake -DCMAKE_CROSSCOMPILING_EMULATOR=qemu-i386
-else
-    buildFor i386 i686-linux-gnu.cmake -UCMAKE_CROSSCOMPILING_EMULATOR
-fi
+[[ ${#i386Emulator[@]} -eq 0 ]] || echo "this kernel runs no 32-bit x86 program: i386 runs under qemu-i386"
+buildFor i386 i686-linux-gnu.cmake -DCMAKE_CROSSCOMPILING_EMULATOR="${i386Emulator[*]}"
 host="$hostDir/perpdot"
 arm="qemu-aarch64 $root/build-arch-aarch64/perpdot"
-i386="${i386Emulator[*]} $root/build-arch-i386/perpdot"
-i386="${i386# }"
+i386="${i386Emulator[*]:+${i386Emulator[*]} }$root/build-arch-i386/perpdot"
 
 failed=0
 matched=0
@@ -99,11 +98,6 @@ compareSnapshots x86-64="$host" aarch64="$arm" i386="$i386"
 
 echo "== ARM64 unit tests under qemu: $qemuTests"
 qemu-aarch64 "$root/build-arch-aarch64/tests/perpdot-tests" --gtest_filter="$qemuTests" --gtest_brief=1 || failed=1
-if [[ ${#i386Emulator[@]} -gt 0 ]]; then
-    echo "== i386 unit tests under qemu: $qemuTests"
-    qemu-i386 "$root/build-arch-i386/tests/perpdot-tests" --gtest_filter="$qemuTests" --gtest_brief=1 || failed=1
-else
-    echo "== i386 unit tests"
-    "$root/build-arch-i386/tests/perpdot-tests" --gtest_brief=1 || failed=1
-fi
+echo "== i386 unit tests ${i386Emulator[*]:+under qemu: $qemuTests}"
+"${i386Emulator[@]}" "$root/build-arch-i386/tests/perpdot-tests" "${i386Tests[@]}" --gtest_brief=1 || failed=1
 exit $failed

@@ -83,8 +83,8 @@ Motion swing(float ratio, bool sliders = true, int substeps = 4) {
 
 class MixedHeavyChain : public ::testing::TestWithParam<float> {};
 
-// Gaps 0.1 / 0.2 / 0.1 / 0.1 / 0.1 mm at 100 / 300 / 1000 / 3000 / 5000 : 1; sliders 3.0 / 8.4 / 3.8 /
-// 5.8 / 4.9 mm past their limits. Solved by the sequential passes (before trees took welds and
+// Gaps 0.1 / 0.2 / 0.1 / 0.1 / 0.1 mm at 100 / 300 / 1000 / 3000 / 5000 : 1; sliders 3.0 / 8.4 /
+// 3.8 / 5.8 / 4.9 mm past their limits. Solved by the sequential passes (before trees took welds and
 // sliders), the chain opened 7.1 cm / 322 m at 100 / 1000 : 1.
 TEST_P(MixedHeavyChain, KeepsEveryJointOnItsAxisWithinOnePercentOfALink) {
     const Motion m = swing(GetParam());
@@ -108,9 +108,9 @@ TEST(JointTree, HingedAndWeldedChainHoldsAtFiftyThousandFold) {
 }
 
 // With its sliders at 10,000 to 50,000 : 1. Each swing the sliders go slack and the 500 kg end
-// snaps them taut against their limits. Past its limit a slider is pushed back at most JointTrees::slidePushMaxVelocity: pushed at the soft
-// step's biasRate·C, the limits handed back more than they took and the chain came apart within
-// 2 s (gaps of 11 m at 10,000 : 1). Every joint stays within 1 % of a link of its axis (0.4, 2.0,
+// snaps them taut against their limits. Past its limit a slider is pushed back at most
+// JointTrees::slidePushMaxVelocity: pushed at the soft step's biasRate·C, the limits handed back
+// more than they took and the chain came apart within 2 s (gaps of 11 m at 10,000 : 1). Every joint stays within 1 % of a link of its axis (0.4, 2.0,
 // 1.9 mm); the sliders go 2.2 cm past their limits at 10,000 : 1, 22 and 49 cm at 20,000 and
 // 50,000 : 1, where the end's pull drags them out faster than the capped push brings them back;
 // at 8 substeps, 0.8 and 2.0 cm at 10,000 and 20,000 : 1.

@@ -49,9 +49,10 @@ struct JointTrees {
     // WorldDef::contactPushMaxVelocity. The push is speed the limit hands to the bodies: a 500 kg
     // end that snaps the sliders of `stress_mixed1000` taut drives them centimetres past their
     // limits, and pushed back at the soft step's biasRate·C (metres a second) the end took more
-    // energy each swing until the chain came apart within 2 s at 10,000 : 1. 0.3 m/s holds every joint of that chain within 3 mm of its axis up to 50,000 : 1
-    // (docs/stress.md). Angular limits keep the soft step: capped alike, the limited hinge chain's
-    // limits gave way (1.7 rad against ±1 rad).
+    // energy each swing until the chain came apart within 2 s at 10,000 : 1. 0.3 m/s holds every
+    // joint of that chain within 3 mm of its axis up to 50,000 : 1 (docs/stress.md). Angular
+    // limits keep the soft step: capped alike, the limited hinge chain's limits gave way (1.7 rad
+    // against ±1 rad).
     static constexpr float slidePushMaxVelocity = 0.3f;
     std::vector<int> joints;    // indices into JointStore::prepared, tree by tree, in prepared order
     std::vector<int> start;     // tree t is joints[start[t] .. start[t + 1])
