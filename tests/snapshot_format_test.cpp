@@ -9,6 +9,8 @@
 // runtime_changes.snap, the world of RuntimeSnapshot.ChangesMadeAtRunTimeSurviveARestoreBitForBit
 // (runtime_api_test.cpp) where it is saved: changed at run time (a type, a mass override, fixed
 // rotation, a filter, a sensor toggle, a kinematic target, a disabled body and shape, a shifted origin).
+// tests/data/snapshot_v6/ holds format 6 (each body's rest sink, support_sinks.hpp): the format-5
+// files loaded and saved again.
 //
 // A loaded old snapshot must continue exactly like the same state restored from the current
 // format: the old file is loaded, saved in today's format, that is restored into a second world,
@@ -88,17 +90,19 @@ TEST(SnapshotFormat, FormatFourFilesLoadAndContinueLikeTheCurrentFormat) {
     expectOldFilesContinueLikeTheCurrentFormat(PERPDOT_TEST_DATA "/snapshot_v4", 4, 6);
 }
 
-// While the format is 5, a format-5 file saves back byte for byte (a format-4 file saves as the
-// format-5 file made from it but for the World identity, which format 4 did not hold: the test
-// above steps them side by side). A new format version replaces this by a check like the ones
-// above and adds files of its own.
-static_assert(formatVersion == 5, "format 5 is no longer current: see the comment above");
-TEST(SnapshotFormat, FormatFiveFilesSaveBackByteForByte) {
-    const std::vector<std::filesystem::path> files = snapshotFiles(PERPDOT_TEST_DATA "/snapshot_v5");
+TEST(SnapshotFormat, FormatFiveFilesLoadAndContinueLikeTheCurrentFormat) {
+    expectOldFilesContinueLikeTheCurrentFormat(PERPDOT_TEST_DATA "/snapshot_v5", 5, 7);
+}
+
+// While the format is 6, a format-6 file saves back byte for byte. A new format version replaces
+// this by a check like the ones above and adds files of its own.
+static_assert(formatVersion == 6, "format 6 is no longer current: see the comment above");
+TEST(SnapshotFormat, FormatSixFilesSaveBackByteForByte) {
+    const std::vector<std::filesystem::path> files = snapshotFiles(PERPDOT_TEST_DATA "/snapshot_v6");
     ASSERT_EQ(files.size(), 7u);
     for (const auto& path : files) {
         const Bytes saved = readFile(path);
-        ASSERT_EQ(versionOf(saved), 5u) << path;
+        ASSERT_EQ(versionOf(saved), 6u) << path;
         World world;
         ASSERT_NO_THROW(world.restore(saved)) << path;
         EXPECT_EQ(world.snapshot(), saved) << path;

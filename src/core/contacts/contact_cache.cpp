@@ -412,6 +412,7 @@ void updateContacts(const ContactWorld& w) {
     for (int index = 0; index < count; ++index)
         if (cache.narrowphase[index] != Narrowphase::Quiet && cache.narrowphase[index] != Narrowphase::Skipped) unquiet.push_back(index);
     cache.apart.clear();  // (a step that threw before releasing them finds them apart again)
+    cache.beganTouching = 0;
     // Each contact misses the cache: ask for it a few ahead.
     constexpr size_t ahead = 8;
     for (size_t i = 0; i < unquiet.size(); ++i) {
@@ -447,6 +448,7 @@ void updateContacts(const ContactWorld& w) {
         if (!c.touching) c.rollingImpulse = 0.0f;
         cache.touchingPoints[index] = touchingPoints(c);
         if (c.touching != (result == Narrowphase::WasTouching)) reportTouch(w.events, w.shapes, w.identity, c, c.touching);
+        cache.beganTouching += c.touching && result != Narrowphase::WasTouching ? 1 : 0;
         // An awake body touching a sleeping one wakes the sleeper's island.
         if (c.touching) {
             if (!ba.awake && ba.type != BodyType::Static && bb.awake) wakeIsland(w.bodies, c.bodyA);

@@ -51,6 +51,9 @@ struct Contact {
     float rollingImpulse = 0;  // warm start of the rolling-resistance row
     Vec2 normal;
     int pointCount = 0;
+    // A support row's rest sink, low-passed: how much deeper its points are solved (support_sinks.hpp).
+    // Between the runs the solver gathers, in the lines it loads for them.
+    float restSink = 0;
     ContactPointState points[2];
     // The pose at the last narrowphase (manifold_reuse.hpp): B's centre in A's frame, both angles,
     // and their rotations R(θ) (derived from the angles, not saved: snapshot.cpp derives them again).
@@ -113,6 +116,7 @@ struct ContactCache {
     std::vector<Narrowphase> narrowphase;          // updateContacts scratch, by contact,
     std::vector<int> unquiet;                      // and the contacts it has more to do for, in pool order;
     std::vector<int> apart;                        // of those, the ones whose boxes parted (releaseApartContacts)
+    int beganTouching = 0;                         // of those, how many began touching (seedSupportLoads looks only then)
     // By contact slot, what updateContacts passes over contacts whose bodies both sleep with, and
     // markTouching and selectContacts select constraints by, without reading the contacts' cache
     // lines (a pool of 58,000 contacts is 13 MB): its two bodies (they never change) and the

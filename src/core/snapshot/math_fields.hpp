@@ -18,7 +18,7 @@ namespace perpdot {
 // joints' break limits. 5: bodies and shapes taken out of the simulation (World::setEnabled); a
 // chain's loop byte also holds its solid side and whether ghost vertices follow (bits 2, 4, 8: 0 in
 // older files, whose chains were solid on the left).
-constexpr uint32_t formatVersion = 5;
+constexpr uint32_t formatVersion = 6;
 
 constexpr auto fields(const Rot*) { return std::tuple{field("c", &Rot::c), field("s", &Rot::s)}; }
 constexpr auto fields(const Transform*) { return std::tuple{field("p", &Transform::p), field("q", &Transform::q)}; }

@@ -27,7 +27,7 @@ constexpr uint8_t compactMagic[8] = {'P', 'E', 'R', 'P', 'D', 'O', 'T', 'C'};
 // 4: (zero, literal) varint pairs, versioned with the full format. 5: nibble headers. 6: the
 // baseline's hash in four streams. 7: contacts keep their mixed materials (before, zeros the
 // narrowphase recomputed; it no longer does, so a version 6 snapshot would restore frictionless).
-constexpr uint32_t compactFormatVersion = 7;
+constexpr uint32_t compactFormatVersion = 8;
 constexpr size_t nibbleEscape = 15;
 
 uint64_t word(const uint8_t* bytes) {

@@ -137,6 +137,7 @@ constexpr auto fields(const Contact*) {
                       field("rollingImpulse", &C::rollingImpulse).anyBits(),
                       field("normal", &C::normal).anyBits(),
                       field("pointCount", &C::pointCount),
+                      field("restSink", &C::restSink).anyBits().since(6),
                       field("reuseValid", &C::reuseValid).since(4),
                       field("reuseOffset", &C::reuseOffset).anyBits().since(4),
                       field("reuseAngleA", &C::reuseAngleA).anyBits().since(4),

@@ -8,6 +8,7 @@
 #include "core/solver/contact_prepare.hpp"
 #include "core/solver/contact_solver.hpp"
 #include "core/solver/impact_propagation.hpp"
+#include "core/solver/support_sinks.hpp"
 
 namespace perpdot {
 
@@ -173,6 +174,7 @@ void selectContacts(const SolverWorld& w, const StepContext& ctx) {
         for (int slot = begin; slot < end; ++slot) s.bodies.freeVelocities[slot] = velocityWithoutContact(w, ctx, slot);
     });
     propagateImpacts(w, ctx);  // simultaneous impacts, pair by pair, before the substeps
+    seedSupportLoads(w, ctx);  // new supports' loads, which the groups read
     findContactGroups(w, ctx);
 }
 

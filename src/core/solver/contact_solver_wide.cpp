@@ -12,6 +12,7 @@
 
 #include "core/solver/contact_prepare.hpp"
 #include "core/solver/contact_solver.hpp"
+#include "core/solver/support_sinks.hpp"
 
 namespace perpdot {
 
@@ -55,6 +56,25 @@ void deriveBlock(const SolverWorld& w, const StepContext& ctx, ContactBlock<8>& 
 }
 #endif
 
+// A support row (support_sinks.hpp), laid out at `at`: its contact's rest sink settled from the
+// points' λ₀ and effective masses, and its points solved that much deeper (baseSeparation less it).
+template <std::size_t lanes>
+void offsetSupportRow(const SolverWorld& w, RowLane<lanes> at, int k, const RestSinkTerms& terms) {
+    using R = ContactRows<float>;
+    using P = ContactPointRows<float>;
+    const ContactConstraint& c = w.scratch.contacts.constraints[static_cast<size_t>(k)];
+    const float invMassA = w.scratch.bodies.freeVelocities[c.indexA].invMass, invMassB = w.scratch.bodies.freeVelocities[c.indexB].invMass;
+    if (supportedSide(at.vec(offsetof(R, normal)), terms.up, invMassA, invMassB) == 0) return;
+    constexpr std::size_t second = sizeof(P);
+    float impulseK = at[offsetof(R, points) + offsetof(P, normalImpulse)] / at[offsetof(R, points) + offsetof(P, normalMass)];
+    if (c.pointCount > 1) impulseK += at[offsetof(R, points) + second + offsetof(P, normalImpulse)] / at[offsetof(R, points) + second + offsetof(P, normalMass)];
+    Contact& contact = w.contactCache.contacts[c.contact];
+    const bool fixed = invMassA == 0.0f || invMassB == 0.0f;
+    contact.restSink = settledRestSink(contact.restSink, impulseK, c.pointCount, fixed, w.scratch.contacts.support.seeded[static_cast<size_t>(k)] != 0, terms);
+    at[offsetof(R, points) + offsetof(P, baseSeparation)] -= contact.restSink;
+    if (c.pointCount > 1) at[offsetof(R, points) + second + offsetof(P, baseSeparation)] -= contact.restSink;
+}
+
 // Blocks of Block::lanes constraints of one colour, in colour order (the last block of a colour
 // may have empty lanes): block b of colour c holds the constraints contactOrder[start[c] + lanes
 // (b − blockStart[c]) ...]. Sized here, laid out by the solver's first stages (layOutBlocks).
@@ -77,6 +97,7 @@ void layOutBlocks(const SolverWorld& w, const StepContext& ctx, std::vector<Bloc
     constexpr int width = Block::lanes;
     const SolverWorld::Scratch& s = w.scratch;
     const int colorStart = s.contacts.colorStart[color], colorEnd = s.contacts.colorStart[color + 1];
+    const RestSinkTerms terms = restSinkTerms(w.gravity, ctx);
     for (int b = begin; b < end; ++b) {
         Block& block = blocks[s.contacts.blockStart[color] + b];
         const int position = colorStart + width * b;  // of the lanes' constraints in contactOrder
@@ -101,6 +122,8 @@ void layOutBlocks(const SolverWorld& w, const StepContext& ctx, std::vector<Bloc
         }
         gatherContactLanes(w, constraints, lanes, block, present);
         deriveBlock(w, ctx, block, present);
+        if (terms.any)
+            for (int lane = 0; lane < lanes; ++lane) offsetSupportRow(w, RowLane<width>{block.rows.data + lane}, order[lane], terms);
         block.head = rowUses(block.rows.data, width, lanes);
         // An empty lane (the last block of a colour may have some): no mass, no impulse, nothing at
         // all. Field by field: GCC 12 at -O3 turned the lane-by-lane order into aligned 16-byte
@@ -136,11 +159,13 @@ void prepareContactBlocks(const SolverWorld& w, const StepContext& ctx) {
     const ColorStarts& start = s.contacts.colorStart = sortByColor(s.contacts.colors, s.contacts.order);
     onContactBlocks(s.contacts, [&](auto& blocks) { sizeBlocks(s.contacts, blocks); });
     s.contacts.overflow.clear();
+    const RestSinkTerms terms = restSinkTerms(w.gravity, ctx);
     for (int position = start[overflow]; position < count; ++position) {
         const int index = s.contacts.order[position];
         if (direct[index]) continue;
         s.contacts.overflow.push_back(index);
         prepareContactRows(w, ctx, s.contacts.constraints[index], s.contacts.constraintRows[index]);
+        if (terms.any) offsetSupportRow(w, RowLane<1>{floatsOf(s.contacts.constraintRows[index])}, index, terms);
     }
 }
 

@@ -93,6 +93,17 @@ struct SolverBodies {
     std::vector<BodyState> freeVelocities;     // of states[i]: v and ω at the step's end without contacts (contact_solver.cpp)
 };
 
+// seedSupportLoads scratch (support_sinks.hpp).
+struct SupportScratch {
+    enum : uint8_t { None, AllNew, Carrying };
+    std::vector<uint8_t> seeded;      // by constraint: 1 where its rows were seeded this step
+    std::vector<int> supported;       // by constraint: the solver slot of the body it supports, 0 for none
+    std::vector<uint8_t> supports;    // by solver slot: None, AllNew (seeded this step) or Carrying
+    std::vector<int> start, fill, rows;  // the seeded bodies' support constraints, slot by slot
+    std::vector<int> order;           // the seeded bodies, from the top down
+    std::vector<float> load, moment;  // by slot: what a seeded body carries, and its moment about the centre
+};
+
 // The step's contact constraints and where their rows live: blocks by colour, or one by one.
 struct ContactScratch {
     std::vector<ContactConstraint> constraints;
@@ -109,6 +120,7 @@ struct ContactScratch {
     std::vector<int> rowSlot;                // by constraint, for hit events (locateContactRows)
     std::vector<int> overflow;               // constraints no colour could take: solved one by one
     ContactGroups groups;                    // constraints solved a group at a time (contact_groups.hpp)
+    SupportScratch support;
 };
 
 // Union-find scratch for sleeping, by body index (sleep.cpp).
