@@ -48,18 +48,17 @@ RestSinkTerms restSinkTerms(Vec2 gravity, const StepContext& ctx) {
     return t;
 }
 
-void seedSupportLoads(const SolverWorld& w, const StepContext& ctx) {
+namespace {
+
+// Each awake body's supports (SupportScratch::supports): None, AllNew (every support row new and at
+// rest, and the body without joints, which carry loads too) or Carrying; and each constraint's
+// supported slot. Returns whether some body is AllNew.
+bool classifySupports(const SolverWorld& w, const StepContext& ctx, Vec2 up) {
     SupportScratch& s = w.scratch.contacts.support;
     const SolverBodies& bodies = w.scratch.bodies;
     const int count = static_cast<int>(w.scratch.contacts.constraints.size());
-    const size_t slots = bodies.states.size();
-    s.seeded.assign(static_cast<size_t>(count), 0);
-    const RestSinkTerms terms = restSinkTerms(w.gravity, ctx);
-    if (!ctx.enableWarmStarting || w.contactCache.beganTouching == 0 || !terms.any) return;
-    const Vec2 up = terms.up;
     s.supported.assign(static_cast<size_t>(count), 0);
-    s.supports.assign(slots, SupportScratch::None);
-    // Each body's supports: all new, or some carrying.
+    s.supports.assign(bodies.states.size(), SupportScratch::None);
     const float restSpeed = length(w.gravity) * ctx.h;
     bool anyNew = false;
     for (int k = 0; k < count; ++k) {
@@ -68,15 +67,22 @@ void seedSupportLoads(const SolverWorld& w, const StepContext& ctx) {
         const int above = supportedSlot(bodies, c, contact, up);
         s.supported[k] = above;
         if (above == 0) continue;
-        // A body with joints carries through them too: its supports are left to the passes.
         const bool fresh = isNewAtRest(bodies, c, contact, restSpeed) && w.bodies[bodies.awakeBodies[static_cast<size_t>(above) - 1]].jointCount == 0;
         uint8_t& kind = s.supports[above];
         kind = fresh && kind != SupportScratch::Carrying ? SupportScratch::AllNew : SupportScratch::Carrying;
         anyNew = anyNew || fresh;
     }
-    if (!anyNew) return;
-    // The seeded bodies' support contacts, body by body (counting sort), and their loads: their
-    // weight at the centre, and what carrying contacts hand down to them.
+    return anyNew;
+}
+
+// The AllNew bodies: their support constraints slot by slot (counting sort; `seeded` set), their
+// loads — their weight at the centre and what carrying rows hand down to them, with its moment
+// about the centre — and their order from the top down.
+void gatherSeededBodies(const SolverWorld& w, const StepContext& ctx, Vec2 up) {
+    SupportScratch& s = w.scratch.contacts.support;
+    const SolverBodies& bodies = w.scratch.bodies;
+    const int count = static_cast<int>(w.scratch.contacts.constraints.size());
+    const size_t slots = bodies.states.size();
     s.start.assign(slots + 1, 0);
     s.load.assign(slots, 0.0f);
     s.moment.assign(slots, 0.0f);
@@ -106,7 +112,7 @@ void seedSupportLoads(const SolverWorld& w, const StepContext& ctx) {
             s.moment[below] += f * along(contact.points[i], below == c.indexA ? 0 : 1, up);
         }
     }
-    for (size_t slot = 1; slot <= slots - 1; ++slot) s.start[slot + 1] += s.start[slot];
+    for (size_t slot = 1; slot < slots; ++slot) s.start[slot + 1] += s.start[slot];
     s.rows.resize(static_cast<size_t>(s.start[slots]));
     s.fill.assign(s.start.begin(), s.start.end() - 1);
     for (int k = 0; k < count; ++k)
@@ -114,44 +120,59 @@ void seedSupportLoads(const SolverWorld& w, const StepContext& ctx) {
             s.rows[s.fill[above]++] = k;
             s.seeded[k] = 1;
         }
-    // From the top down: each body's load over its support points by the lever rule, λ_j = L(a + b x_j)
-    // with Σλ = L, Σλx = L x̄ (an equal split where the points do not span a length), none negative.
     auto height = [&](int slot) { return dot(w.bodies[bodies.awakeBodies[static_cast<size_t>(slot) - 1]].center, up); };
     std::sort(s.order.begin(), s.order.end(), [&](int a, int b) {
         const float ha = height(a), hb = height(b);
         return ha != hb ? ha > hb : a < b;
     });
-    for (const int slot : s.order) {
-        const float load = s.load[slot];
-        if (!(load > 0.0f)) continue;
-        float n = 0, sx = 0, sxx = 0;
-        for (int r = s.start[slot]; r < s.start[slot + 1]; ++r) {
-            const ContactConstraint& c = w.scratch.contacts.constraints[s.rows[r]];
-            const Contact& contact = w.contactCache.contacts[c.contact];
-            for (int i = 0; i < c.pointCount; ++i) {
-                const float x = along(contact.points[i], slot == c.indexA ? 0 : 1, up);
-                n += 1.0f, sx += x, sxx += x * x;
-            }
-        }
-        const float xBar = s.moment[slot] / load;
-        const float det = n * sxx - sx * sx;
-        const bool spans = det > 1e-6f * n * n;
-        const float a = spans ? (sxx - sx * xBar) / det : 1.0f / n, b = spans ? (n * xBar - sx) / det : 0.0f;
-        for (int r = s.start[slot]; r < s.start[slot + 1]; ++r) {
-            const ContactConstraint& c = w.scratch.contacts.constraints[s.rows[r]];
-            Contact& contact = w.contactCache.contacts[c.contact];
-            const float rise = std::fabs(dot(contact.normal, up));
-            const int below = slot == c.indexA ? c.indexB : c.indexA;
-            for (int i = 0; i < c.pointCount; ++i) {
-                ContactPointState& p = contact.points[i];
-                const float share = std::max(0.0f, load * (a + b * along(p, slot == c.indexA ? 0 : 1, up)));
-                p.normalImpulse = share / rise;
-                if (s.supports[below] != SupportScratch::AllNew) continue;
-                s.load[below] += share;
-                s.moment[below] += share * along(p, below == c.indexA ? 0 : 1, up);
-            }
+}
+
+// Body `slot`'s load over its support points by the lever rule, λ_j = L(a + b x_j) with Σλ = L and
+// Σλx = L x̄ (an equal split where the points do not span a length), none negative: each point's
+// warm start λ_j / |n·up|, and λ_j handed on to the body below where that is seeded too.
+void splitLoad(const SolverWorld& w, int slot, Vec2 up) {
+    SupportScratch& s = w.scratch.contacts.support;
+    const float load = s.load[slot];
+    if (!(load > 0.0f)) return;
+    float n = 0, sx = 0, sxx = 0;
+    for (int r = s.start[slot]; r < s.start[slot + 1]; ++r) {
+        const ContactConstraint& c = w.scratch.contacts.constraints[s.rows[r]];
+        const Contact& contact = w.contactCache.contacts[c.contact];
+        for (int i = 0; i < c.pointCount; ++i) {
+            const float x = along(contact.points[i], slot == c.indexA ? 0 : 1, up);
+            n += 1.0f, sx += x, sxx += x * x;
         }
     }
+    const float xBar = s.moment[slot] / load;
+    const float det = n * sxx - sx * sx;
+    const bool spans = det > 1e-6f * n * n;
+    const float a = spans ? (sxx - sx * xBar) / det : 1.0f / n, b = spans ? (n * xBar - sx) / det : 0.0f;
+    for (int r = s.start[slot]; r < s.start[slot + 1]; ++r) {
+        const ContactConstraint& c = w.scratch.contacts.constraints[s.rows[r]];
+        Contact& contact = w.contactCache.contacts[c.contact];
+        const float rise = std::fabs(dot(contact.normal, up));
+        const int below = slot == c.indexA ? c.indexB : c.indexA;
+        for (int i = 0; i < c.pointCount; ++i) {
+            ContactPointState& p = contact.points[i];
+            const float share = std::max(0.0f, load * (a + b * along(p, slot == c.indexA ? 0 : 1, up)));
+            p.normalImpulse = share / rise;
+            if (s.supports[below] != SupportScratch::AllNew) continue;
+            s.load[below] += share;
+            s.moment[below] += share * along(p, below == c.indexA ? 0 : 1, up);
+        }
+    }
+}
+
+}  // namespace
+
+void seedSupportLoads(const SolverWorld& w, const StepContext& ctx) {
+    SupportScratch& s = w.scratch.contacts.support;
+    s.seeded.assign(w.scratch.contacts.constraints.size(), 0);
+    const RestSinkTerms terms = restSinkTerms(w.gravity, ctx);
+    if (!ctx.enableWarmStarting || w.contactCache.beganTouching == 0 || !terms.any) return;
+    if (!classifySupports(w, ctx, terms.up)) return;
+    gatherSeededBodies(w, ctx, terms.up);
+    for (const int slot : s.order) splitLoad(w, slot, terms.up);  // from the top down
 }
 
 }  // namespace perpdot
