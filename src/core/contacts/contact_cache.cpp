@@ -400,7 +400,7 @@ void updateContacts(const ContactWorld& w) {
             Contact& c = cache.contacts[index];
             Narrowphase result = collideContact(c, bodies, shapes, collision, reuseDistance);
             if (isQuiet(bodies, shapes, preSolve, c, result)) {
-                if (!c.touching) c.rollingImpulse = 0.0f;
+                if (!c.touching) c.rollingImpulse = c.restSink = 0.0f;
                 result = Narrowphase::Quiet;
             }
             cache.narrowphase[index] = result;
@@ -445,7 +445,7 @@ void updateContacts(const ContactWorld& w) {
             c.touching = false;
             c.reuseValid = false;
         }
-        if (!c.touching) c.rollingImpulse = 0.0f;
+        if (!c.touching) c.rollingImpulse = c.restSink = 0.0f;  // no warm start, no rest sink for a parted pair
         cache.touchingPoints[index] = touchingPoints(c);
         if (c.touching != (result == Narrowphase::WasTouching)) reportTouch(w.events, w.shapes, w.identity, c, c.touching);
         cache.beganTouching += c.touching && result != Narrowphase::WasTouching ? 1 : 0;

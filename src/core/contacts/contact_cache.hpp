@@ -51,8 +51,8 @@ struct Contact {
     float rollingImpulse = 0;  // warm start of the rolling-resistance row
     Vec2 normal;
     int pointCount = 0;
-    // A support row's rest sink, low-passed: how much deeper its points are solved (support_sinks.hpp).
-    // Between the runs the solver gathers, in the lines it loads for them.
+    // A support row's rest sink, low-passed: how much deeper its points are solved (support_sinks.hpp);
+    // 0 once the pair parts. Between the runs the solver gathers, in the lines it loads for them.
     float restSink = 0;
     ContactPointState points[2];
     // The pose at the last narrowphase (manifold_reuse.hpp): B's centre in A's frame, both angles,

@@ -168,6 +168,7 @@ void splitLoad(const SolverWorld& w, int slot, Vec2 up) {
 void seedSupportLoads(const SolverWorld& w, const StepContext& ctx) {
     SupportScratch& s = w.scratch.contacts.support;
     s.seeded.assign(w.scratch.contacts.constraints.size(), 0);
+    s.reserve(w.scratch.contacts.constraints.size(), w.scratch.bodies.states.size());
     const RestSinkTerms terms = restSinkTerms(w.gravity, ctx);
     if (!ctx.enableWarmStarting || w.contactCache.beganTouching == 0 || !terms.any) return;
     if (!classifySupports(w, ctx, terms.up)) return;

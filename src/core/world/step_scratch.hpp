@@ -102,6 +102,15 @@ struct SupportScratch {
     std::vector<int> start, fill, rows;  // the seeded bodies' support constraints, slot by slot
     std::vector<int> order;           // the seeded bodies, from the top down
     std::vector<float> load, moment;  // by slot: what a seeded body carries, and its moment about the centre
+    // Room for a step of `constraints` and `slots`, taken every step: storage grows only as the
+    // world does, not in the first step that seeds a body (a step then allocates nothing).
+    void reserve(size_t constraints, size_t slots) {
+        for (auto* v : {&supported, &rows}) v->reserve(constraints);
+        for (auto* v : {&start, &fill}) v->reserve(slots + 1);
+        order.reserve(slots);
+        supports.reserve(slots);
+        for (auto* v : {&load, &moment}) v->reserve(slots);
+    }
 };
 
 // The step's contact constraints and where their rows live: blocks by colour, or one by one.
